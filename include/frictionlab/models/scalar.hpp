@@ -1,0 +1,37 @@
+#pragma once
+// Scalar helpers shared by every friction law. They accept double and ceres::Jet alike,
+// so one formula serves simulation (double) and fitting (automatic differentiation).
+
+#include <cmath>
+#include <type_traits>
+
+namespace frictionlab {
+
+/// The plain value of a scalar: the value itself for arithmetic types, the real part of a Jet.
+template <class T>
+double value_of(const T& x) {
+  if constexpr (std::is_arithmetic_v<T>) {
+    return static_cast<double>(x);
+  } else {
+    return x.a;
+  }
+}
+
+/// sign(x) in {-1, 0, +1}; the derivative is zero everywhere (a constant of the right type).
+template <class T>
+T sgn(const T& x) {
+  if (x > T(0)) return T(1);
+  if (x < T(0)) return T(-1);
+  return T(0);
+}
+
+/// |x / scale|^exponent without the singular derivative of pow at 0 (returns exactly 0 there).
+template <class T, class S, class E>
+T abs_pow_ratio(const T& x, const S& scale, const E& exponent) {
+  using std::abs;
+  using std::pow;
+  if (value_of(x) == 0.0) return T(0);
+  return pow(abs(x / scale), exponent);
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,68 @@
+#pragma once
+// Smooth approximation of Stribeck friction: sign(v) is replaced by tanh(v/vt) or (2/pi) atan(v/vt).
+// This is an approximation, offered for users who need a continuous law (gradient-based
+// controllers, solvers without events). Trade-off of vt: a large vt lets a body creep under any
+// force below Fs (no true stiction); a small vt makes the ODE stiff near v = 0. The exact
+// hybrid simulation of the discontinuous laws has neither problem.
+
+#include <cmath>
+#include <numbers>
+#include <string_view>
+
+#include "frictionlab/models/parameter.hpp"
+#include "frictionlab/models/scalar.hpp"
+
+namespace frictionlab {
+
+/// The smooth function used in place of sign(v).
+enum class SmoothShape { tanh, atan };
+
+/// F(v) = s(v/vt) (Fc + (Fs - Fc) exp(-|v/vs|^delta)) + Fv v, with s = tanh or (2/pi) atan.
+/// With Fs = Fc (the default) it is a smoothed Coulomb + viscous law. No stiction (breakaway 0).
+template <class S = double>
+struct SmoothT {
+  S Fc{1.0};     ///< Coulomb level (N or N m), >= 0. Default 1.
+  S Fs{1.0};     ///< static level (N or N m), >= Fc. Default 1 (= Fc: no Stribeck dip).
+  S vs{0.001};   ///< Stribeck velocity (m/s or rad/s), > 0. Default 0.001.
+  S delta{2.0};  ///< Stribeck exponent, > 0. Default 2.
+  S Fv{0.0};     ///< viscous coefficient (N s/m or N m s/rad), >= 0. Default 0.
+  S vt{1e-3};    ///< smoothing velocity (m/s or rad/s), > 0: the slope at 0 is about Fc/vt. Default 1e-3.
+  SmoothShape shape{SmoothShape::tanh};
+
+  static constexpr std::string_view kName = "smooth";
+
+  template <class Self, class Visit>
+  static void visit(Self& self, Visit&& visit) {
+    visit("Fc", Quantity::force, self.Fc);
+    visit("Fs", Quantity::force, self.Fs);
+    visit("vs", Quantity::velocity, self.vs);
+    visit("delta", Quantity::dimensionless, self.delta);
+    visit("Fv", Quantity::viscous, self.Fv);
+    visit("vt", Quantity::velocity, self.vt);
+  }
+
+  /// Throws std::invalid_argument naming the first parameter that breaks its rule.
+  void validate() const {
+    detail::require(std::isfinite(Fc) && Fc >= 0, kName, "Fc", Fc, ">= 0 (N or N m)");
+    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + std::to_string(Fc) + " (N or N m)");
+    detail::require(std::isfinite(vs) && vs > 0, kName, "vs", vs, "> 0 (m/s or rad/s)");
+    detail::require(std::isfinite(delta) && delta > 0, kName, "delta", delta, "> 0");
+    detail::require(std::isfinite(Fv) && Fv >= 0, kName, "Fv", Fv, ">= 0 (N s/m or N m s/rad)");
+    detail::require(std::isfinite(vt) && vt > 0, kName, "vt", vt, "> 0 (m/s or rad/s)");
+  }
+
+  template <class T>
+  T sliding(const T& v) const {
+    using std::atan;
+    using std::exp;
+    using std::tanh;
+    const T x = v / T(vt);
+    const T s = shape == SmoothShape::tanh ? tanh(x) : T(2.0 / std::numbers::pi) * atan(x);
+    return s * (T(Fc) + (T(Fs) - T(Fc)) * exp(-abs_pow_ratio(v, vs, delta))) + T(Fv) * v;
+  }
+  S breakaway_positive() const { return S(0); }
+  S breakaway_negative() const { return S(0); }
+};
+using Smooth = SmoothT<double>;
+
+}  // namespace frictionlab
