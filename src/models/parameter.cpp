@@ -14,6 +14,7 @@ std::string_view unit(Quantity q, Axis axis) {
     case Quantity::acceleration: return rot ? "rad/s^2" : "m/s^2";
     case Quantity::time: return "s";
     case Quantity::rate: return "1/s";
+    case Quantity::force_rate: return rot ? "N m/s" : "N/s";
     case Quantity::dimensionless: return "";
   }
   return "";

@@ -22,7 +22,8 @@ enum class Quantity {
   inertia,        ///< kg or kg m^2
   acceleration,   ///< m/s^2 or rad/s^2
   time,           ///< s
-  rate,           ///< 1/s (GMS attraction constant)
+  rate,           ///< 1/s
+  force_rate,     ///< N/s or N m/s (force ramps, GMS attraction constant)
   dimensionless,  ///< exponents, fractions
 };
 

@@ -26,10 +26,14 @@ concept StaticLaw = requires(const Law& law, double v) {
 /// \param v        velocity (m/s or rad/s)
 /// \param applied  the net force that would accelerate the body without friction (N or N m);
 ///                 used only at v == 0: the contact holds it up to the breakaway level.
+/// A law with its own member `force(v, applied)` (Karnopp) uses that instead.
 /// At v == 0 the result balances `applied` when it is within [-breakaway_negative, breakaway_positive],
 /// and is the breakaway level (opposing `applied`) otherwise.
 template <class Law, class T>
 T friction_force(const Law& law, const T& v, const T& applied) {
+  if constexpr (requires { law.force(v, applied); }) {
+    return law.force(v, applied);  // laws with their own stiction rule (Karnopp's band)
+  }
   if (value_of(v) != 0.0) return law.sliding(v);
   const T hi = T(law.breakaway_positive());
   const T lo = -T(law.breakaway_negative());

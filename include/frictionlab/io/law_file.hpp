@@ -1,0 +1,43 @@
+#pragma once
+// Friction laws in files: the YAML form of scenario files and the JSON form of model files.
+//
+// YAML (scenario `friction:` block, or a file of its own):
+//   law: stribeck            # one of FrictionLaw::names()
+//   Fc: 1.0                  # parameters by name, SI units
+//   Fs: 1.5
+//   vs: 0.001
+//   Fv: 0.4
+// Lists for table (velocity, force) and gms (k, alpha); `shape: tanh|atan` for smooth.
+//
+// JSON: the same object, or the result of `frictionlab identify --json` (MODEL.json), whose
+// "model" names the law and whose "parameters" map names to {"value": v, "std": s, "unit": u}.
+
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "frictionlab/models/friction_law.hpp"
+
+namespace YAML {
+class Node;
+}
+
+namespace frictionlab {
+
+/// Reads a law from a YAML mapping. `where` names the place for messages (file and key path,
+/// e.g. "scenario.yaml: friction"). Throws std::invalid_argument naming `where` and the key
+/// when `law` is missing, a value is not a number or list of numbers, or the law rejects it.
+FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where);
+
+/// Reads a law from a JSON object (plain form or MODEL.json). Throws std::invalid_argument
+/// naming `where` and the key on a missing law name or a non-numeric value.
+FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where);
+
+/// Reads a law from a `.yaml`/`.yml` or `.json` file. Throws std::invalid_argument naming the
+/// file when it cannot be read or parsed.
+FrictionLaw load_law(const std::string& path);
+
+/// The plain JSON form {"law": name, parameters..., lists...} of a law.
+nlohmann::json law_to_json(const FrictionLaw& law);
+
+}  // namespace frictionlab

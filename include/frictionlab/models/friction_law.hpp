@@ -1,0 +1,102 @@
+#pragma once
+// A friction law chosen at run time by name (CLI, scenario files, Python): one type that
+// holds any of the laws in this folder.
+
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "frictionlab/models/asymmetric.hpp"
+#include "frictionlab/models/coulomb.hpp"
+#include "frictionlab/models/coulomb_viscous.hpp"
+#include "frictionlab/models/dynamic_law.hpp"
+#include "frictionlab/models/dahl.hpp"
+#include "frictionlab/models/elastoplastic.hpp"
+#include "frictionlab/models/gms.hpp"
+#include "frictionlab/models/karnopp.hpp"
+#include "frictionlab/models/lugre.hpp"
+#include "frictionlab/models/parameter.hpp"
+#include "frictionlab/models/smooth.hpp"
+#include "frictionlab/models/static_coulomb_viscous.hpp"
+#include "frictionlab/models/static_law.hpp"
+#include "frictionlab/models/stribeck.hpp"
+#include "frictionlab/models/table.hpp"
+#include "frictionlab/models/viscous.hpp"
+
+namespace frictionlab {
+
+/// A law as written in a file: its name and named values. Scalars are parameters (SI units);
+/// arrays serve `table` (velocity, force) and `gms` (k, alpha); strings serve `smooth` (shape).
+struct LawSpec {
+  std::string name;
+  std::map<std::string, double> scalars;
+  std::map<std::string, std::vector<double>> arrays;
+  std::map<std::string, std::string> strings;
+};
+
+/// One scalar parameter of a law, with the quantity that gives its unit.
+struct ParameterValue {
+  std::string name;
+  double value;
+  Quantity quantity;
+};
+
+/// Any friction law of frictionlab, selected by name. Static laws answer `force(v, applied)`;
+/// dynamic laws (`is_dynamic()`) answer the state-based calls. Calling a call of the other kind
+/// throws std::logic_error naming the law.
+class FrictionLaw {
+ public:
+  using Variant = std::variant<Coulomb, Viscous, CoulombViscous, StaticCoulombViscous, Stribeck, Karnopp, Table, Smooth,
+                               Asymmetric<Coulomb>, Asymmetric<Viscous>, Asymmetric<CoulombViscous>,
+                               Asymmetric<StaticCoulombViscous>, Asymmetric<Stribeck>, Dahl, LuGre, ElastoPlastic, Gms>;
+
+  /// Wraps a law after validating it (throws std::invalid_argument from the law's validate()).
+  template <class Law>
+  FrictionLaw(Law law) : law_(std::move(law)) {  // NOLINT: implicit on purpose, any law converts
+    validate();
+  }
+  FrictionLaw() : FrictionLaw(Coulomb{}) {}
+
+  /// Builds a law from its file form. Throws std::invalid_argument for an unknown name (listing
+  /// the valid names), an unknown parameter (listing the law's parameters), a missing required
+  /// parameter (naming it), or a value that breaks the law's rules.
+  static FrictionLaw from_spec(const LawSpec& spec);
+  /// The file form of this law (inverse of from_spec).
+  LawSpec to_spec() const;
+
+  /// Every name from_spec accepts, in a fixed order.
+  static const std::vector<std::string>& names();
+
+  std::string name() const;
+  bool is_dynamic() const;
+  /// Number of internal states: 0 for static laws.
+  int num_states() const;
+  /// Scalar parameters in the law's order (arrays of table and gms are in to_spec()).
+  std::vector<ParameterValue> parameters() const;
+  void validate() const;
+
+  // Static laws.
+  /// Force for v != 0 (N or N m). For dynamic laws: the steady-state (Stribeck) force at v.
+  double sliding(double v) const;
+  /// Largest applied force a stuck contact holds, pushed in + / - (N or N m); 0 for dynamic laws.
+  double breakaway_positive() const;
+  double breakaway_negative() const;
+  /// Static law force with stiction (see friction_force in static_law.hpp).
+  double force(double v, double applied) const;
+
+  // Dynamic laws (state z has num_states() entries, m or rad).
+  void derivative(std::span<const double> z, double v, std::span<double> dz) const;
+  double force(std::span<const double> z, double v) const;
+  double step(std::span<double> z, double v, double dt) const;
+  void steady_state(double v, std::span<double> z) const;
+
+  const Variant& variant() const { return law_; }
+
+ private:
+  Variant law_;
+};
+
+}  // namespace frictionlab

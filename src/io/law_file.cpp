@@ -1,0 +1,130 @@
+#include "frictionlab/io/law_file.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace frictionlab {
+namespace {
+
+// Adds `where: ` in front of a law's own message so the user learns the file and key.
+template <class F>
+FrictionLaw with_context(const std::string& where, F&& make) {
+  try {
+    return make();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(where + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
+  if (!node || !node.IsMap())
+    throw std::invalid_argument(where + ": expected a mapping with 'law' and its parameters");
+  LawSpec spec;
+  for (const auto& kv : node) {
+    const std::string key = kv.first.as<std::string>();
+    const YAML::Node& value = kv.second;
+    const std::string here = where + "." + key;
+    if (key == "law") {
+      spec.name = value.as<std::string>();
+    } else if (key == "shape") {
+      spec.strings[key] = value.as<std::string>();
+    } else if (value.IsSequence()) {
+      std::vector<double> list;
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        try {
+          list.push_back(value[i].as<double>());
+        } catch (const YAML::Exception&) {
+          throw std::invalid_argument(here + "[" + std::to_string(i) + "]: expected a number, got '" +
+                                      value[i].as<std::string>("?") + "'");
+        }
+      }
+      spec.arrays[key] = std::move(list);
+    } else {
+      try {
+        spec.scalars[key] = value.as<double>();
+      } catch (const YAML::Exception&) {
+        throw std::invalid_argument(here + ": expected a number, got '" + value.as<std::string>("?") + "'");
+      }
+    }
+  }
+  if (spec.name.empty())
+    throw std::invalid_argument(where + ": missing 'law' (one of the friction law names, e.g. stribeck)");
+  return with_context(where, [&] { return FrictionLaw::from_spec(spec); });
+}
+
+FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_object()) throw std::invalid_argument(where + ": expected a JSON object describing a friction law");
+  LawSpec spec;
+  const nlohmann::json* params = &j;
+  if (j.contains("model") && j.contains("parameters")) {  // MODEL.json written by identify
+    if (!j["model"].is_string()) throw std::invalid_argument(where + ": 'model' must be a law name");
+    spec.name = j["model"].get<std::string>();
+    params = &j["parameters"];
+  } else if (j.contains("law") && j["law"].is_string()) {
+    spec.name = j["law"].get<std::string>();
+  } else {
+    throw std::invalid_argument(where + ": missing 'law' (or 'model' with 'parameters')");
+  }
+  for (const auto& [key, value] : params->items()) {
+    if (key == "law" || key == "M" || key == "offset") continue;  // M and offset belong to the plant, not the law
+    const std::string here = where + "." + key;
+    if (key == "shape" && value.is_string()) {
+      spec.strings[key] = value.get<std::string>();
+    } else if (value.is_number()) {
+      spec.scalars[key] = value.get<double>();
+    } else if (value.is_object() && value.contains("value") && value["value"].is_number()) {
+      spec.scalars[key] = value["value"].get<double>();
+    } else if (value.is_array()) {
+      std::vector<double> list;
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        if (!value[i].is_number())
+          throw std::invalid_argument(here + "[" + std::to_string(i) + "]: expected a number, got " + value[i].dump());
+        list.push_back(value[i].get<double>());
+      }
+      spec.arrays[key] = std::move(list);
+    } else {
+      throw std::invalid_argument(here + ": expected a number (or {\"value\": number}), got " + value.dump());
+    }
+  }
+  return with_context(where, [&] { return FrictionLaw::from_spec(spec); });
+}
+
+FrictionLaw load_law(const std::string& path) {
+  const bool is_json = path.size() >= 5 && path.substr(path.size() - 5) == ".json";
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument(path + ": cannot open the friction law file");
+  if (is_json) {
+    nlohmann::json j;
+    try {
+      in >> j;
+    } catch (const nlohmann::json::exception& e) {
+      throw std::invalid_argument(path + ": not valid JSON (" + e.what() + ")");
+    }
+    return law_from_json(j, path);
+  }
+  YAML::Node node;
+  try {
+    node = YAML::Load(in);
+  } catch (const YAML::Exception& e) {
+    throw std::invalid_argument(path + ": not valid YAML (" + e.what() + ")");
+  }
+  if (node.IsMap() && node["friction"]) return law_from_yaml(node["friction"], path + ": friction");
+  return law_from_yaml(node, path);
+}
+
+nlohmann::json law_to_json(const FrictionLaw& law) {
+  const LawSpec spec = law.to_spec();
+  nlohmann::json j;
+  j["law"] = spec.name;
+  for (const auto& [k, v] : spec.scalars) j[k] = v;
+  for (const auto& [k, v] : spec.arrays) j[k] = v;
+  for (const auto& [k, v] : spec.strings) j[k] = v;
+  return j;
+}
+
+}  // namespace frictionlab
