@@ -1,0 +1,47 @@
+#pragma once
+// The friction lecture's torque-mode trapezoid experiment: drive a motor with a slow current
+// ramp up, a hold and a ramp down, record velocity, and read off static friction (at motion
+// onset), Coulomb friction (at the return to standstill) and the viscous coefficient (from
+// the hold). The read-offs ignore inertia and so bias Fc and Fv by a few percent; this method
+// also fits the rotor dynamics over the whole sliding record, which does not.
+
+#include <Eigen/Core>
+#include <limits>
+
+#include "frictionlab/identify/result.hpp"
+#include "frictionlab/models/parameter.hpp"
+
+namespace frictionlab {
+
+/// Samples of a trapezoid experiment. Shapes: all of length N, time strictly increasing and
+/// regularly sampled (s). `force` is the drive torque or force (N m or N: Kt times current).
+struct BreakawayData {
+  Eigen::VectorXd time;      ///< s
+  Eigen::VectorXd force;     ///< N m or N
+  Eigen::VectorXd velocity;  ///< rad/s or m/s
+};
+
+struct BreakawayOptions {
+  /// Inertia (kg m^2 or kg): held at this value when finite and > 0; estimated with Fc and Fv
+  /// (reported as M) when NaN (the default).
+  double inertia = std::numeric_limits<double>::quiet_NaN();
+  /// |v| above which the axis counts as moving (rad/s or m/s). Default (NaN): 1 % of max |v|.
+  /// Trade-off: too low and sensor noise looks like motion; too high delays the onset read-off.
+  double velocity_threshold = std::numeric_limits<double>::quiet_NaN();
+  /// Samples skipped at each end of a sliding interval in the dynamic fit: the velocity has a
+  /// kink at a stick/slip switch, where a central difference is wrong. Default 2.
+  int edge_samples = 2;
+  Axis axis = Axis::rotary;  ///< units of the report; a motor is rotary
+};
+
+/// Identifies Fs, Fc, Fv (and M when no inertia is given) from a trapezoid experiment.
+/// parameters: the dynamic estimate (Fc, Fv by least squares of M a + Fv v + Fc sign(v) = force
+/// over the sliding samples; Fs as the force at the instant motion began, found by integrating
+/// that fitted model back from the first moving sample to v = 0).
+/// diagnostics.readoff: the lecture's read-offs {"Fs", "Fc", "Fv"}, and the times of onset,
+/// hold and stop. A record without a stuck start, without motion or without a return to
+/// standstill gives status "error" with a message saying which.
+/// \throws std::invalid_argument on unequal lengths, non-finite samples or irregular time.
+Result identify_breakaway(const BreakawayData& data, const BreakawayOptions& options = {});
+
+}  // namespace frictionlab

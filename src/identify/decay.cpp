@@ -1,0 +1,115 @@
+#include "frictionlab/identify/decay.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "frictionlab/signal/differentiate.hpp"
+#include "method_support.hpp"
+
+namespace frictionlab {
+using namespace detail;
+namespace {
+
+// A turning point (velocity zero): time and position, refined between samples.
+struct TurningPoint {
+  Eigen::Index sample;  // the sample nearest the extremum
+  double position;
+};
+
+// Position of the extremum near sample m by a parabola through m-1, m, m+1.
+double parabolic_peak(const Eigen::VectorXd& x, Eigen::Index m) {
+  if (m <= 0 || m + 1 >= x.size()) return x[m];
+  const double a = x[m - 1], b = x[m], c = x[m + 1];
+  const double den = a - 2 * b + c;
+  if (den == 0.0) return b;
+  const double delta = 0.5 * (a - c) / den;
+  if (std::abs(delta) > 1) return b;
+  return b - 0.25 * (a - c) * delta;
+}
+
+}  // namespace
+
+Result identify_decay(const DecayData& d, const DecayOptions& o) {
+  const Eigen::Index n = d.time.size();
+  if (d.position.size() != n)
+    throw std::invalid_argument("decay: time has " + std::to_string(n) + " samples but position has " +
+                                std::to_string(d.position.size()));
+  const bool have_k = std::isfinite(o.stiffness);
+  const bool have_wn = std::isfinite(o.natural_frequency);
+  if (have_k && !(o.stiffness > 0))
+    throw std::invalid_argument("decay: --stiffness = " + format_number(o.stiffness) + " must be > 0 (N/m or N m/rad)");
+  if (have_wn && !(o.natural_frequency > 0))
+    throw std::invalid_argument("decay: --natural-frequency = " + format_number(o.natural_frequency) + " must be > 0 (rad/s)");
+  if (!have_k && !have_wn)
+    throw std::invalid_argument("decay: give --stiffness (N/m or N m/rad; m g l for a pendulum) or --natural-frequency (rad/s)");
+  const double dt = regular_time_step(d.time, "decay");
+  const bool relative = !have_k && !(std::isfinite(o.inertia) && o.inertia > 0);
+  const double k = have_k ? o.stiffness : (relative ? 1.0 : o.inertia * o.natural_frequency * o.natural_frequency);
+  Result r = make_result("decay", "coulomb-viscous");
+
+  const Eigen::VectorXd v = gradient(d.position, dt);
+  const double vmax = v.cwiseAbs().maxCoeff();
+  const double stop = std::isfinite(o.stop_threshold) ? o.stop_threshold : 1e-6 * vmax;
+  if (!(vmax > stop)) return fail(r, "no oscillation: the position never changes");
+
+  // Turning points: where the velocity changes sign (a zero counts as its own sign, so the final
+  // standstill of a Coulomb-damped oscillator is one).
+  auto sign_of = [&](double x) { return x > stop ? 1 : (x < -stop ? -1 : 0); };
+  std::vector<TurningPoint> tp;
+  int last = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const int s = sign_of(v[i]);
+    if (s == last) continue;
+    if (last != 0) {
+      // The extremum is the sample with the largest excursion in the direction just travelled.
+      Eigen::Index m = i;
+      if (i > 0 && (d.position[i - 1] - d.position[i]) * last > 0) m = i - 1;
+      tp.push_back({m, parabolic_peak(d.position, m)});
+    }
+    last = s;
+  }
+  const Eigen::Index half_cycles = static_cast<Eigen::Index>(tp.size()) - 1;
+  if (half_cycles < 3)
+    return fail(r, "only " + std::to_string(std::max<Eigen::Index>(0, half_cycles)) +
+                       " half cycles found; the energy balance needs at least 3 (record a longer decay)");
+
+  auto potential = [&](double x) { return o.pendulum ? k * (1 - std::cos(x)) : 0.5 * k * x * x; };
+  Eigen::MatrixXd X(half_cycles, 2);
+  Eigen::VectorXd y(half_cycles);
+  for (Eigen::Index h = 0; h < half_cycles; ++h) {
+    const auto& a = tp[static_cast<std::size_t>(h)];
+    const auto& b = tp[static_cast<std::size_t>(h) + 1];
+    double integral = 0;  // trapezoid rule of v^2 between the turning samples
+    for (Eigen::Index i = a.sample; i < b.sample; ++i) integral += 0.5 * (v[i] * v[i] + v[i + 1] * v[i + 1]) * dt;
+    X(h, 0) = std::abs(a.position - b.position);
+    X(h, 1) = integral;
+    y[h] = potential(a.position) - potential(b.position);
+  }
+  const LinearFit fit = least_squares(X, y);
+  if (!fit.ok) return fail(r, "the half cycles cannot separate Coulomb from viscous friction: " + fit.message);
+
+  const Axis axis = o.axis;
+  if (relative) {
+    // Fc / k has the unit of position; zeta = (Fv / k) * wn / 2.
+    add_parameter(r, "Fc_over_k", fit.beta[0], fit.stdev[0], Quantity::displacement, axis);
+    add_parameter(r, "zeta", fit.beta[1] * o.natural_frequency / 2, fit.stdev[1] * o.natural_frequency / 2,
+                  Quantity::dimensionless, axis);
+  } else {
+    add_parameter(r, "Fc", fit.beta[0], fit.stdev[0], Quantity::force, axis);
+    add_parameter(r, "Fv", fit.beta[1], fit.stdev[1], Quantity::viscous, axis);
+  }
+  set_fit(r, y, X * fit.beta);
+  r.diagnostics.condition_number = fit.condition_number;
+  r.diagnostics.numbers["half_cycles"] = static_cast<double>(half_cycles);
+  r.diagnostics.numbers["first_amplitude"] = std::abs(tp.front().position);
+  r.diagnostics.numbers["last_amplitude"] = std::abs(tp.back().position);
+  r.diagnostics.numbers["stiffness"] = k;
+  for (const auto& p : r.parameters)
+    if (std::abs(p.value) <= 2 * p.std)
+      r.diagnostics.warnings.push_back(p.name + " = " + format_number(p.value) + " is zero within 2 std (" +
+                                       format_number(2 * p.std) + "): that friction is not detected");
+  return r;
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,94 @@
+#include "method_support.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace frictionlab::detail {
+
+std::string format_number(double x) {
+  std::ostringstream s;
+  s.precision(6);
+  s << x;
+  return s.str();
+}
+
+Result make_result(const std::string& method, const std::string& model) {
+  Result r;
+  r.method = method;
+  r.model = model;
+  return r;
+}
+
+Result fail(Result& r, const std::string& message) {
+  r.status = ResultStatus::error;
+  r.message = message;
+  r.parameters.clear();
+  return r;
+}
+
+void add_parameter(Result& r, const std::string& name, double value, double std, Quantity q, Axis axis) {
+  r.parameters.push_back({name, value, std, std::string(unit(q, axis))});
+}
+
+void set_fit(Result& r, const Eigen::VectorXd& y, const Eigen::VectorXd& y_hat) {
+  const double e = (y - y_hat).norm();
+  r.fit.samples = static_cast<std::size_t>(y.size());
+  r.fit.rmse = e / std::sqrt(static_cast<double>(std::max<Eigen::Index>(1, y.size())));
+  r.fit.relative_error_percent = 100.0 * e / y.norm();
+}
+
+LinearFit least_squares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y) {
+  LinearFit f;
+  const Eigen::Index n = X.rows(), p = X.cols();
+  if (n <= p) {
+    f.message = std::to_string(n) + " samples for " + std::to_string(p) + " parameters";
+    return f;
+  }
+  for (Eigen::Index c = 0; c < p; ++c)
+    if (X.col(c).cwiseAbs().maxCoeff() == 0.0) {
+      f.message = "regressor column " + std::to_string(c) + " is zero (that effect is not excited)";
+      return f;
+    }
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(X, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const auto& s = svd.singularValues();
+  f.condition_number = s[0] / s[p - 1];
+  if (!(s[p - 1] > 1e-12 * s[0])) {
+    f.message = "the regressors are rank deficient (condition number " + format_number(f.condition_number) + ")";
+    return f;
+  }
+  f.beta = svd.solve(y);
+  const Eigen::VectorXd e = y - X * f.beta;
+  const double s2 = e.squaredNorm() / static_cast<double>(n - p);
+  // diag((X'X)^-1) = sum_k V(i,k)^2 / s_k^2
+  const Eigen::MatrixXd V = svd.matrixV();
+  f.stdev.resize(p);
+  for (Eigen::Index i = 0; i < p; ++i) {
+    double d = 0;
+    for (Eigen::Index k = 0; k < p; ++k) d += V(i, k) * V(i, k) / (s[k] * s[k]);
+    f.stdev[i] = std::sqrt(s2 * d);
+  }
+  f.rmse = std::sqrt(e.squaredNorm() / static_cast<double>(n));
+  f.ok = true;
+  return f;
+}
+
+double regular_time_step(const Eigen::VectorXd& t, const std::string& method) {
+  const Eigen::Index n = t.size();
+  if (n < 3) throw std::invalid_argument(method + ": " + std::to_string(n) + " samples are too few (need at least 3)");
+  const double dt = (t[n - 1] - t[0]) / static_cast<double>(n - 1);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    if (!std::isfinite(t[k]))
+      throw std::invalid_argument(method + ": time at sample " + std::to_string(k) + " is not finite");
+    if (k > 0 && !(t[k] > t[k - 1]))
+      throw std::invalid_argument(method + ": time must increase; sample " + std::to_string(k) + " (" + format_number(t[k]) +
+                                  " s) is not after sample " + std::to_string(k - 1) + " (" + format_number(t[k - 1]) + " s)");
+    if (k > 0 && std::abs(t[k] - t[k - 1] - dt) > 0.01 * dt)
+      throw std::invalid_argument(method + ": time is not regularly sampled; step " + std::to_string(k) + " is " +
+                                  format_number(t[k] - t[k - 1]) + " s, the mean step " + format_number(dt) + " s");
+  }
+  return dt;
+}
+
+}  // namespace frictionlab::detail

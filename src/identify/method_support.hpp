@@ -1,0 +1,44 @@
+#pragma once
+// Private helpers shared by the identification methods: building a Result, ordinary least
+// squares with standard deviations, and the time-step check of in-memory signals.
+
+#include <Eigen/Core>
+#include <string>
+
+#include "frictionlab/identify/result.hpp"
+#include "frictionlab/models/parameter.hpp"
+
+namespace frictionlab::detail {
+
+/// A number for messages: 6 significant digits, no trailing zeros.
+std::string format_number(double x);
+
+/// An empty ok Result of `method` fitting `model`, reporting units for `axis`.
+Result make_result(const std::string& method, const std::string& model);
+
+/// Sets status error with `message` and returns the result (for `return fail(r, "...")`).
+Result fail(Result& r, const std::string& message);
+
+void add_parameter(Result& r, const std::string& name, double value, double std, Quantity q, Axis axis);
+
+/// Fills r.fit from measured y and reconstructed y_hat (same length).
+void set_fit(Result& r, const Eigen::VectorXd& y, const Eigen::VectorXd& y_hat);
+
+/// Ordinary least squares y = X beta. std = s sqrt(diag((X'X)^-1)), s^2 = ||e||^2 / (N - p);
+/// condition number of X (ratio of extreme singular values). `ok` is false, with a message,
+/// when X has fewer rows than columns, a zero column, or is rank deficient.
+struct LinearFit {
+  bool ok = false;
+  std::string message;
+  Eigen::VectorXd beta, stdev;
+  double rmse = 0;
+  double condition_number = 0;
+};
+LinearFit least_squares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y);
+
+/// Mean step of a strictly increasing, regular time vector (s).
+/// \throws std::invalid_argument "METHOD: time ..." naming the sample index (0-based) of the
+///         first non-finite, non-increasing or irregular (more than 1 % off the mean) step.
+double regular_time_step(const Eigen::VectorXd& time, const std::string& method);
+
+}  // namespace frictionlab::detail
