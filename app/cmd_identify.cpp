@@ -1,12 +1,208 @@
+// frictionlab identify METHOD DATA: friction parameters from measured data.
+#include <array>
+#include <limits>
+#include <memory>
+#include <sstream>
+
 #include "commands.hpp"
+#include "data_options.hpp"
+#include "frictionlab/identify/breakaway.hpp"
+#include "frictionlab/identify/decay.hpp"
+#include "frictionlab/identify/idim.hpp"
+#include "frictionlab/identify/sweep.hpp"
+#include "output.hpp"
 
 namespace frictionlab::cli {
+namespace {
 
-// Placeholder until the identify work lands: the subcommand exists and says so.
+// Everything the identify subcommands parse into; one instance lives for the whole run.
+// The data file, column and output options of one method subcommand (each has its own, so
+// that "was --force given?" is asked of the method the user chose).
+struct MethodIO {
+  std::string data;
+  DataOptions columns;
+  OutputOptions output;
+};
+
+struct IdentifyArgs {
+  // idim
+  std::string terms = "inertia,viscous,coulomb,offset";
+  double cutoff = 100, vs = 0.01, delta = 2;
+  int decimate = 10;
+  long skip = 49;
+  std::string validate;
+  // breakaway, decay, sweep
+  double inertia = std::numeric_limits<double>::quiet_NaN();
+  double threshold = std::numeric_limits<double>::quiet_NaN();
+  double stiffness = std::numeric_limits<double>::quiet_NaN();
+  double natural_frequency = std::numeric_limits<double>::quiet_NaN();
+  bool pendulum = false;
+  std::string model = "stribeck";
+  double fixed_delta = 0;
+  double relative_tolerance = 0.01, min_duration = 0.5;
+  std::vector<std::string> segments;
+};
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+CLI::App* method(CLI::App* identify, const std::string& name, const std::string& help, MethodIO& io,
+                 const std::string& default_axis) {
+  auto* cmd = identify->add_subcommand(name, help);
+  cmd->add_option("DATA", io.data, "Measured data: a CSV file with a header row, or a MATLAB .mat file")->required();
+  add_data_options(cmd, io.columns, default_axis);
+  add_output_options(cmd, io.output);
+  return cmd;
+}
+
+void stamp(Result& r, const Dataset& d) {
+  r.data_file = d.file;
+  r.data_sha256 = d.sha256;
+}
+
+IdimData idim_data(const std::string& path, const DataOptions& c) {
+  const Dataset d = load_data(path, c);
+  IdimData x;
+  x.time = time_column(d, c);
+  const bool use_velocity = c.velocity_opt->count() > 0 && c.position_opt->count() == 0;
+  if (use_velocity) x.velocity = velocity_column(d, c);
+  else x.position = position_column(d, c);
+  x.force = force_column(d, c);
+  x.file = d.file;
+  x.sha256 = d.sha256;
+  return x;
+}
+
+int run_idim(const IdentifyArgs& a, const MethodIO& io) {
+  check_output_path(io.output.json, io.output.overwrite, "--json");
+  IdimOptions o;
+  o.terms = split_list(a.terms);
+  o.cutoff_hz = a.cutoff;
+  o.decimation = a.decimate;
+  o.skip = a.skip;
+  o.stribeck_vs = a.vs;
+  o.stribeck_delta = a.delta;
+  o.axis = io.columns.parsed_axis();
+  const IdimData data = idim_data(io.data, io.columns);
+  Result r = identify_idim(data, o);
+  r.data_file = data.file;
+  r.data_sha256 = data.sha256;
+  if (r.ok() && !a.validate.empty()) r.validation = cross_test(r, idim_data(a.validate, io.columns), o);
+  return emit(r, io.output);
+}
+
+int run_breakaway(const IdentifyArgs& a, const MethodIO& io) {
+  check_output_path(io.output.json, io.output.overwrite, "--json");
+  const Dataset d = load_data(io.data, io.columns);
+  BreakawayData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns)};
+  BreakawayOptions o;
+  o.inertia = a.inertia;
+  o.velocity_threshold = a.threshold;
+  o.axis = io.columns.parsed_axis();
+  Result r = identify_breakaway(x, o);
+  stamp(r, d);
+  return emit(r, io.output);
+}
+
+int run_sweep(const IdentifyArgs& a, const MethodIO& io) {
+  check_output_path(io.output.json, io.output.overwrite, "--json");
+  const Dataset d = load_data(io.data, io.columns);
+  SweepData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns)};
+  SweepOptions o;
+  o.fit.model = parse_static_fit_model(a.model);
+  o.fit.fixed_delta = a.fixed_delta;
+  o.relative_tolerance = a.relative_tolerance;
+  o.min_duration = a.min_duration;
+  o.axis = io.columns.parsed_axis();
+  for (const auto& s : a.segments) {
+    const auto colon = s.find(':');
+    try {
+      if (colon == std::string::npos) throw std::invalid_argument("");
+      o.windows.push_back({std::stod(s.substr(0, colon)), std::stod(s.substr(colon + 1))});
+    } catch (const std::exception&) {
+      throw std::invalid_argument("--segment '" + s + "': expected T_BEGIN:T_END in seconds, e.g. 2.5:4.0");
+    }
+  }
+  Result r = identify_sweep(x, o);
+  stamp(r, d);
+  return emit(r, io.output);
+}
+
+int run_decay(const IdentifyArgs& a, const MethodIO& io) {
+  check_output_path(io.output.json, io.output.overwrite, "--json");
+  const Dataset d = load_data(io.data, io.columns);
+  DecayData x{time_column(d, io.columns), position_column(d, io.columns)};
+  DecayOptions o;
+  o.stiffness = a.stiffness;
+  o.inertia = a.inertia;
+  o.natural_frequency = a.natural_frequency;
+  o.pendulum = a.pendulum;
+  o.axis = io.columns.parsed_axis();
+  Result r = identify_decay(x, o);
+  stamp(r, d);
+  return emit(r, io.output);
+}
+
+}  // namespace
+
 Handler register_identify(CLI::App& app) {
-  app.add_subcommand("identify", "(not yet available)");
-  return [] {
-    throw std::invalid_argument("'identify' is not available in this build yet");
+  auto* identify = app.add_subcommand("identify", "Identify friction parameters from measured data");
+  identify->require_subcommand(1);
+  auto a = std::make_shared<IdentifyArgs>();
+  auto io = std::make_shared<std::array<MethodIO, 4>>();
+
+  auto* idim = method(identify, "idim",
+                      "Inverse dynamic model least squares on a trajectory: force = M qdd + friction(qd) + offset "
+                      "(EMPS benchmark recipe). Best cross-test on EMPS: --terms inertia,asymmetric",
+                      (*io)[0], "linear");
+  idim->add_option("--terms", a->terms,
+                   "Comma-separated regressors: inertia, viscous, coulomb, offset, asymmetric (Fv_pos, Fc_pos, Fv_neg, "
+                   "Fc_neg; then leave out offset), stribeck (Fs_minus_Fc with --vs, --delta)")
+      ->capture_default_str();
+  idim->add_option("--cutoff", a->cutoff, "Position low-pass cut-off (Hz)")->capture_default_str();
+  idim->add_option("--decimate", a->decimate, "Keep one sample in N after the anti-alias filter")->capture_default_str();
+  idim->add_option("--skip", a->skip, "Samples dropped at the start (filter transient)")->capture_default_str();
+  idim->add_option("--vs", a->vs, "Stribeck velocity of the stribeck term (m/s or rad/s)")->capture_default_str();
+  idim->add_option("--delta", a->delta, "Stribeck exponent of the stribeck term")->capture_default_str();
+  idim->add_option("--validate", a->validate, "Second data file for a cross-test with the identified parameters");
+
+  auto* breakaway = method(identify, "breakaway",
+                           "Torque-mode trapezoid experiment (ramp up, hold, ramp down): Fs, Fc, Fv (and M) from "
+                           "time, torque (or current with --kt) and velocity",
+                           (*io)[1], "rotary");
+  breakaway->add_option("--inertia", a->inertia, "Rotor inertia (kg m^2 or kg); estimated when not given");
+  breakaway->add_option("--velocity-threshold", a->threshold, "Speed above which the axis moves (default 1 % of max)");
+
+  auto* sweep = method(identify, "sweep",
+                       "Constant-velocity tests: friction-velocity points from steady segments and a fitted law",
+                       (*io)[2], "rotary");
+  sweep->add_option("--model", a->model, "Law to fit: coulomb-viscous, coulomb-viscous-asymmetric, stribeck, stribeck-asymmetric")
+      ->capture_default_str();
+  sweep->add_option("--delta", a->fixed_delta, "Hold the Stribeck exponent at this value (default: fitted)");
+  sweep->add_option("--tolerance", a->relative_tolerance, "Relative velocity band of a steady segment")->capture_default_str();
+  sweep->add_option("--min-duration", a->min_duration, "Shortest steady segment (s)")->capture_default_str();
+  sweep->add_option("--segment", a->segments, "T_BEGIN:T_END (s) of a steady segment, instead of detection (repeatable)");
+
+  auto* decay = method(identify, "decay",
+                       "Free oscillation of a pendulum or spring-mass: Coulomb and viscous friction from the energy lost "
+                       "per half cycle",
+                       (*io)[3], "linear");
+  decay->add_option("--stiffness", a->stiffness, "Restoring stiffness (N/m or N m/rad; m g l for a pendulum)");
+  decay->add_option("--inertia", a->inertia, "Mass or inertia (kg or kg m^2), with --natural-frequency");
+  decay->add_option("--natural-frequency", a->natural_frequency,
+                    "sqrt(k/M) (rad/s): without --stiffness, report Fc/k and the damping ratio");
+  decay->add_flag("--pendulum", a->pendulum, "Restoring torque is stiffness * sin(angle)");
+
+  return [a, io, idim, breakaway, sweep, decay]() -> int {
+    if (idim->parsed()) return run_idim(*a, (*io)[0]);
+    if (breakaway->parsed()) return run_breakaway(*a, (*io)[1]);
+    if (sweep->parsed()) return run_sweep(*a, (*io)[2]);
+    if (decay->parsed()) return run_decay(*a, (*io)[3]);
     return 2;
   };
 }

@@ -1,13 +1,77 @@
+// frictionlab simulate SCENARIO.yaml [-o OUT.csv] [--overwrite]
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
 #include "commands.hpp"
+#include "frictionlab/io/atomic_write.hpp"
+#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/simulate/simulate.hpp"
 
 namespace frictionlab::cli {
+namespace {
 
-// Placeholder until the simulate work lands: the subcommand exists and says so.
+struct SimulateArgs {
+  std::string scenario;
+  std::string output;
+  bool overwrite = false;
+};
+
+// A short human summary of a run: what ran, where it ended, the mode switches.
+std::string summary(const std::string& file, const Scenario& sc, const Trajectory& tr) {
+  std::ostringstream out;
+  out.precision(6);
+  double vmax = 0.0, fmax = 0.0;
+  for (std::size_t i = 0; i < tr.rows(); ++i) {
+    vmax = std::max(vmax, std::abs(tr.velocity[i]));
+    fmax = std::max(fmax, std::abs(tr.friction[i]));
+  }
+  out << "scenario   " << file << "\n"
+      << "plant      " << sc.plant->type() << "\n"
+      << "friction   " << sc.law.name() << "\n"
+      << "solver     " << tr.stats.solver << " (" << tr.stats.steps << " steps, " << tr.stats.restarts
+      << " restarts)\n"
+      << "samples    " << tr.rows() << " rows, t = 0 .. " << tr.time.back() << " s\n"
+      << "final      position " << tr.position.back() << ", velocity " << tr.velocity.back() << "\n"
+      << "peak       |velocity| " << vmax << ", |friction| " << fmax << "\n";
+  if (!tr.switches.empty()) {
+    out << "switches   " << tr.switches.size() << " (stick/slip mode changes)\n";
+    const std::size_t shown = std::min<std::size_t>(tr.switches.size(), 6);
+    for (std::size_t i = 0; i < shown; ++i) {
+      const auto& s = tr.switches[i];
+      out << "  t = " << s.time << " s  " << switch_kind_name(s.kind) << "  at position " << s.position
+          << ", applied " << s.applied << "\n";
+    }
+    if (shown < tr.switches.size()) out << "  ... (" << tr.switches.size() - shown << " more)\n";
+  }
+  return out.str();
+}
+
+}  // namespace
+
 Handler register_simulate(CLI::App& app) {
-  app.add_subcommand("simulate", "(not yet available)");
-  return [] {
-    throw std::invalid_argument("'simulate' is not available in this build yet");
-    return 2;
+  auto args = std::make_shared<SimulateArgs>();
+  CLI::App* cmd = app.add_subcommand("simulate", "Simulate a scenario file (plant, friction law, input) to CSV.");
+  cmd->add_option("scenario", args->scenario, "scenario YAML file (see examples/*.yaml)")->required();
+  cmd->add_option("-o,--output", args->output,
+                  "write the trajectory as CSV (columns time, position, velocity, friction, applied, current, "
+                  "voltage, reference, stuck); without it a summary is printed");
+  cmd->add_flag("--overwrite", args->overwrite, "replace an existing output file");
+  return [args]() -> int {
+    if (!args->output.empty() && !args->overwrite && std::filesystem::exists(args->output))
+      throw std::invalid_argument(args->output + " exists; pass --overwrite to replace it");
+    const Scenario sc = load_scenario(args->scenario);
+    const Trajectory tr = simulate(sc);
+    if (args->output.empty()) {
+      std::cout << summary(args->scenario, sc, tr);
+    } else {
+      AtomicWriteOptions w;
+      w.overwrite = args->overwrite;
+      write_file_atomic(args->output, tr.to_csv(), w);
+      std::cerr << summary(args->scenario, sc, tr) << "wrote      " << args->output << "\n";
+    }
+    return 0;
   };
 }
 

@@ -43,12 +43,15 @@ struct Asymmetric {
     try {
       side.validate();
     } catch (const std::invalid_argument& e) {
-      // "stribeck: Fs = 0.5 must be ..." -> "stribeck-asymmetric: Fs_pos = 0.5 must be ..."
+      // "stribeck: Fs = 0.5 must be >= Fc = 1 ..." -> "stribeck-asymmetric: Fs_pos = 0.5 must be >= Fc_pos = 1 ..."
       std::string msg = e.what();
       const std::string head = std::string(Law::kName) + ": ";
       std::string rest = msg.substr(head.size());
       const auto eq = rest.find(" = ");
-      throw std::invalid_argument(name() + ": " + rest.substr(0, eq) + std::string(suffix) + rest.substr(eq));
+      std::string rule = rest.substr(eq);
+      // A rule that refers to another parameter of the same side names it with the suffix too.
+      if (const auto ref = rule.find(" Fc = "); ref != std::string::npos) rule.insert(ref + 3, suffix);
+      throw std::invalid_argument(name() + ": " + rest.substr(0, eq) + std::string(suffix) + rule);
     }
   }
 };

@@ -1,7 +1,7 @@
 #pragma once
 // Elasto-plastic friction (Dupont, Hayward, Armstrong, Altpeter 2002): LuGre with a purely
 // elastic zone |z| <= zba, so that small oscillating forces cause no drift.
-//   dz/dt = v (1 - a(z, v) sigma0 z / g(v)),   F = sigma0 z + sigma1 dz/dt + sigma2 v
+//   dz/dt = v (1 - a(z, v) z / zss(v)),   zss(v) = sign(v) g(v) / sigma0,   F = sigma0 z + sigma1 dz/dt + sigma2 v
 //   a = 0 for |z| <= zba or sign(z) != sign(v); 1 for |z| >= zmax = g(v)/sigma0;
 //   a = (1 + sin(pi (|z| - (zmax + zba)/2) / (zmax - zba))) / 2 in between.
 
@@ -48,11 +48,11 @@ struct ElastoPlasticT {
     detail::require(std::isfinite(sigma1) && sigma1 >= 0, kName, "sigma1", sigma1, ">= 0 (N s/m or N m s/rad)");
     detail::require(std::isfinite(sigma2) && sigma2 >= 0, kName, "sigma2", sigma2, ">= 0 (N s/m or N m s/rad)");
     detail::require(std::isfinite(Fc) && Fc > 0, kName, "Fc", Fc, "> 0 (N or N m)");
-    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + std::to_string(Fc) + " (N or N m)");
+    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + detail::format_value(Fc) + " (N or N m)");
     detail::require(std::isfinite(vs) && vs > 0, kName, "vs", vs, "> 0 (m/s or rad/s)");
     detail::require(std::isfinite(delta) && delta > 0, kName, "delta", delta, "> 0");
     detail::require(std::isfinite(zba) && zba > 0 && zba < Fc / sigma0, kName, "zba", zba,
-                    "> 0 and < Fc / sigma0 = " + std::to_string(Fc / sigma0) + " (m or rad)");
+                    "> 0 and < Fc / sigma0 = " + detail::format_value(Fc / sigma0) + " (m or rad)");
   }
 
   int num_states() const { return 1; }
@@ -75,9 +75,11 @@ struct ElastoPlasticT {
     return T(0.5) * sin(T(std::numbers::pi) * (az - (zmax + T(zba)) / T(2)) / (zmax - T(zba))) + T(0.5);
   }
 
+  /// dz/dt = v - a(z, v) sigma0 |v| z / g(v) (m/s or rad/s): z relaxes toward g(v) sign(v) / sigma0.
   template <class T>
   T state_derivative(const T& z, const T& v) const {
-    return v * (T(1) - weight(z, v) * T(sigma0) * z / level(v));
+    using std::abs;
+    return v - weight(z, v) * T(sigma0) * abs(v) * z / level(v);
   }
   template <class T>
   T force(const T& z, const T& v) const {

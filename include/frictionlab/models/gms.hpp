@@ -56,7 +56,7 @@ struct GmsT {
     }
     detail::require(std::abs(sum - 1.0) <= 1e-9, kName, "sum(alpha)", sum, "1 (the elements share the Stribeck level)");
     detail::require(std::isfinite(Fc) && Fc > 0, kName, "Fc", Fc, "> 0 (N or N m)");
-    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + std::to_string(Fc) + " (N or N m)");
+    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + detail::format_value(Fc) + " (N or N m)");
     detail::require(std::isfinite(vs) && vs > 0, kName, "vs", vs, "> 0 (m/s or rad/s)");
     detail::require(std::isfinite(delta) && delta > 0, kName, "delta", delta, "> 0");
     detail::require(std::isfinite(C) && C > 0, kName, "C", C, "> 0 (N/s or N m/s)");

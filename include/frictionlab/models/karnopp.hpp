@@ -33,7 +33,7 @@ struct KarnoppT {
   /// Throws std::invalid_argument naming the first parameter that breaks its rule.
   void validate() const {
     detail::require(std::isfinite(Fc) && Fc >= 0, kName, "Fc", Fc, ">= 0 (N or N m)");
-    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + std::to_string(Fc) + " (N or N m)");
+    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + detail::format_value(Fc) + " (N or N m)");
     detail::require(std::isfinite(Fv) && Fv >= 0, kName, "Fv", Fv, ">= 0 (N s/m or N m s/rad)");
     detail::require(std::isfinite(dv) && dv > 0, kName, "dv", dv, "> 0 (m/s or rad/s)");
   }

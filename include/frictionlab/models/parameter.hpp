@@ -34,13 +34,19 @@ std::string_view unit(Quantity q, Axis axis = Axis::linear);
 Axis parse_axis(std::string_view text);
 
 namespace detail {
+/// A value as validation messages print it (10 significant digits: 1e-05, not std::to_string's 0.000010).
+inline std::string format_value(double value) {
+  std::ostringstream out;
+  out.precision(10);
+  out << value;
+  return out.str();
+}
+
 /// Throws std::invalid_argument("LAW: NAME = VALUE must be RULE") when `ok` is false.
 inline void require(bool ok, std::string_view law, std::string_view name, double value, std::string_view rule) {
   if (ok) return;
-  std::ostringstream msg;
-  msg.precision(10);
-  msg << law << ": " << name << " = " << value << " must be " << rule;
-  throw std::invalid_argument(msg.str());
+  throw std::invalid_argument(std::string(law) + ": " + std::string(name) + " = " + format_value(value) + " must be " +
+                              std::string(rule));
 }
 }  // namespace detail
 

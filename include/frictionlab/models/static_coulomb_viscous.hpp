@@ -28,7 +28,7 @@ struct StaticCoulombViscousT {
   /// Throws std::invalid_argument naming the first parameter that breaks its rule (Fc >= 0, Fs >= Fc, Fv >= 0).
   void validate() const {
     detail::require(std::isfinite(Fc) && Fc >= 0, kName, "Fc", Fc, ">= 0 (N or N m)");
-    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + std::to_string(Fc) + " (N or N m)");
+    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + detail::format_value(Fc) + " (N or N m)");
     detail::require(std::isfinite(Fv) && Fv >= 0, kName, "Fv", Fv, ">= 0 (N s/m or N m s/rad)");
   }
 

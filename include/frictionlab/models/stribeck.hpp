@@ -35,7 +35,7 @@ struct StribeckT {
   /// (Fc >= 0, Fs >= Fc, vs > 0, delta > 0, Fv >= 0, all finite).
   void validate() const {
     detail::require(std::isfinite(Fc) && Fc >= 0, kName, "Fc", Fc, ">= 0 (N or N m)");
-    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + std::to_string(Fc) + " (N or N m)");
+    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + detail::format_value(Fc) + " (N or N m)");
     detail::require(std::isfinite(vs) && vs > 0, kName, "vs", vs, "> 0 (m/s or rad/s)");
     detail::require(std::isfinite(delta) && delta > 0, kName, "delta", delta, "> 0");
     detail::require(std::isfinite(Fv) && Fv >= 0, kName, "Fv", Fv, ">= 0 (N s/m or N m s/rad)");

@@ -1,0 +1,95 @@
+// Static friction laws: one evaluation of the sliding force, through the concrete type (inlined,
+// what a templated controller or fitter runs) and through FrictionLaw (run-time choice by name).
+// Target: < 5 ns per call. The velocity cycles through 1024 values so nothing is constant-folded.
+
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+#include "frictionlab/models/friction_law.hpp"
+
+namespace {
+
+using namespace frictionlab;
+
+constexpr std::size_t kInputs = 1024;  // power of two: the index wraps with a mask
+
+// Velocities of both signs from 1e-5 to 1 m/s (through the Stribeck dip and beyond).
+const std::array<double, kInputs>& velocities() {
+  static const std::array<double, kInputs> v = [] {
+    std::array<double, kInputs> out{};
+    for (std::size_t i = 0; i < kInputs; ++i)
+      out[i] = (i % 2 ? -1.0 : 1.0) * std::pow(10.0, -5.0 + 5.0 * static_cast<double>((i * 389) % kInputs) / kInputs);
+    return out;
+  }();
+  return v;
+}
+
+template <class Law>
+void BM_StaticLaw(benchmark::State& state, Law law) {
+  const auto& v = velocities();
+  benchmark::DoNotOptimize(law);  // parameters are run-time values
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(law.sliding(v[i++ & (kInputs - 1)]));
+  }
+  state.SetLabel("target < 5 ns");
+}
+
+void BM_FrictionLaw(benchmark::State& state, FrictionLaw law) {
+  const auto& v = velocities();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(law.sliding(v[i++ & (kInputs - 1)]));
+  }
+  state.SetLabel("target < 5 ns");
+}
+
+// With stiction: friction_force(law, v, applied) at a velocity that is zero one call in four.
+template <class Law>
+void BM_StaticLawWithStiction(benchmark::State& state, Law law) {
+  const auto& v = velocities();
+  benchmark::DoNotOptimize(law);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ & (kInputs - 1);
+    const double vel = (k & 3) == 0 ? 0.0 : v[k];
+    benchmark::DoNotOptimize(friction_force(law, vel, v[(k + 7) & (kInputs - 1)] * 1e5));
+  }
+  state.SetLabel("target < 5 ns");
+}
+
+const Table& table() {
+  static const Table t({-1.0, -0.1, -0.01, -0.001, 0.001, 0.01, 0.1, 1.0}, {-1.4, -1.0, -1.2, -1.5, 1.5, 1.2, 1.0, 1.4});
+  return t;
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_StaticLaw, coulomb, Coulomb{});
+BENCHMARK_CAPTURE(BM_StaticLaw, viscous, Viscous{});
+BENCHMARK_CAPTURE(BM_StaticLaw, coulomb_viscous, CoulombViscous{});
+BENCHMARK_CAPTURE(BM_StaticLaw, static_coulomb_viscous, StaticCoulombViscous{});
+BENCHMARK_CAPTURE(BM_StaticLaw, stribeck, Stribeck{});
+BENCHMARK_CAPTURE(BM_StaticLaw, stribeck_delta_1_5, Stribeck{1.0, 1.5, 1e-3, 1.5, 0.4});
+BENCHMARK_CAPTURE(BM_StaticLaw, karnopp, Karnopp{});
+BENCHMARK_CAPTURE(BM_StaticLaw, table_8_points, table());
+BENCHMARK_CAPTURE(BM_StaticLaw, smooth_tanh, Smooth{1.0, 1.5, 1e-3, 2.0, 0.4, 1e-3, SmoothShape::tanh});
+BENCHMARK_CAPTURE(BM_StaticLaw, smooth_atan, Smooth{1.0, 1.5, 1e-3, 2.0, 0.4, 1e-3, SmoothShape::atan});
+BENCHMARK_CAPTURE(BM_StaticLaw, coulomb_asymmetric, Asymmetric<Coulomb>{Coulomb{1.0}, Coulomb{0.8}});
+BENCHMARK_CAPTURE(BM_StaticLaw, viscous_asymmetric, Asymmetric<Viscous>{Viscous{0.1}, Viscous{0.2}});
+BENCHMARK_CAPTURE(BM_StaticLaw, coulomb_viscous_asymmetric, Asymmetric<CoulombViscous>{});
+BENCHMARK_CAPTURE(BM_StaticLaw, static_coulomb_viscous_asymmetric, Asymmetric<StaticCoulombViscous>{});
+BENCHMARK_CAPTURE(BM_StaticLaw, stribeck_asymmetric, Asymmetric<Stribeck>{});
+BENCHMARK_CAPTURE(BM_StaticLawWithStiction, stribeck, Stribeck{});
+BENCHMARK_CAPTURE(BM_StaticLawWithStiction, karnopp, Karnopp{});
+
+BENCHMARK_CAPTURE(BM_FrictionLaw, coulomb, FrictionLaw(Coulomb{}));
+BENCHMARK_CAPTURE(BM_FrictionLaw, coulomb_viscous, FrictionLaw(CoulombViscous{}));
+BENCHMARK_CAPTURE(BM_FrictionLaw, stribeck, FrictionLaw(Stribeck{}));
+BENCHMARK_CAPTURE(BM_FrictionLaw, karnopp, FrictionLaw(Karnopp{}));
+BENCHMARK_CAPTURE(BM_FrictionLaw, table_8_points, FrictionLaw(table()));
+BENCHMARK_CAPTURE(BM_FrictionLaw, smooth_tanh, FrictionLaw(Smooth{}));
+BENCHMARK_CAPTURE(BM_FrictionLaw, stribeck_asymmetric, FrictionLaw(Asymmetric<Stribeck>{}));

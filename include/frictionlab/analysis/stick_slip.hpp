@@ -1,0 +1,52 @@
+#pragma once
+// Stick-slip detection: the stick and slip intervals of a motion record, its period, the peak
+// slip velocity, and the friction force at breakaway and at re-stick.
+
+#include <span>
+#include <vector>
+
+namespace frictionlab {
+
+/// Options of detect_stick_slip.
+struct StickSlipOptions {
+  /// |v| at or below this counts as stuck (m/s or rad/s). Default 0: use 1 % of the largest |v|
+  /// (dynamic laws creep while "stuck"; exact hybrid simulations have v = 0 exactly).
+  double velocity_threshold = 0.0;
+  /// Slips shorter than this are merged into the surrounding stick (s). Default 0.
+  double min_slip_duration = 0.0;
+};
+
+/// A time interval [start, end] (s).
+struct TimeInterval {
+  double start = 0.0;
+  double end = 0.0;
+};
+
+/// Result of detect_stick_slip. Forces are in the unit of the force signal (N or N m).
+struct StickSlipResult {
+  std::vector<TimeInterval> stick;  ///< stuck intervals, in time order
+  std::vector<TimeInterval> slip;   ///< sliding intervals, in time order (the last may be open: ends at the record's end)
+  double velocity_threshold = 0.0;  ///< the threshold used
+  /// Mean time between successive slip starts (s); the first interval is left out when there
+  /// are at least three starts (it starts from the initial state, not from the limit cycle).
+  /// NaN with fewer than two slips.
+  double period = 0.0;
+  double peak_slip_velocity = 0.0;  ///< largest |v| during slips (m/s or rad/s)
+  double mean_slip_duration = 0.0;  ///< s, over complete slips
+  /// Force at each breakaway (the last stuck sample before a slip) and at each re-stick (the
+  /// first stuck sample after a slip); empty without a force signal.
+  std::vector<double> breakaway_force;
+  std::vector<double> restick_force;
+  double mean_breakaway_force = 0.0;
+  double mean_restick_force = 0.0;
+  double mean_force_drop = 0.0;  ///< mean (breakaway - re-stick) over complete slips
+};
+
+/// Detects stick and slip in a record.
+/// \param t velocity and force: equal lengths (force may be empty), t strictly increasing (s).
+/// \throws std::invalid_argument when lengths differ, fewer than 3 samples, t not increasing
+///         (naming the sample), or a negative threshold.
+StickSlipResult detect_stick_slip(std::span<const double> t, std::span<const double> v, std::span<const double> force,
+                                  const StickSlipOptions& options = {});
+
+}  // namespace frictionlab

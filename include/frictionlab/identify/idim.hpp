@@ -1,0 +1,116 @@
+#pragma once
+// IDIM-LS: inverse dynamic model least squares on a measured trajectory,
+//   force = M qdd + Fv qd + Fc sign(qd) + offset (+ further terms),
+// with the EMPS benchmark recipe (Janot, Gautier, Brunot 2019) as the pipeline:
+//   1. qf = zero-phase Butterworth low-pass of the position (order 4, cut-off 100 Hz, odd
+//      padding of 12 samples, steady-state initial conditions: MATLAB's filtfilt);
+//   2. qd, qdd = central differences of qf and qd (one-sided at the ends), dt = mean step;
+//   3. regressor columns (one per term) and y = force; drop the first 49 samples (and
+//      optionally some at the end);
+//   4. every column and y: scipy.signal.decimate(x, 10) (order-8 Chebyshev I, zero phase);
+//   5. ordinary least squares; std = s sqrt(diag((X'X)^-1)), s^2 = ||e||^2 / (N - p).
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "frictionlab/identify/result.hpp"
+#include "frictionlab/models/parameter.hpp"
+
+namespace frictionlab {
+
+/// Measured signals of one run (SI units).
+struct IdimData {
+  Eigen::VectorXd time;      ///< s, length N, strictly increasing and regular
+  Eigen::VectorXd position;  ///< m or rad, length N; leave empty to use `velocity` instead
+  Eigen::VectorXd velocity;  ///< m/s or rad/s, length N; used (filtered, not differentiated) when position is empty
+  Eigen::VectorXd force;     ///< applied force or torque (gain * drive input), N or N m, length N
+  std::string file;          ///< source file, for results and messages
+  std::string sha256;        ///< its digest
+};
+
+/// Filtered motion the regressor columns are built from (before dropping and decimating).
+struct IdimKinematics {
+  Eigen::VectorXd q;    ///< filtered position, m or rad (empty when velocity was given)
+  Eigen::VectorXd qd;   ///< velocity, m/s or rad/s
+  Eigen::VectorXd qdd;  ///< acceleration, m/s^2 or rad/s^2
+};
+
+/// One regressor column and the parameter multiplying it: force = sum(parameter * column).
+/// Add your own through IdimOptions::extra_terms (e.g. a position-dependent friction term).
+struct IdimTerm {
+  std::string parameter;   ///< parameter name in the result ("M", "Fv", ...)
+  Quantity quantity;       ///< gives the unit printed
+  std::function<Eigen::VectorXd(const IdimKinematics&)> column;  ///< length N, from the kinematics
+};
+
+/// Options of identify_idim; defaults are the EMPS recipe.
+struct IdimOptions {
+  /// Built-in terms, in column order: "inertia" (M, qdd), "viscous" (Fv, qd), "coulomb" (Fc,
+  /// sign(qd)), "offset" (offset, 1), "asymmetric" (= viscous_pos, coulomb_pos, viscous_neg,
+  /// coulomb_neg: Fv_pos qd (qd>0), Fc_pos (qd>0), Fv_neg qd (qd<0), Fc_neg -(qd<0)), each of
+  /// those four alone, and "stribeck" (Fs_minus_Fc, sign(qd) exp(-|qd/vs|^delta), with
+  /// stribeck_vs and stribeck_delta). Default: inertia, viscous, coulomb, offset.
+  std::vector<std::string> terms = {"inertia", "viscous", "coulomb", "offset"};
+  /// Further terms appended after `terms`.
+  std::vector<IdimTerm> extra_terms;
+  /// Position low-pass cut-off, Hz. Default 100.
+  double cutoff_hz = 100.0;
+  /// Butterworth order. Default 4.
+  int filter_order = 4;
+  /// Odd padding of the zero-phase low-pass, samples. Default 12 = 3 * (order + 1 - 1) (MATLAB).
+  Eigen::Index padlen = 12;
+  /// Samples dropped at the start after differentiation. Default 49.
+  Eigen::Index skip = 49;
+  /// Samples dropped at the end, after differentiation. Default 0 (EMPS ends at rest). Records
+  /// that end in motion need some: the one-sided differences there give a wrong acceleration.
+  Eigen::Index skip_end = 0;
+  /// Decimation factor (1: none). Default 10.
+  int decimation = 10;
+  /// Stribeck velocity (m/s or rad/s, > 0) and exponent of the "stribeck" term. Defaults 0.01, 2.
+  double stribeck_vs = 0.01;
+  double stribeck_delta = 2.0;
+  /// No excitation when max |qd| over the used samples is not above this, m/s or rad/s. Default 0.
+  double min_velocity = 0.0;
+  /// Status error when the condition number of the column-normalised regressor exceeds this.
+  /// Default 1e8.
+  double max_condition = 1e8;
+  /// Units printed. Default linear.
+  Axis axis = Axis::linear;
+};
+
+/// The regression the recipe builds: decimated regressor matrix, decimated force, and the terms.
+struct IdimRegression {
+  Eigen::MatrixXd X;                    ///< N_used x p
+  Eigen::VectorXd y;                    ///< N_used, N or N m
+  std::vector<IdimTerm> terms;          ///< p terms, column order
+  double dt = 0;                        ///< s, mean sample step of the raw data
+  double max_speed = 0;                 ///< max |qd| over the used raw samples, m/s or rad/s
+};
+
+/// The terms `options` asks for, in column order.
+/// \throws std::invalid_argument naming an unknown term (and listing the known ones), a
+///         repeated parameter, or a non-positive stribeck_vs.
+std::vector<IdimTerm> idim_terms(const IdimOptions& options);
+
+/// Steps 1-4 of the recipe on one data set.
+/// \throws std::invalid_argument naming the file and the problem for unequal lengths, non-finite
+///         samples, non-increasing or irregular time, no position and no velocity, a cut-off at or
+///         above Nyquist, or too few samples for the padding, skip and decimation.
+IdimRegression idim_regression(const IdimData& data, const IdimOptions& options = {});
+
+/// Identifies the parameters of the terms by the recipe. Status error (not an exception), with a
+/// message naming the cause, when the data cannot give an answer: a regressor column that is zero
+/// (no motion, no acceleration), no excitation (velocity never above min_velocity), fewer
+/// samples than parameters, or a condition number above max_condition.
+/// \throws std::invalid_argument on bad input, as idim_regression.
+Result identify_idim(const IdimData& data, const IdimOptions& options = {});
+
+/// Relative force error of an identified parameter set on a second run processed by the same
+/// pipeline (same options; terms are taken from `options`, values from `identified` by name).
+/// \throws std::invalid_argument when `identified` is not ok or lacks a parameter of a term, and
+///         as idim_regression for bad data.
+ValidationFigures cross_test(const Result& identified, const IdimData& data, const IdimOptions& options = {});
+
+}  // namespace frictionlab

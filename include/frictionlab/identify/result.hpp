@@ -1,0 +1,81 @@
+#pragma once
+// The result every identification method returns: parameters with standard deviations and
+// units, fit figures, optional validation figures on a second data set, diagnostics, and a
+// status with a message. Its JSON form is the MODEL.json of the command line (DESIGN.md).
+
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace frictionlab {
+
+/// One identified parameter.
+struct ParameterEstimate {
+  std::string name;  ///< DESIGN.md name: "M", "Fv", "Fc", "offset", "Fc_pos", ...
+  double value = 0;  ///< SI units, see `unit`
+  double std = 0;    ///< standard deviation, same unit (NaN when unknown)
+  std::string unit;  ///< e.g. "N", "N s/m", "kg"
+};
+
+/// How well the identified model reproduces the data it was identified on.
+struct FitFigures {
+  double relative_error_percent = std::numeric_limits<double>::quiet_NaN();  ///< 100 ||y - y_hat|| / ||y||
+  double rmse = std::numeric_limits<double>::quiet_NaN();                    ///< sqrt(mean((y - y_hat)^2)), unit of y
+  std::size_t samples = 0;                                                   ///< samples in the fit
+};
+
+/// The same figures on a second data set (cross-test), with that file's name and digest.
+struct ValidationFigures {
+  std::string file;
+  std::string sha256;
+  double relative_error_percent = std::numeric_limits<double>::quiet_NaN();
+  double rmse = std::numeric_limits<double>::quiet_NaN();
+  std::size_t samples = 0;
+};
+
+/// Numerical health of an identification.
+struct Diagnostics {
+  double condition_number = std::numeric_limits<double>::quiet_NaN();  ///< of the regressor matrix (NaN if none)
+  std::vector<std::string> warnings;                                   ///< human-readable, one sentence each
+  std::map<std::string, double> numbers;                               ///< free-form figures ("dt", "residual_std", ...)
+  /// Named groups of figures, e.g. groups["readoff"] = {{"Fs", 0.1}, {"Fc", 0.08}} (a JSON object each).
+  std::map<std::string, std::map<std::string, double>> groups;
+  /// Named lists of records, e.g. lists["points"] = one {"velocity": v, "force": f} per segment
+  /// (a JSON array of objects each).
+  std::map<std::string, std::vector<std::map<std::string, double>>> lists;
+};
+
+enum class ResultStatus { ok, error };
+
+/// Outcome of an identification method.
+struct Result {
+  ResultStatus status = ResultStatus::ok;
+  std::string message;      ///< why status is error (names file, parameter, expectation); empty when ok
+  std::string method;       ///< "idim", "sweep", ...
+  std::string model;        ///< friction law name, e.g. "coulomb-viscous"
+  std::string data_file;    ///< identification data file
+  std::string data_sha256;  ///< its sha256
+  std::vector<ParameterEstimate> parameters;
+  FitFigures fit;
+  std::optional<ValidationFigures> validation;
+  Diagnostics diagnostics;
+
+  bool ok() const { return status == ResultStatus::ok; }
+  /// The parameter named `name`, or nullptr.
+  const ParameterEstimate* find(const std::string& name) const;
+  /// Value of the parameter `name`. \throws std::invalid_argument listing the parameters.
+  double value(const std::string& name) const;
+};
+
+/// JSON text of a result (schema 1 of DESIGN.md):
+/// {"schema":1,"status":"ok"|"error","message":...,"method":...,"model":...,
+///  "data":{"file":...,"sha256":...},"parameters":{"Fc":{"value":v,"std":s,"unit":"N"},...},
+///  "fit":{"relative_error_percent":e,"rmse":r,"samples":n},"validation":{...} (only when set),
+///  "diagnostics":{"condition_number":c,"warnings":[...], ...numbers, ...groups, ...lists}}. Non-finite numbers are null.
+/// `indent` < 0 gives one line. (Returns text so nlohmann_json stays a private dependency.)
+std::string to_json(const Result& result, int indent = 2);
+
+}  // namespace frictionlab

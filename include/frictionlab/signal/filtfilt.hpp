@@ -1,0 +1,50 @@
+#pragma once
+// Zero-phase forward-backward filtering, as scipy.signal.filtfilt and sosfiltfilt with odd
+// padding and steady-state initial conditions (lfilter_zi / sosfilt_zi). MATLAB's filtfilt
+// equals filtfilt(b, a, x, padlen = 3 * (max(len(a), len(b)) - 1)).
+
+#include <Eigen/Core>
+#include <optional>
+
+#include "frictionlab/signal/transfer_function.hpp"
+
+namespace frictionlab {
+
+/// Options of filtfilt / sosfiltfilt.
+struct FiltfiltOptions {
+  /// Samples of odd reflection (2 x(0) - x(k)) added at each end before filtering.
+  /// Default (empty): scipy's, 3 * max(len(a), len(b)) for filtfilt and 3 * (2 * sections + 1
+  /// - trailing zero taps) for sosfiltfilt. 0 turns padding off. Must be < x.size().
+  std::optional<Eigen::Index> padlen;
+};
+
+/// Direct-form II transposed filtering, scipy.signal.lfilter(b, a, x, zi=zi). Shapes: x of
+/// length N, zi of length max(len(a), len(b)) - 1 (empty: zero state); returns length N.
+/// \throws std::invalid_argument if a is empty or a(0) == 0, or zi has the wrong length.
+Eigen::VectorXd lfilter(const TransferFunction& tf, const Eigen::VectorXd& x, const Eigen::VectorXd& zi = {});
+
+/// Steady-state initial state of lfilter for a unit step input, scipy.signal.lfilter_zi.
+/// Shape: max(len(a), len(b)) - 1. \throws std::invalid_argument if a(0) == 0.
+Eigen::VectorXd lfilter_zi(const TransferFunction& tf);
+
+/// Zero-phase filtering, scipy.signal.filtfilt(b, a, x, padtype='odd', padlen=...).
+/// Shapes: x of length N > padlen; returns length N.
+/// \throws std::invalid_argument when N <= padlen (message gives both), or a(0) == 0.
+Eigen::VectorXd filtfilt(const TransferFunction& tf, const Eigen::VectorXd& x, const FiltfiltOptions& options = {});
+
+/// Cascade filtering through second-order sections, scipy.signal.sosfilt(sos, x, zi=zi).
+/// zi: sections x 2 (empty: zero state). Returns length N.
+/// \throws std::invalid_argument if zi has the wrong shape or a section has a0 == 0.
+Eigen::VectorXd sosfilt(const SecondOrderSections& sos, const Eigen::VectorXd& x,
+                        const Eigen::MatrixX2d& zi = Eigen::MatrixX2d());
+
+/// Steady-state section states for a unit step, scipy.signal.sosfilt_zi. Shape: sections x 2.
+Eigen::MatrixX2d sosfilt_zi(const SecondOrderSections& sos);
+
+/// Zero-phase filtering through second-order sections, scipy.signal.sosfiltfilt(sos, x,
+/// padtype='odd', padlen=...). Shapes: x of length N > padlen; returns length N.
+/// \throws std::invalid_argument when N <= padlen.
+Eigen::VectorXd sosfiltfilt(const SecondOrderSections& sos, const Eigen::VectorXd& x,
+                            const FiltfiltOptions& options = {});
+
+}  // namespace frictionlab

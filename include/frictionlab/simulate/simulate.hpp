@@ -1,0 +1,48 @@
+#pragma once
+// The simulation engine: one entry point for every plant and law.
+//
+// Static laws with stiction (hybrid mode). The body is either stuck or sliding in a direction s:
+//  - stuck: velocity is exactly 0, position is frozen, friction = applied; the plant's other
+//    states (motor current, controller integrator, base position) keep evolving. Root functions
+//    applied - breakaway_positive (rising) and applied + breakaway_negative (falling) end it: the
+//    switch to sliding happens at the instant applied reaches the level, located by CVODE's root
+//    finder to about 100 unit roundoffs of t.
+//  - sliding in s: friction = sliding(v), with its one-sided limit at v -> 0 from the s side
+//    (so the right-hand side stays smooth across the step that finds the zero). The root
+//    function v (crossing towards 0) ends it at the instant v = 0: velocity is set to exactly 0,
+//    then the body sticks if -breakaway_negative <= applied <= breakaway_positive at that state,
+//    otherwise it slides on in the direction of applied (reversal).
+//  After every switch (and at every corner of the input) CVODE is re-initialised from the exact
+//  state, so there is no creep, no chatter, and no tiny steps near v = 0.
+// Continuous static laws and dynamic laws: CVODE BDF, dense Newton, difference-quotient Jacobian.
+// Fixed-step mode: see SolverMode::fixed_step.
+
+#include "frictionlab/models/friction_law.hpp"
+#include "frictionlab/plants/plant.hpp"
+#include "frictionlab/simulate/input.hpp"
+#include "frictionlab/simulate/options.hpp"
+#include "frictionlab/simulate/scenario.hpp"
+#include "frictionlab/simulate/trajectory.hpp"
+
+namespace frictionlab {
+
+/// Simulates `plant` with friction `law` driven by `input`.
+/// \returns rows at t = k / output_rate (see SimulationOptions).
+/// \throws std::invalid_argument for bad options (non-positive duration, rate, tolerance or step,
+///         a dt that does not divide the output period, a solver mode that does not fit the law),
+///         naming the option and its value;
+///         std::runtime_error when the integrator fails ("simulation failed at t = T s: REASON");
+///         nothing partial is returned.
+Trajectory simulate(const Plant& plant, const FrictionLaw& law, const InputSignal& input,
+                    const SimulationOptions& options);
+
+/// simulate(*scenario.plant, scenario.law, scenario.input, scenario.options).
+/// \throws std::invalid_argument when scenario.plant is null, and what the other form throws.
+Trajectory simulate(const Scenario& scenario);
+
+/// The solver mode `automatic` resolves to for `law` (hybrid, stiff), or `requested` itself after
+/// checking it fits. \throws std::invalid_argument when it does not (hybrid with a dynamic law,
+/// stiff with a static law that has a breakaway level).
+SolverMode resolve_solver_mode(const FrictionLaw& law, SolverMode requested);
+
+}  // namespace frictionlab

@@ -1,0 +1,65 @@
+#pragma once
+// The result of a simulation: sampled signals as columns, plus the mode switches that happened.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace frictionlab {
+
+/// What kind of mode switch an event was (hybrid mode).
+enum class SwitchKind {
+  breakaway,  ///< stuck -> sliding: |applied| reached the breakaway level
+  stick,      ///< sliding -> stuck: velocity reached 0 and |applied| is within the breakaway levels
+  reversal,   ///< velocity reached 0 and |applied| exceeds the breakaway level on the other side
+};
+
+/// One mode switch, at the exact time the root finder located.
+struct ModeSwitch {
+  double time = 0.0;      ///< s
+  SwitchKind kind = SwitchKind::stick;
+  double position = 0.0;  ///< m or rad
+  double applied = 0.0;   ///< applied force at the switch (N or N m)
+  int direction = 0;      ///< sliding direction after the switch (+1 / -1), 0 when stuck
+};
+
+/// Counters of the integrator.
+struct SimulationStats {
+  long steps = 0;             ///< CVODE steps (fixed-step mode: steps of dt)
+  long rhs_evaluations = 0;   ///< right-hand side calls
+  long restarts = 0;          ///< CVODE re-initialisations (mode switches and input corners)
+  const char* solver = "";    ///< the solver mode actually used ("hybrid", "stiff", "fixed-step")
+};
+
+/// Sampled simulation result. All columns have rows() entries.
+struct Trajectory {
+  std::vector<double> time;       ///< s
+  std::vector<double> position;   ///< m or rad
+  std::vector<double> velocity;   ///< m/s or rad/s
+  std::vector<double> friction;   ///< friction force (N or N m), sign of motion
+  std::vector<double> applied;    ///< net non-friction force on the body (N or N m)
+  std::vector<double> current;    ///< motor current (A); 0 without a motor
+  std::vector<double> voltage;    ///< motor voltage (V); 0 without a motor
+  std::vector<double> reference;  ///< input signal (reference of a loop, command, base position)
+  std::vector<double> stuck;      ///< 1 while stuck (hybrid mode), else 0
+  /// Dynamic laws: law_state[i] is the column of internal state i (m or rad: bristle or element
+  /// deflections); empty for static laws. Not part of the CSV.
+  std::vector<std::vector<double>> law_state;
+  std::vector<ModeSwitch> switches;  ///< hybrid mode: every mode switch, in time order
+  SimulationStats stats;
+
+  std::size_t rows() const { return time.size(); }
+  /// Column names in CSV order: time, position, velocity, friction, applied, current, voltage,
+  /// reference, stuck.
+  static const std::vector<std::string>& column_names();
+  /// Column by name (one of column_names()). \throws std::invalid_argument listing the names.
+  const std::vector<double>& column(std::string_view name) const;
+  /// The CSV text: header row, then one row per sample (shortest round-trip
+  /// form of each number, so reading it back gives the same doubles).
+  std::string to_csv() const;
+};
+
+/// Name of a switch kind ("breakaway", "stick", "reversal").
+const char* switch_kind_name(SwitchKind kind);
+
+}  // namespace frictionlab

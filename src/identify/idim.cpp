@@ -1,0 +1,310 @@
+#include "frictionlab/identify/idim.hpp"
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "frictionlab/signal/butterworth.hpp"
+#include "frictionlab/signal/decimate.hpp"
+#include "frictionlab/signal/differentiate.hpp"
+#include "frictionlab/signal/filtfilt.hpp"
+
+namespace frictionlab {
+namespace {
+
+using Vec = Eigen::VectorXd;
+
+Vec sign(const Vec& v) { return v.unaryExpr([](double x) { return double((x > 0) - (x < 0)); }); }
+Vec positive(const Vec& v) { return v.unaryExpr([](double x) { return x > 0 ? 1.0 : 0.0; }); }
+Vec negative(const Vec& v) { return v.unaryExpr([](double x) { return x < 0 ? 1.0 : 0.0; }); }
+
+std::string where(const IdimData& d) { return d.file.empty() ? std::string("idim: ") : d.file + ": "; }
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+void check_signal(const IdimData& d, const Vec& v, const char* name, Eigen::Index n) {
+  if (v.size() != n) {
+    throw std::invalid_argument(where(d) + name + " has " + std::to_string(v.size()) + " samples; expected " +
+                                std::to_string(n) + " like time");
+  }
+  for (Eigen::Index k = 0; k < n; ++k) {
+    if (!std::isfinite(v(k))) {
+      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": " + name + " = " + fmt(v(k)) +
+                                  " is not a finite number");
+    }
+  }
+}
+
+// Mean sample step after checking time is finite, strictly increasing and regular (1 %).
+double checked_step(const IdimData& d) {
+  const Vec& t = d.time;
+  const Eigen::Index n = t.size();
+  if (n < 2) throw std::invalid_argument(where(d) + "time has " + std::to_string(n) + " samples; expected many");
+  check_signal(d, t, "time", n);
+  for (Eigen::Index k = 1; k < n; ++k) {
+    if (!(t(k) > t(k - 1))) {
+      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time " + fmt(t(k)) +
+                                  " s is not greater than the previous " + fmt(t(k - 1)) +
+                                  " s; expected strictly increasing time");
+    }
+  }
+  const double dt = (t(n - 1) - t(0)) / static_cast<double>(n - 1);
+  // Steps are compared with the median step, so a gap is reported where it is.
+  std::vector<double> steps(static_cast<std::size_t>(n - 1));
+  for (Eigen::Index k = 1; k < n; ++k) steps[static_cast<std::size_t>(k - 1)] = t(k) - t(k - 1);
+  auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+  std::nth_element(steps.begin(), mid, steps.end());
+  const double median = *mid;
+  constexpr double kRegularTol = 0.01;  // relative step jitter accepted (EMPS: 2.4e-5)
+  for (Eigen::Index k = 1; k < n; ++k) {
+    if (std::abs(t(k) - t(k - 1) - median) > kRegularTol * median) {
+      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time step " +
+                                  fmt(t(k) - t(k - 1)) + " s differs from the median step " + fmt(median) +
+                                  " s by more than 1 %; IDIM needs regularly sampled data");
+    }
+  }
+  return dt;
+}
+
+IdimTerm builtin(const std::string& name, const IdimOptions& o) {
+  if (name == "inertia") return {"M", Quantity::inertia, [](const IdimKinematics& k) { return k.qdd; }};
+  if (name == "viscous") return {"Fv", Quantity::viscous, [](const IdimKinematics& k) { return k.qd; }};
+  if (name == "coulomb") return {"Fc", Quantity::force, [](const IdimKinematics& k) { return sign(k.qd); }};
+  if (name == "offset") {
+    return {"offset", Quantity::force, [](const IdimKinematics& k) { return Vec::Ones(k.qd.size()).eval(); }};
+  }
+  if (name == "viscous_pos") {
+    return {"Fv_pos", Quantity::viscous,
+            [](const IdimKinematics& k) { return k.qd.cwiseProduct(positive(k.qd)).eval(); }};
+  }
+  if (name == "coulomb_pos") return {"Fc_pos", Quantity::force, [](const IdimKinematics& k) { return positive(k.qd); }};
+  if (name == "viscous_neg") {
+    return {"Fv_neg", Quantity::viscous,
+            [](const IdimKinematics& k) { return k.qd.cwiseProduct(negative(k.qd)).eval(); }};
+  }
+  if (name == "coulomb_neg") {
+    return {"Fc_neg", Quantity::force, [](const IdimKinematics& k) { return (-negative(k.qd)).eval(); }};
+  }
+  if (name == "stribeck") {
+    if (!(o.stribeck_vs > 0.0) || !(o.stribeck_delta > 0.0)) {
+      throw std::invalid_argument("idim: stribeck_vs = " + fmt(o.stribeck_vs) + " m/s and stribeck_delta = " +
+                                  fmt(o.stribeck_delta) + " must be positive for the 'stribeck' term");
+    }
+    const double vs = o.stribeck_vs, delta = o.stribeck_delta;
+    return {"Fs_minus_Fc", Quantity::force, [vs, delta](const IdimKinematics& k) {
+              return k.qd.unaryExpr([vs, delta](double v) {
+                return double((v > 0) - (v < 0)) * std::exp(-std::pow(std::abs(v / vs), delta));
+              }).eval();
+            }};
+  }
+  throw std::invalid_argument("idim: unknown term '" + name +
+                              "'; known terms: inertia, viscous, coulomb, offset, asymmetric, viscous_pos, "
+                              "coulomb_pos, viscous_neg, coulomb_neg, stribeck");
+}
+
+std::string model_name(const std::vector<IdimTerm>& terms, bool custom) {
+  std::set<std::string> p;
+  for (const auto& t : terms) p.insert(t.parameter);
+  if (custom || p.count("Fs_minus_Fc")) return "idim-custom";
+  if (p.count("Fc_pos") || p.count("Fv_pos")) return "coulomb-viscous-asymmetric";
+  if (p.count("Fc") && p.count("Fv")) return "coulomb-viscous";
+  if (p.count("Fc")) return "coulomb";
+  if (p.count("Fv")) return "viscous";
+  return "idim-custom";
+}
+
+Result error_result(Result r, std::string message) {
+  r.status = ResultStatus::error;
+  r.message = std::move(message);
+  r.parameters.clear();
+  return r;
+}
+
+}  // namespace
+
+std::vector<IdimTerm> idim_terms(const IdimOptions& options) {
+  std::vector<IdimTerm> out;
+  for (const auto& name : options.terms) {
+    if (name == "asymmetric") {
+      for (const char* n : {"viscous_pos", "coulomb_pos", "viscous_neg", "coulomb_neg"}) out.push_back(builtin(n, options));
+    } else {
+      out.push_back(builtin(name, options));
+    }
+  }
+  for (const auto& t : options.extra_terms) {
+    if (!t.column) throw std::invalid_argument("idim: extra term '" + t.parameter + "' has no column function");
+    out.push_back(t);
+  }
+  std::set<std::string> seen;
+  for (const auto& t : out) {
+    if (!seen.insert(t.parameter).second) {
+      throw std::invalid_argument("idim: parameter '" + t.parameter + "' appears twice in the terms");
+    }
+  }
+  if (out.empty()) throw std::invalid_argument("idim: no terms; expected at least one (e.g. inertia, viscous, coulomb)");
+  return out;
+}
+
+IdimRegression idim_regression(const IdimData& data, const IdimOptions& options) {
+  IdimRegression reg;
+  reg.terms = idim_terms(options);
+  const Eigen::Index n = data.time.size();
+  reg.dt = checked_step(data);
+  check_signal(data, data.force, "force", n);
+  if (options.decimation < 1) {
+    throw std::invalid_argument("idim: decimation = " + std::to_string(options.decimation) + " must be >= 1");
+  }
+  if (options.skip < 0 || options.skip_end < 0) {
+    throw std::invalid_argument("idim: skip = " + std::to_string(options.skip) + " and skip_end = " +
+                                std::to_string(options.skip_end) + " must be >= 0");
+  }
+  constexpr Eigen::Index kMinUsed = 64;  // decimate's padding needs 28 samples; ask for a few more
+  if (n - options.skip - options.skip_end < kMinUsed * std::max(1, options.decimation) / 2 || n <= options.padlen) {
+    throw std::invalid_argument(where(data) + std::to_string(n) + " samples are too few for skip = " +
+                                std::to_string(options.skip) + ", skip_end = " + std::to_string(options.skip_end) +
+                                ", padlen = " + std::to_string(options.padlen) +
+                                " and decimation = " + std::to_string(options.decimation));
+  }
+
+  // 1-2: zero-phase low-pass and central differences.
+  const TransferFunction lp = butter(options.filter_order, normalized_cutoff(options.cutoff_hz, reg.dt));
+  const FiltfiltOptions ff{options.padlen};
+  IdimKinematics k;
+  if (data.position.size() > 0) {
+    check_signal(data, data.position, "position", n);
+    k.q = filtfilt(lp, data.position, ff);
+    k.qd = gradient(k.q, reg.dt);
+  } else if (data.velocity.size() > 0) {
+    check_signal(data, data.velocity, "velocity", n);
+    k.qd = filtfilt(lp, data.velocity, ff);
+  } else {
+    throw std::invalid_argument(where(data) + "neither position nor velocity given; IDIM needs one of them");
+  }
+  k.qdd = gradient(k.qd, reg.dt);
+
+  // 3-4: columns, drop the start, decimate.
+  const Eigen::Index used = n - options.skip - options.skip_end;
+  reg.max_speed = k.qd.segment(options.skip, used).cwiseAbs().maxCoeff();
+  const auto reduce = [&](const Vec& full, const std::string& what) -> Vec {
+    if (full.size() != n) {
+      throw std::invalid_argument("idim: term '" + what + "' gave " + std::to_string(full.size()) +
+                                  " samples; expected " + std::to_string(n));
+    }
+    const Vec tail = full.segment(options.skip, used);
+    return options.decimation == 1 ? tail : decimate(tail, options.decimation);
+  };
+  reg.y = reduce(data.force, "force");
+  reg.X.resize(reg.y.size(), static_cast<Eigen::Index>(reg.terms.size()));
+  for (std::size_t j = 0; j < reg.terms.size(); ++j) {
+    reg.X.col(static_cast<Eigen::Index>(j)) = reduce(reg.terms[j].column(k), reg.terms[j].parameter);
+  }
+  return reg;
+}
+
+Result identify_idim(const IdimData& data, const IdimOptions& options) {
+  Result r;
+  r.method = "idim";
+  r.data_file = data.file;
+  r.data_sha256 = data.sha256;
+  const bool custom = !options.extra_terms.empty();
+  const IdimRegression reg = idim_regression(data, options);
+  r.model = model_name(reg.terms, custom);
+  const Eigen::Index p = reg.X.cols(), nobs = reg.X.rows();
+  r.diagnostics.numbers["dt"] = reg.dt;
+  r.diagnostics.numbers["cutoff_hz"] = options.cutoff_hz;
+  r.diagnostics.numbers["decimation"] = options.decimation;
+  r.diagnostics.numbers["skipped_samples"] = static_cast<double>(options.skip);
+  r.diagnostics.numbers["max_speed"] = reg.max_speed;
+
+  if (nobs <= p) {
+    return error_result(r, where(data) + std::to_string(nobs) + " samples after decimation for " + std::to_string(p) +
+                               " parameters; expected more samples than parameters");
+  }
+  // Velocities at the rounding level of the position (a constant record filtered and
+  // differentiated) are no motion at all.
+  const double velocity_floor = 1e-9 * data.position.cwiseAbs().maxCoeff() / reg.dt;
+  if (!(reg.max_speed > std::max(options.min_velocity, velocity_floor))) {
+    return error_result(r, where(data) + "no excitation: the velocity never exceeds " + fmt(options.min_velocity) +
+                               " (max |qd| = " + fmt(reg.max_speed) +
+                               "); IDIM needs a trajectory that moves in both directions");
+  }
+  // A zero column (no motion in one direction, no acceleration) cannot be identified.
+  const Vec norms = reg.X.colwise().norm();
+  for (Eigen::Index j = 0; j < p; ++j) {
+    if (!(norms(j) > 0.0)) {
+      return error_result(r, where(data) + "no excitation of parameter " + reg.terms[static_cast<std::size_t>(j)].parameter +
+                                 ": its regressor column is zero (e.g. no motion, or none in that direction); "
+                                 "rank-deficient regressors");
+    }
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(reg.X, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Vec& sv = svd.singularValues();
+  r.diagnostics.condition_number = sv(0) / sv(p - 1);
+  // Column-normalised condition number: independent of units, the measure of identifiability.
+  const Eigen::MatrixXd Xs = reg.X * norms.cwiseInverse().asDiagonal();
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svds(Xs);
+  const double cond_scaled = svds.singularValues()(0) / svds.singularValues()(p - 1);
+  r.diagnostics.numbers["condition_number_scaled"] = cond_scaled;
+  if (!(cond_scaled <= options.max_condition)) {
+    return error_result(r, where(data) + "rank-deficient regressors: condition number " + fmt(cond_scaled) +
+                               " (columns normalised) exceeds " + fmt(options.max_condition) +
+                               "; the trajectory does not excite the terms independently");
+  }
+
+  const Vec theta = svd.solve(reg.y);
+  const Vec e = reg.y - reg.X * theta;
+  const double ee = e.squaredNorm();
+  const double s2 = ee / static_cast<double>(nobs - p);
+  // (X'X)^-1 = V S^-2 V'.
+  const Eigen::MatrixXd vs = svd.matrixV() * sv.cwiseInverse().asDiagonal();
+  const Vec var = s2 * vs.rowwise().squaredNorm();
+  for (Eigen::Index j = 0; j < p; ++j) {
+    const auto& t = reg.terms[static_cast<std::size_t>(j)];
+    r.parameters.push_back({t.parameter, theta(j), std::sqrt(var(j)), std::string(unit(t.quantity, options.axis))});
+  }
+  r.fit.relative_error_percent = 100.0 * std::sqrt(ee) / reg.y.norm();
+  r.fit.rmse = std::sqrt(ee / static_cast<double>(nobs));
+  r.fit.samples = static_cast<std::size_t>(nobs);
+  r.diagnostics.numbers["residual_std"] = std::sqrt(s2);
+
+  for (const auto& q : r.parameters) {
+    constexpr double kPoorlyIdentified = 0.5;  // std above half the value: the estimate is not trustworthy
+    if (std::abs(q.std) > kPoorlyIdentified * std::abs(q.value)) {
+      r.diagnostics.warnings.push_back(q.name + " = " + fmt(q.value) + " " + q.unit + " is poorly identified (std " +
+                                       fmt(q.std) + ")");
+    }
+    const bool must_be_positive = q.name == "M" || q.name.rfind("Fv", 0) == 0 || q.name.rfind("Fc", 0) == 0;
+    if (must_be_positive && q.value < 0) {
+      r.diagnostics.warnings.push_back(q.name + " = " + fmt(q.value) + " " + q.unit + " is negative: not physical");
+    }
+  }
+  return r;
+}
+
+ValidationFigures cross_test(const Result& identified, const IdimData& data, const IdimOptions& options) {
+  if (!identified.ok()) {
+    throw std::invalid_argument("cross_test: the identification failed (" + identified.message + "); nothing to test");
+  }
+  const IdimRegression reg = idim_regression(data, options);
+  Vec theta(reg.X.cols());
+  for (std::size_t j = 0; j < reg.terms.size(); ++j) theta(static_cast<Eigen::Index>(j)) = identified.value(reg.terms[j].parameter);
+  const Vec e = reg.y - reg.X * theta;
+  ValidationFigures v;
+  v.file = data.file;
+  v.sha256 = data.sha256;
+  v.relative_error_percent = 100.0 * e.norm() / reg.y.norm();
+  v.rmse = std::sqrt(e.squaredNorm() / static_cast<double>(e.size()));
+  v.samples = static_cast<std::size_t>(e.size());
+  return v;
+}
+
+}  // namespace frictionlab

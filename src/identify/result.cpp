@@ -1,0 +1,72 @@
+#include "frictionlab/identify/result.hpp"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace frictionlab {
+namespace {
+
+nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+const ParameterEstimate* Result::find(const std::string& name) const {
+  for (const auto& p : parameters)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+double Result::value(const std::string& name) const {
+  if (const auto* p = find(name)) return p->value;
+  std::string names;
+  for (const auto& p : parameters) names += (names.empty() ? "" : ", ") + p.name;
+  throw std::invalid_argument("result of " + method + ": no parameter '" + name +
+                              "'; parameters: " + (names.empty() ? "(none)" : names));
+}
+
+std::string to_json(const Result& r, int indent) {
+  nlohmann::json j;
+  j["schema"] = 1;
+  j["status"] = r.ok() ? "ok" : "error";
+  j["message"] = r.message;
+  j["method"] = r.method;
+  j["model"] = r.model;
+  j["data"] = {{"file", r.data_file}, {"sha256", r.data_sha256}};
+  nlohmann::json params = nlohmann::json::object();
+  for (const auto& p : r.parameters) params[p.name] = {{"value", number(p.value)}, {"std", number(p.std)}, {"unit", p.unit}};
+  j["parameters"] = params;
+  j["fit"] = {{"relative_error_percent", number(r.fit.relative_error_percent)},
+              {"rmse", number(r.fit.rmse)},
+              {"samples", r.fit.samples}};
+  if (r.validation) {
+    const auto& v = *r.validation;
+    j["validation"] = {{"file", v.file},
+                       {"sha256", v.sha256},
+                       {"relative_error_percent", number(v.relative_error_percent)},
+                       {"rmse", number(v.rmse)},
+                       {"samples", v.samples}};
+  }
+  nlohmann::json d = nlohmann::json::object();
+  for (const auto& [key, value] : r.diagnostics.numbers) d[key] = number(value);
+  for (const auto& [key, group] : r.diagnostics.groups) {
+    nlohmann::json g = nlohmann::json::object();
+    for (const auto& [name, value] : group) g[name] = number(value);
+    d[key] = g;
+  }
+  for (const auto& [key, list] : r.diagnostics.lists) {
+    nlohmann::json arr = nlohmann::json::array();
+    for (const auto& record : list) {
+      nlohmann::json o = nlohmann::json::object();
+      for (const auto& [name, value] : record) o[name] = number(value);
+      arr.push_back(o);
+    }
+    d[key] = arr;
+  }
+  d["condition_number"] = number(r.diagnostics.condition_number);
+  d["warnings"] = r.diagnostics.warnings;
+  j["diagnostics"] = d;
+  return j.dump(indent);
+}
+
+}  // namespace frictionlab

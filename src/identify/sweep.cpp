@@ -1,0 +1,121 @@
+#include "frictionlab/identify/sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "frictionlab/signal/segments.hpp"
+#include "method_support.hpp"
+
+namespace frictionlab {
+using namespace detail;
+
+namespace {
+SweepPoint point_of(const SweepData& d, Eigen::Index b, Eigen::Index e) {
+  SweepPoint p;
+  const Eigen::Index n = e - b;
+  const auto v = d.velocity.segment(b, n), f = d.force.segment(b, n);
+  p.velocity = v.mean();
+  p.force = f.mean();
+  const double dn = std::max<double>(1.0, static_cast<double>(n - 1));
+  p.velocity_std = std::sqrt((v.array() - p.velocity).square().sum() / dn);
+  p.force_std = std::sqrt((f.array() - p.force).square().sum() / dn);
+  p.t_begin = d.time[b];
+  p.t_end = d.time[e - 1];
+  p.samples = static_cast<std::size_t>(n);
+  return p;
+}
+
+int parameter_count(StaticFitModel m, bool fixed_delta) {
+  switch (m) {
+    case StaticFitModel::coulomb_viscous: return 2;
+    case StaticFitModel::coulomb_viscous_asymmetric: return 4;
+    case StaticFitModel::stribeck: return fixed_delta ? 4 : 5;
+    case StaticFitModel::stribeck_asymmetric: return fixed_delta ? 8 : 10;
+  }
+  return 5;
+}
+}  // namespace
+
+std::vector<SweepPoint> sweep_points(const SweepData& d, const SweepOptions& o) {
+  const Eigen::Index n = d.time.size();
+  if (d.force.size() != n || d.velocity.size() != n)
+    throw std::invalid_argument("sweep: time, force and velocity must have equal lengths (have " + std::to_string(n) + ", " +
+                                std::to_string(d.force.size()) + ", " + std::to_string(d.velocity.size()) + ")");
+  for (Eigen::Index k = 0; k < n; ++k)
+    if (!std::isfinite(d.time[k]) || !std::isfinite(d.force[k]) || !std::isfinite(d.velocity[k]))
+      throw std::invalid_argument("sweep: sample " + std::to_string(k) + " is not finite");
+  std::vector<SweepPoint> points;
+  if (!o.windows.empty()) {
+    for (const auto& w : o.windows) {
+      const auto* t0 = d.time.data();
+      const auto b = std::lower_bound(t0, t0 + n, w.t_begin) - t0;
+      const auto e = std::upper_bound(t0, t0 + n, w.t_end) - t0;
+      if (!(w.t_end > w.t_begin) || e - b < 2)
+        throw std::invalid_argument("sweep: window " + format_number(w.t_begin) + ":" + format_number(w.t_end) +
+                                    " s holds fewer than 2 samples of the record (" + format_number(d.time[0]) + " to " +
+                                    format_number(d.time[n - 1]) + " s)");
+      points.push_back(point_of(d, b, e));
+    }
+    return points;
+  }
+  SteadySegmentOptions so;
+  const double vmax = d.velocity.cwiseAbs().maxCoeff();
+  so.velocity_tolerance = o.velocity_tolerance;
+  so.relative_tolerance = o.relative_tolerance;
+  so.min_duration = o.min_duration;
+  so.min_speed = o.min_speed >= 0 ? o.min_speed : 1e-3 * vmax;
+  for (const auto& seg : steady_segments(d.time, d.velocity, so)) {
+    const auto len = static_cast<Eigen::Index>(seg.size());
+    const auto skip = static_cast<Eigen::Index>(o.settle_fraction * static_cast<double>(len));
+    points.push_back(point_of(d, static_cast<Eigen::Index>(seg.begin) + skip, static_cast<Eigen::Index>(seg.end)));
+  }
+  return points;
+}
+
+Result identify_sweep(const SweepData& d, const SweepOptions& o) {
+  const auto points = sweep_points(d, o);
+  const std::string model = o.fit.model == StaticFitModel::stribeck ? "stribeck"
+                            : o.fit.model == StaticFitModel::stribeck_asymmetric ? "stribeck-asymmetric"
+                            : o.fit.model == StaticFitModel::coulomb_viscous ? "coulomb-viscous"
+                                                                              : "coulomb-viscous-asymmetric";
+  Result r = make_result("sweep", model);
+  auto& list = r.diagnostics.lists["points"];
+  for (const auto& p : points)
+    list.push_back({{"velocity", p.velocity}, {"velocity_std", p.velocity_std}, {"force", p.force},
+                    {"force_std", p.force_std}, {"t_begin", p.t_begin}, {"t_end", p.t_end},
+                    {"samples", static_cast<double>(p.samples)}});
+  r.diagnostics.numbers["segments"] = static_cast<double>(points.size());
+  const int p = parameter_count(o.fit.model, o.fit.fixed_delta > 0);
+  const int need = o.min_segments > 0 ? o.min_segments : p + 1;
+  if (static_cast<int>(points.size()) < need)
+    return fail(r, "only " + std::to_string(points.size()) + " steady segments found; " + model + " needs at least " +
+                       std::to_string(need) + " (relative velocity tolerance " + format_number(o.relative_tolerance) +
+                       ", minimum duration " + format_number(o.min_duration) + " s)");
+  const auto npos = std::count_if(points.begin(), points.end(), [](const SweepPoint& q) { return q.velocity > 0; });
+  if (npos == 0 || npos == static_cast<long>(points.size()))
+    r.diagnostics.warnings.push_back(std::string("no ") + (npos == 0 ? "positive" : "negative") +
+                                     "-velocity segments: the map covers one direction only");
+  Eigen::VectorXd v(static_cast<Eigen::Index>(points.size())), f(v.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    v[static_cast<Eigen::Index>(i)] = points[i].velocity;
+    f[static_cast<Eigen::Index>(i)] = points[i].force;
+  }
+  StaticFit fit;
+  try {
+    fit = fit_static_law(v, f, o.fit);
+  } catch (const std::invalid_argument& e) {
+    return fail(r, std::string("the segment means cannot be fitted: ") + e.what());
+  }
+  for (const auto& q : fit.parameters) add_parameter(r, q.name, q.value, q.std, q.quantity, o.axis);
+  r.fit.relative_error_percent = fit.relative_error_percent;
+  r.fit.rmse = fit.rmse;
+  r.fit.samples = fit.samples;
+  for (auto& w : fit.warnings) r.diagnostics.warnings.push_back(w);
+  r.diagnostics.numbers["iterations"] = fit.iterations;
+  r.diagnostics.numbers["max_speed"] = v.cwiseAbs().maxCoeff();
+  r.diagnostics.numbers["min_speed"] = v.cwiseAbs().minCoeff();
+  return r;
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,69 @@
+#include "frictionlab/io/dataset.hpp"
+
+#include <algorithm>
+#include <sstream>
+#include <stdexcept>
+
+namespace frictionlab {
+
+void Dataset::add_column(const std::string& name, Eigen::VectorXd values) {
+  const auto it = std::find(names_.begin(), names_.end(), name);
+  const bool replaces_only = it != names_.end() && names_.size() == 1;
+  if (!names_.empty() && !replaces_only && values.size() != rows()) {
+    std::ostringstream msg;
+    msg << where() << "column '" << name << "' has " << values.size() << " samples; expected " << rows()
+        << " like the other columns";
+    throw std::invalid_argument(msg.str());
+  }
+  if (it != names_.end()) {
+    columns_[static_cast<std::size_t>(it - names_.begin())] = std::move(values);
+  } else {
+    names_.push_back(name);
+    columns_.push_back(std::move(values));
+  }
+}
+
+Eigen::Index Dataset::rows() const { return columns_.empty() ? 0 : columns_.front().size(); }
+
+bool Dataset::has_column(const std::string& name) const {
+  return std::find(names_.begin(), names_.end(), name) != names_.end();
+}
+
+const Eigen::VectorXd& Dataset::column(const std::string& name) const {
+  const auto it = std::find(names_.begin(), names_.end(), name);
+  if (it == names_.end()) {
+    throw std::invalid_argument(where() + "no column '" + name + "'; the file has columns: " + describe_contents());
+  }
+  return columns_[static_cast<std::size_t>(it - names_.begin())];
+}
+
+Eigen::VectorXd& Dataset::column(const std::string& name) {
+  return const_cast<Eigen::VectorXd&>(static_cast<const Dataset&>(*this).column(name));
+}
+
+std::string Dataset::where() const { return file.empty() ? std::string() : file + ": "; }
+
+std::string Dataset::row_label(Eigen::Index k) const {
+  if (k >= 0 && static_cast<std::size_t>(k) < lines.size()) {
+    return "line " + std::to_string(lines[static_cast<std::size_t>(k)]);
+  }
+  return "sample " + std::to_string(k + 1);
+}
+
+std::string Dataset::describe_contents() const {
+  std::string out;
+  for (std::size_t i = 0; i < names_.size(); ++i) out += (i ? ", " : "") + names_[i];
+  if (names_.empty()) out = "(none)";
+  if (!scalars.empty()) {
+    out += " (scalars: ";
+    bool first = true;
+    for (const auto& [name, value] : scalars) {
+      out += (first ? "" : ", ") + name;
+      first = false;
+    }
+    out += ")";
+  }
+  return out;
+}
+
+}  // namespace frictionlab

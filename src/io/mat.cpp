@@ -1,0 +1,176 @@
+#include "frictionlab/io/mat.hpp"
+
+#include <matio.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "frictionlab/io/sha256.hpp"
+
+namespace frictionlab {
+namespace {
+
+// matio reports problems through a log function that prints to stderr by default; messages
+// are collected here instead, so the error we throw can quote them. (Thread-local: readers on
+// different threads keep their own messages.)
+thread_local std::string g_matio_log;
+
+void matio_log(int /*level*/, char* message) {
+  if (message != nullptr && g_matio_log.size() < 2000) {
+    if (!g_matio_log.empty()) g_matio_log += "; ";
+    g_matio_log += message;
+  }
+}
+
+struct MatCloser {
+  void operator()(mat_t* m) const { Mat_Close(m); }
+};
+struct VarFreer {
+  void operator()(matvar_t* v) const { Mat_VarFree(v); }
+};
+using MatPtr = std::unique_ptr<mat_t, MatCloser>;
+using VarPtr = std::unique_ptr<matvar_t, VarFreer>;
+
+template <typename T>
+Eigen::VectorXd convert(const void* data, std::size_t n) {
+  const T* p = static_cast<const T*>(data);
+  Eigen::VectorXd out(static_cast<Eigen::Index>(n));
+  for (std::size_t i = 0; i < n; ++i) out(static_cast<Eigen::Index>(i)) = static_cast<double>(p[i]);
+  return out;
+}
+
+// The values of a real numeric variable as doubles, or false when it is not one.
+bool numeric_values(const matvar_t& v, Eigen::VectorXd& out) {
+  if (v.isComplex || v.isLogical || v.data == nullptr || v.rank != 2) return false;
+  const std::size_t n = v.dims[0] * v.dims[1];
+  switch (v.class_type) {
+    case MAT_C_DOUBLE: out = convert<double>(v.data, n); return true;
+    case MAT_C_SINGLE: out = convert<float>(v.data, n); return true;
+    case MAT_C_INT8: out = convert<std::int8_t>(v.data, n); return true;
+    case MAT_C_UINT8: out = convert<std::uint8_t>(v.data, n); return true;
+    case MAT_C_INT16: out = convert<std::int16_t>(v.data, n); return true;
+    case MAT_C_UINT16: out = convert<std::uint16_t>(v.data, n); return true;
+    case MAT_C_INT32: out = convert<std::int32_t>(v.data, n); return true;
+    case MAT_C_UINT32: out = convert<std::uint32_t>(v.data, n); return true;
+    case MAT_C_INT64: out = convert<std::int64_t>(v.data, n); return true;
+    case MAT_C_UINT64: out = convert<std::uint64_t>(v.data, n); return true;
+    default: return false;
+  }
+}
+
+// matio (1.5.23) inflates a truncated compressed v5 variable without reporting it, so the
+// element structure of a v5 file is walked first: 128-byte header, then data elements each with
+// an 8-byte tag (type, byte count; small elements pack both into 8 bytes). An element reaching
+// past the end of the file means the file is truncated. v7.3 (HDF5) files are left to HDF5.
+std::string v5_structure_problem(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  if (bytes.size() < 128) return "shorter than the 128-byte MAT-file header";
+  const unsigned char* b = reinterpret_cast<const unsigned char*>(bytes.data());
+  const bool big_endian_file = b[126] == 'M' && b[127] == 'I';
+  const bool little_endian_file = b[126] == 'I' && b[127] == 'M';
+  if (!big_endian_file && !little_endian_file) return "no MAT-file endian indicator";
+  const auto u32 = [&](std::size_t at) {
+    return little_endian_file ? std::uint32_t(b[at]) | std::uint32_t(b[at + 1]) << 8 | std::uint32_t(b[at + 2]) << 16 |
+                                    std::uint32_t(b[at + 3]) << 24
+                              : std::uint32_t(b[at + 3]) | std::uint32_t(b[at + 2]) << 8 |
+                                    std::uint32_t(b[at + 1]) << 16 | std::uint32_t(b[at]) << 24;
+  };
+  const std::uint32_t version = little_endian_file ? (std::uint32_t(b[125]) << 8 | b[124]) : (std::uint32_t(b[124]) << 8 | b[125]);
+  if (version != 0x0100) return "";  // v7.3: HDF5 checks its own structure
+  constexpr std::uint32_t kMiCompressed = 15;
+  std::size_t at = 128;
+  while (at < bytes.size()) {
+    if (at + 8 > bytes.size()) return "truncated: a data element tag at byte " + std::to_string(at) + " is cut off";
+    const std::uint32_t type = u32(at);
+    if ((type >> 16) != 0) {  // small data element: 4 bytes of tag, up to 4 of data
+      at += 8;
+      continue;
+    }
+    std::size_t n = u32(at + 4);
+    if (type != kMiCompressed && n % 8 != 0) n += 8 - n % 8;
+    if (at + 8 + u32(at + 4) > bytes.size()) {
+      return "truncated: the data element at byte " + std::to_string(at) + " needs " + std::to_string(u32(at + 4)) +
+             " bytes but the file has " + std::to_string(bytes.size()) + " in all";
+    }
+    at += 8 + n;
+  }
+  return "";
+}
+
+}  // namespace
+
+Dataset read_mat(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw std::invalid_argument(path + ": no such MAT file (or not a regular file)");
+  }
+  // Hash first: it also proves the file is readable.
+  Dataset data;
+  data.file = path;
+  data.sha256 = sha256_file(path);
+
+  Mat_LogInitFunc("frictionlab", &matio_log);
+  g_matio_log.clear();
+  const auto fail = [&](const std::string& what) {
+    std::string msg = path + ": " + what;
+    if (!g_matio_log.empty()) msg += " (matio: " + g_matio_log + ")";
+    g_matio_log.clear();
+    throw std::invalid_argument(msg);
+  };
+
+  if (const std::string problem = v5_structure_problem(path); !problem.empty()) {
+    fail("not a valid MATLAB MAT file: " + problem);
+  }
+  MatPtr mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
+  if (!mat) fail("not a MATLAB MAT file (v5 or v7.3) or corrupt; expected a file saved by MATLAB's save");
+
+  // Names first (headers only), then each variable in full.
+  std::vector<std::string> names;
+  while (true) {
+    VarPtr info(Mat_VarReadNextInfo(mat.get()));
+    if (!info) break;
+    if (info->name != nullptr) names.emplace_back(info->name);
+  }
+  std::vector<std::pair<std::string, Eigen::VectorXd>> vectors;
+  std::vector<std::string> skipped;
+  Eigen::Index longest = 0;
+  for (const auto& name : names) {
+    VarPtr var(Mat_VarRead(mat.get(), name.c_str()));
+    if (!var) fail("cannot read variable '" + name + "' (corrupt or truncated file)");
+    Eigen::VectorXd values;
+    if (!numeric_values(*var, values) || values.size() == 0) {
+      skipped.push_back(name);
+      continue;
+    }
+    const bool vector = var->dims[0] == 1 || var->dims[1] == 1;
+    if (values.size() == 1) {
+      data.scalars[name] = values(0);
+    } else if (vector) {
+      longest = std::max(longest, values.size());
+      vectors.emplace_back(name, std::move(values));
+    } else {
+      skipped.push_back(name);
+    }
+  }
+  for (auto& [name, values] : vectors) {
+    if (values.size() == longest) data.add_column(name, std::move(values));
+    else skipped.push_back(name);
+  }
+  if (data.rows() == 0) {
+    std::string listed;
+    for (const auto& n : names) listed += (listed.empty() ? "" : ", ") + n;
+    fail("no real numeric vector variable (expected time series saved as 1xN or Nx1 arrays); variables: " +
+         (listed.empty() ? std::string("(none)") : listed));
+  }
+  g_matio_log.clear();
+  return data;
+}
+
+}  // namespace frictionlab

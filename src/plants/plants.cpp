@@ -1,0 +1,203 @@
+// Implementations of the plants in include/frictionlab/plants/.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "frictionlab/plants/axis.hpp"
+#include "frictionlab/plants/closed_loop.hpp"
+#include "frictionlab/plants/dc_motor.hpp"
+#include "frictionlab/plants/pendulum.hpp"
+#include "frictionlab/plants/plant.hpp"
+#include "frictionlab/plants/spring_base.hpp"
+#include "frictionlab/plants/velocity_drive.hpp"
+
+namespace frictionlab {
+namespace {
+
+std::string fmt(double x) {
+  std::ostringstream out;
+  out.precision(10);
+  out << x;
+  return out.str();
+}
+
+// Throws "PLANT: NAME = VALUE must be RULE".
+void require(bool ok, const char* plant, const char* name, double value, const char* rule) {
+  if (!ok) throw std::invalid_argument(std::string(plant) + ": " + name + " = " + fmt(value) + " must be " + rule);
+}
+
+}  // namespace
+
+void Plant::initial_extras(std::span<double> x) const {
+  for (std::size_t i = 2; i < x.size(); ++i) x[i] = 0.0;
+}
+
+PlantSignals Plant::signals(double, std::span<const double>, const InputValue& u) const {
+  return {0.0, 0.0, u.value};
+}
+
+// ---- rigid axis -------------------------------------------------------------------------------
+
+RigidAxis::RigidAxis(AxisParams p) : p_(p) {
+  require(std::isfinite(p.M) && p.M > 0, "axis", "M", p.M, "> 0 (kg or kg m^2)");
+  require(std::isfinite(p.offset), "axis", "offset", p.offset, "finite (N or N m)");
+}
+
+double RigidAxis::applied(double, std::span<const double>, const InputValue& u) const { return u.value + p_.offset; }
+
+void RigidAxis::derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
+                            std::span<double> dx) const {
+  dx[0] = x[1];
+  dx[1] = (applied(t, x, u) - friction) / p_.M;
+}
+
+// ---- pendulum ---------------------------------------------------------------------------------
+
+Pendulum::Pendulum(PendulumParams p) : p_(p) {
+  require(std::isfinite(p.m) && p.m > 0, "pendulum", "m", p.m, "> 0 (kg)");
+  require(std::isfinite(p.l) && p.l > 0, "pendulum", "l", p.l, "> 0 (m)");
+  require(std::isfinite(p.g) && p.g >= 0, "pendulum", "g", p.g, ">= 0 (m/s^2)");
+  require(std::isfinite(p.B) && p.B >= 0, "pendulum", "B", p.B, ">= 0 (N m s/rad)");
+}
+
+double Pendulum::applied(double, std::span<const double> x, const InputValue& u) const {
+  return u.value - p_.m * p_.g * p_.l * std::sin(x[0]) - p_.B * x[1];
+}
+
+void Pendulum::derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
+                           std::span<double> dx) const {
+  dx[0] = x[1];
+  dx[1] = (applied(t, x, u) - friction) / inertia();
+}
+
+double Pendulum::energy(std::span<const double> x) const {
+  return 0.5 * inertia() * x[1] * x[1] + p_.m * p_.g * p_.l * (1.0 - std::cos(x[0]));
+}
+
+// ---- spring with moving base ------------------------------------------------------------------
+
+SpringBase::SpringBase(SpringBaseParams p) : p_(p) {
+  require(std::isfinite(p.m) && p.m > 0, "spring-base", "m", p.m, "> 0 (kg)");
+  require(std::isfinite(p.k) && p.k > 0, "spring-base", "k", p.k, "> 0 (N/m)");
+  require(std::isfinite(p.c) && p.c >= 0, "spring-base", "c", p.c, ">= 0 (N s/m)");
+  require(std::isfinite(p.V0), "spring-base", "V0", p.V0, "finite (m/s)");
+  require(std::isfinite(p.x0), "spring-base", "x0", p.x0, "finite (m)");
+}
+
+double SpringBase::applied(double t, std::span<const double> x, const InputValue& u) const {
+  const double base = p_.x0 + p_.V0 * t;
+  return u.value - p_.k * (x[0] - base) - p_.c * (x[1] - p_.V0);
+}
+
+void SpringBase::derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
+                             std::span<double> dx) const {
+  dx[0] = x[1];
+  dx[1] = (applied(t, x, u) - friction) / p_.m;
+}
+
+PlantSignals SpringBase::signals(double t, std::span<const double>, const InputValue&) const {
+  return {0.0, 0.0, p_.x0 + p_.V0 * t};
+}
+
+// ---- DC motor ---------------------------------------------------------------------------------
+
+DcMotor::DcMotor(DcMotorParams p) : p_(p) {
+  require(std::isfinite(p.J) && p.J > 0, "dc-motor", "J", p.J, "> 0 (kg m^2)");
+  require(std::isfinite(p.R) && p.R > 0, "dc-motor", "R", p.R, "> 0 (ohm)");
+  if (p.drive == MotorDrive::voltage) require(std::isfinite(p.L) && p.L > 0, "dc-motor", "L", p.L, "> 0 (H)");
+  require(std::isfinite(p.Kt) && p.Kt > 0, "dc-motor", "Kt", p.Kt, "> 0 (N m/A)");
+  require(std::isfinite(p.Kb) && p.Kb >= 0, "dc-motor", "Kb", p.Kb, ">= 0 (V s/rad)");
+  require(std::isfinite(p.Ka) && p.Ka > 0, "dc-motor", "Ka", p.Ka, "> 0 (A/V)");
+  require(std::isfinite(p.load), "dc-motor", "load", p.load, "finite (N m)");
+}
+
+double DcMotor::current(std::span<const double> x, const InputValue& u) const {
+  return p_.drive == MotorDrive::voltage ? x[2] : p_.Ka * u.value;
+}
+
+double DcMotor::applied(double, std::span<const double> x, const InputValue& u) const {
+  return p_.Kt * current(x, u) - p_.load;
+}
+
+void DcMotor::derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
+                          std::span<double> dx) const {
+  dx[0] = x[1];
+  dx[1] = (applied(t, x, u) - friction) / p_.J;
+  if (p_.drive == MotorDrive::voltage) dx[2] = (u.value - p_.R * x[2] - p_.Kb * x[1]) / p_.L;
+}
+
+PlantSignals DcMotor::signals(double, std::span<const double> x, const InputValue& u) const {
+  const double i = current(x, u);
+  const double v = p_.drive == MotorDrive::voltage ? u.value : p_.R * i + p_.Kb * x[1];
+  return {i, v, u.value};
+}
+
+// ---- velocity drive ---------------------------------------------------------------------------
+
+VelocityDrive::VelocityDrive(VelocityDriveParams p) : p_(p) {
+  require(std::isfinite(p.M) && p.M >= 0, "velocity-drive", "M", p.M, ">= 0 (kg or kg m^2)");
+}
+
+double VelocityDrive::applied(double, std::span<const double>, const InputValue& u) const { return p_.M * u.rate; }
+
+void VelocityDrive::derivatives(double, std::span<const double>, const InputValue& u, double,
+                                std::span<double> dx) const {
+  dx[0] = u.value;
+  dx[1] = u.rate;
+}
+
+// ---- closed loop ------------------------------------------------------------------------------
+
+ClosedLoop::ClosedLoop(std::shared_ptr<const Plant> inner, ControllerParams c) : inner_(std::move(inner)), c_(c) {
+  if (!inner_) throw std::invalid_argument("controller: no plant to control");
+  if (inner_->kinematic())
+    throw std::invalid_argument("controller: cannot close a loop around a " + inner_->type() +
+                                " (its velocity is imposed); use axis or dc-motor");
+  require(std::isfinite(c.Kp) && c.Kp >= 0, "controller", "Kp", c.Kp, ">= 0");
+  require(std::isfinite(c.Ki) && c.Ki >= 0, "controller", "Ki", c.Ki, ">= 0");
+  require(std::isfinite(c.Kd) && c.Kd >= 0, "controller", "Kd", c.Kd, ">= 0");
+  if (c.loop == ControlLoop::velocity)
+    require(c.Kd == 0.0, "controller", "Kd", c.Kd, "0 in a velocity loop (it would need the acceleration)");
+  require(std::isfinite(c.limit) && c.limit >= 0, "controller", "limit", c.limit, ">= 0 (0 = no saturation)");
+  n_inner_ = inner_->num_states();
+}
+
+void ClosedLoop::initial_extras(std::span<double> x) const {
+  inner_->initial_extras(x.first(static_cast<std::size_t>(n_inner_)));
+  x[static_cast<std::size_t>(n_inner_)] = 0.0;
+}
+
+double ClosedLoop::control(std::span<const double> x, double r) const {
+  const double integral = x[static_cast<std::size_t>(n_inner_)];
+  double out;
+  if (c_.loop == ControlLoop::position) {
+    out = c_.Kp * (r - x[0]) + c_.Ki * integral - c_.Kd * x[1];
+  } else {
+    out = c_.Kp * (r - x[1]) + c_.Ki * integral;
+  }
+  if (c_.limit > 0) out = std::clamp(out, -c_.limit, c_.limit);
+  return out;
+}
+
+double ClosedLoop::applied(double t, std::span<const double> x, const InputValue& r) const {
+  const InputValue u{control(x, r.value), 0.0};
+  return inner_->applied(t, x.first(static_cast<std::size_t>(n_inner_)), u);
+}
+
+void ClosedLoop::derivatives(double t, std::span<const double> x, const InputValue& r, double friction,
+                             std::span<double> dx) const {
+  const std::size_t n = static_cast<std::size_t>(n_inner_);
+  const InputValue u{control(x, r.value), 0.0};
+  inner_->derivatives(t, x.first(n), u, friction, dx.first(n));
+  dx[n] = c_.loop == ControlLoop::position ? r.value - x[0] : r.value - x[1];
+}
+
+PlantSignals ClosedLoop::signals(double t, std::span<const double> x, const InputValue& r) const {
+  const InputValue u{control(x, r.value), 0.0};
+  PlantSignals s = inner_->signals(t, x.first(static_cast<std::size_t>(n_inner_)), u);
+  s.reference = r.value;
+  return s;
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,25 @@
+#include "frictionlab/signal/differentiate.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace frictionlab {
+
+Eigen::VectorXd gradient(const Eigen::VectorXd& x, double dt) {
+  if (!(dt > 0.0) || !std::isfinite(dt)) {
+    std::ostringstream msg;
+    msg << "gradient: sample time dt = " << dt << " s must be a positive finite number";
+    throw std::invalid_argument(msg.str());
+  }
+  const Eigen::Index n = x.size();
+  if (n < 2) throw std::invalid_argument("gradient: needs at least 2 samples, got " + std::to_string(n));
+  Eigen::VectorXd d(n);
+  // numpy.gradient(x, dt): (x[k+1] - x[k-1]) / (2 dt) inside, first differences at the ends.
+  if (n > 2) d.segment(1, n - 2) = (x.segment(2, n - 2) - x.segment(0, n - 2)) / (2.0 * dt);
+  d(0) = (x(1) - x(0)) / dt;
+  d(n - 1) = (x(n - 1) - x(n - 2)) / dt;
+  return d;
+}
+
+}  // namespace frictionlab

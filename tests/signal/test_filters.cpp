@@ -1,0 +1,186 @@
+// Filter design and zero-phase filtering against scipy 1.10 (values recorded with
+// tests/peers/emps_idim_reference.py --signal-csv tests/signal).
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "frictionlab/io/csv.hpp"
+#include "frictionlab/signal/butterworth.hpp"
+#include "frictionlab/signal/chebyshev.hpp"
+#include "frictionlab/signal/decimate.hpp"
+#include "frictionlab/signal/differentiate.hpp"
+#include "frictionlab/signal/filtfilt.hpp"
+
+namespace fl = frictionlab;
+
+namespace {
+
+// Coefficients are printed by scipy to 17 digits; the design differs from scipy's only by
+// rounding in a few complex products, so agreement is ~1e-14; 1e-10 leaves room for a
+// different libm while still catching any wrong formula.
+constexpr double kCoefRelTol = 1e-10;
+// Filtered series: same algorithm and order of operations as scipy, rounding differences
+// only; 1e-10 relative to the signal's scale (about 1 to 4).
+constexpr double kSeriesRelTol = 1e-10;
+
+void expect_close(const Eigen::VectorXd& got, const Eigen::VectorXd& want, double rel_tol, const std::string& what) {
+  ASSERT_EQ(got.size(), want.size()) << what;
+  const double scale = want.cwiseAbs().maxCoeff();
+  for (Eigen::Index i = 0; i < want.size(); ++i) {
+    EXPECT_NEAR(got(i), want(i), rel_tol * scale) << what << " [" << i << "]";
+  }
+}
+
+Eigen::VectorXd vec(std::initializer_list<double> v) {
+  Eigen::VectorXd out(static_cast<Eigen::Index>(v.size()));
+  Eigen::Index i = 0;
+  for (double x : v) out(i++) = x;
+  return out;
+}
+
+std::string ref_path(const std::string& name) { return std::string(FRICTIONLAB_SOURCE_DIR) + "/tests/signal/" + name; }
+
+}  // namespace
+
+TEST(Butterworth, MatchesScipyButter) {
+  struct Case {
+    int order;
+    double wn;
+    Eigen::VectorXd b, a;
+  };
+  const Case cases[] = {
+      {4, 0.2,
+       vec({0.00482434335771623, 0.01929737343086492, 0.02894606014629739, 0.01929737343086492, 0.00482434335771623}),
+       vec({1., -2.3695130071820376, 2.31398841441588, -1.0546654058785676, 0.18737949236818488})},
+      {2, 0.5, vec({0.2928932188134525, 0.585786437626905, 0.2928932188134525}), vec({1., 0., 0.1715728752538099})},
+      {5, 0.05,
+       vec({2.3409914930614002e-06, 1.1704957465307002e-05, 2.3409914930614004e-05, 2.3409914930614004e-05,
+            1.1704957465307002e-05, 2.3409914930614002e-06}),
+       vec({1., -4.491830965077046, 8.094055417826647, -7.312081280150383, 3.3110475619883983, -0.6011158228598384})},
+      {8, 0.9,
+       vec({0.44508427467139355, 3.5606741973711484, 12.462359690799019, 24.924719381598038, 31.155899226997548,
+            24.924719381598038, 12.462359690799019, 3.5606741973711484, 0.44508427467139355}),
+       vec({1., 6.390364563108543, 18.000338335739908, 29.171099374882864, 29.731375438327472, 19.505631768126655,
+            8.040995932998943, 1.903668891132587, 0.19810001155979165})},
+  };
+  for (const auto& c : cases) {
+    const auto tf = fl::butter(c.order, c.wn);
+    const std::string what = "butter(" + std::to_string(c.order) + ", " + std::to_string(c.wn) + ")";
+    expect_close(tf.b, c.b, kCoefRelTol, what + ".b");
+    expect_close(tf.a, c.a, kCoefRelTol, what + ".a");
+  }
+}
+
+TEST(Butterworth, RejectsBadArguments) {
+  EXPECT_THROW(fl::butter(0, 0.2), std::invalid_argument);
+  EXPECT_THROW(fl::butter(4, 1.0), std::invalid_argument);
+  EXPECT_THROW(fl::butter(4, 0.0), std::invalid_argument);
+  try {
+    fl::normalized_cutoff(600.0, 1e-3);
+    FAIL() << "expected invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("600 Hz"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("500 Hz"), std::string::npos) << e.what();
+  }
+  EXPECT_DOUBLE_EQ(fl::normalized_cutoff(100.0, 1e-3), 0.2);
+}
+
+TEST(Chebyshev, MatchesScipyCheby1) {
+  struct Case {
+    int order;
+    double rp, wn;
+    Eigen::VectorXd b, a;
+  };
+  const Case cases[] = {
+      {8, 0.05, 0.08,
+       vec({3.5863243209995207e-09, 2.8690594567996165e-08, 1.0041708098798658e-07, 2.0083416197597316e-07,
+            2.5104270246996645e-07, 2.0083416197597316e-07, 1.0041708098798658e-07, 2.8690594567996165e-08,
+            3.5863243209995207e-09}),
+       vec({1., -7.397720470943626, 24.072727760966973, -44.998914665983264, 52.84346676692242, -39.915914352468405,
+            18.93766580976049, -5.159179426375671, 0.6178695015203624})},
+      {5, 1.0, 0.3,
+       vec({0.00202016939761766, 0.01010084698808828, 0.02020169397617656, 0.02020169397617656, 0.01010084698808828,
+            0.00202016939761766}),
+       vec({1., -3.162364647736195, 4.760700364549024, -4.052794082948058, 1.9343905258872025, -0.41528673902820834})},
+      {3, 0.5, 0.6, vec({0.24887256626278964, 0.7466176987883689, 0.7466176987883689, 0.24887256626278964}),
+       vec({1., 0.5043332968678547, 0.5289392467403876, -0.04229201350592467})},
+  };
+  for (const auto& c : cases) {
+    const auto tf = fl::cheby1(c.order, c.rp, c.wn);
+    const std::string what = "cheby1(" + std::to_string(c.order) + ")";
+    expect_close(tf.b, c.b, kCoefRelTol, what + ".b");
+    expect_close(tf.a, c.a, kCoefRelTol, what + ".a");
+  }
+}
+
+TEST(Chebyshev, SecondOrderSectionsMatchScipy) {
+  // scipy.signal.cheby1(8, 0.05, 0.08, output='sos'), the filter of decimate(x, 10).
+  fl::SecondOrderSections want(4, 6);
+  want << 3.5863243209995207e-09, 7.1726486419990414e-09, 3.5863243209995207e-09, 1.0, -1.8204968644767618,
+      8.3085974037961374e-01,  //
+      1.0, 2.0, 1.0, 1.0, -1.8289505620176847, 8.5531737103877414e-01,  //
+      1.0, 2.0, 1.0, 1.0, -1.8517334482627625, 9.0151610557138129e-01,  //
+      1.0, 2.0, 1.0, 1.0, -1.8965395961864169, 9.6442455846429320e-01;
+  const auto sos = fl::cheby1_sos(8, 0.05, 0.08);
+  ASSERT_EQ(sos.rows(), 4);
+  for (Eigen::Index r = 0; r < 4; ++r) {
+    expect_close(sos.row(r).transpose(), want.row(r).transpose(), kCoefRelTol, "sos row " + std::to_string(r));
+  }
+}
+
+TEST(Filtfilt, MatchesScipyFiltfilt) {
+  const fl::Dataset ref = fl::read_csv(ref_path("ref_filtfilt.csv"));
+  const Eigen::VectorXd& x = ref.column("x");
+  const auto b4 = fl::butter(4, 0.2);
+  expect_close(fl::filtfilt(b4, x, {12}), ref.column("filtfilt_butter4_0p2_pad12"), kSeriesRelTol, "padlen 12");
+  expect_close(fl::filtfilt(b4, x), ref.column("filtfilt_butter4_0p2_default"), kSeriesRelTol, "default padlen");
+  expect_close(fl::filtfilt(fl::cheby1(5, 1.0, 0.3), x), ref.column("filtfilt_cheby1_5_1_0p3_default"), kSeriesRelTol,
+               "cheby1");
+}
+
+TEST(Filtfilt, LfilterZiIsTheStepSteadyState) {
+  // A constant input starting from zi * x0 stays at the DC gain (1 for Butterworth).
+  const auto tf = fl::butter(4, 0.2);
+  const Eigen::VectorXd x = Eigen::VectorXd::Constant(50, 2.5);
+  const Eigen::VectorXd y = fl::lfilter(tf, x, fl::lfilter_zi(tf) * 2.5);
+  constexpr double kTol = 1e-12;  // exact steady state up to rounding
+  for (Eigen::Index i = 0; i < y.size(); ++i) EXPECT_NEAR(y(i), 2.5, kTol);
+}
+
+TEST(Filtfilt, TooShortSignalNamesTheLengths) {
+  const Eigen::VectorXd x = Eigen::VectorXd::Ones(10);
+  try {
+    fl::filtfilt(fl::butter(4, 0.2), x);
+    FAIL() << "expected invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("10 samples"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("padlen = 15"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Decimate, MatchesScipyDecimate) {
+  const fl::Dataset ref = fl::read_csv(ref_path("ref_filtfilt.csv"));
+  const Eigen::VectorXd& x = ref.column("x");
+  expect_close(fl::decimate(x, 10), fl::read_csv(ref_path("ref_decimate10.csv")).column("y"), kSeriesRelTol, "q = 10");
+  expect_close(fl::decimate(x, 3), fl::read_csv(ref_path("ref_decimate3.csv")).column("y"), kSeriesRelTol, "q = 3");
+  EXPECT_THROW(fl::decimate(x, 0), std::invalid_argument);
+}
+
+TEST(Gradient, MatchesNumpyGradient) {
+  const fl::Dataset ref = fl::read_csv(ref_path("ref_filtfilt.csv"));
+  expect_close(fl::gradient(ref.column("x"), 0.001), ref.column("gradient_dt0p001"), kSeriesRelTol, "gradient");
+  EXPECT_THROW(fl::gradient(Eigen::VectorXd::Ones(1), 0.001), std::invalid_argument);
+  EXPECT_THROW(fl::gradient(Eigen::VectorXd::Ones(5), 0.0), std::invalid_argument);
+}
+
+TEST(Gradient, ExactOnAQuadraticInside) {
+  // Central differences are exact for a parabola away from the ends.
+  const double dt = 0.01;
+  Eigen::VectorXd x(20);
+  for (Eigen::Index i = 0; i < 20; ++i) x(i) = 3.0 * (i * dt) * (i * dt);
+  const Eigen::VectorXd d = fl::gradient(x, dt);
+  constexpr double kTol = 1e-12;  // rounding of differences of values <= 1
+  for (Eigen::Index i = 1; i < 19; ++i) EXPECT_NEAR(d(i), 6.0 * i * dt, kTol);
+}
