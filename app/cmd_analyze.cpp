@@ -1,13 +1,180 @@
+// frictionlab analyze envelope|stick-slip DATA [--time C] [--position C] [--velocity C] [--force C]
+//                     [--json FILE|-] [--overwrite]
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
 #include "commands.hpp"
+#include "frictionlab/analysis/envelope.hpp"
+#include "frictionlab/analysis/stick_slip.hpp"
+#include "frictionlab/io/atomic_write.hpp"
+#include "frictionlab/io/load.hpp"
 
 namespace frictionlab::cli {
+namespace {
 
-// Placeholder until the analyze work lands: the subcommand exists and says so.
+struct AnalyzeArgs {
+  std::string method;
+  std::string data;
+  std::string time = "time", position = "position", velocity = "velocity", force = "friction";
+  std::string json;
+  bool overwrite = false;
+  double threshold = 0.0;
+};
+
+// NaN is not JSON: null instead.
+nlohmann::json num(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
+std::vector<double> column(const Dataset& d, const std::string& name, const std::string& option) {
+  if (!d.has_column(name))
+    throw std::invalid_argument(d.where() + "no column '" + name + "' (" + option + "); the file has: " +
+                                d.describe_contents());
+  const Eigen::VectorXd& c = d.column(name);
+  std::vector<double> out(c.data(), c.data() + c.size());
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (!std::isfinite(out[i]))
+      throw std::invalid_argument(d.where() + d.row_label(static_cast<Eigen::Index>(i)) + ", column '" + name +
+                                  "': expected a finite number");
+  return out;
+}
+
+nlohmann::json envelope_json(const EnvelopeResult& r) {
+  auto fit = [](const EnvelopeFit& f) {
+    return nlohmann::json{{"lambda", num(f.lambda)}, {"p", num(f.p)}, {"q", num(f.q)}, {"slope", num(f.slope)},
+                          {"relative_rms", num(f.relative_rms)}};
+  };
+  return {{"kind", decay_kind_name(r.kind)},
+          {"half_cycles", r.amplitudes.size()},
+          {"half_period", num(r.half_period)},
+          {"decay_fraction", num(r.decay_fraction)},
+          {"decrement_per_half_cycle", num(r.decrement_per_half_cycle)},
+          {"log_decrement", num(r.log_decrement)},
+          {"fits", {{"linear", fit(r.linear)}, {"exponential", fit(r.exponential)}, {"mixed", fit(r.mixed)}}},
+          {"peak_times", r.peak_times},
+          {"amplitudes", r.amplitudes}};
+}
+
+nlohmann::json stick_slip_json(const StickSlipResult& r) {
+  auto intervals = [](const std::vector<TimeInterval>& v) {
+    nlohmann::json a = nlohmann::json::array();
+    for (const auto& i : v) a.push_back({i.start, i.end});
+    return a;
+  };
+  return {{"slips", r.slip.size()},
+          {"period", num(r.period)},
+          {"peak_slip_velocity", num(r.peak_slip_velocity)},
+          {"mean_slip_duration", num(r.mean_slip_duration)},
+          {"velocity_threshold", num(r.velocity_threshold)},
+          {"mean_breakaway_force", num(r.mean_breakaway_force)},
+          {"mean_restick_force", num(r.mean_restick_force)},
+          {"mean_force_drop", num(r.mean_force_drop)},
+          {"breakaway_force", r.breakaway_force},
+          {"restick_force", r.restick_force},
+          {"stick", intervals(r.stick)},
+          {"slip", intervals(r.slip)}};
+}
+
+std::string envelope_text(const EnvelopeResult& r) {
+  std::ostringstream o;
+  o.precision(6);
+  o << "decay        " << decay_kind_name(r.kind) << " (" << r.amplitudes.size() << " half cycles, half period "
+    << r.half_period << " s)\n"
+    << "amplitude    " << r.amplitudes.front() << " -> " << r.amplitudes.back() << " (lost "
+    << 100.0 * r.decay_fraction << " %)\n"
+    << "linear       " << r.decrement_per_half_cycle << " per half cycle (rms " << 100 * r.linear.relative_rms
+    << " %)\n"
+    << "exponential  rate " << r.exponential.lambda << " 1/s, log decrement " << r.log_decrement << " (rms "
+    << 100 * r.exponential.relative_rms << " %)\n"
+    << "mixed        rate " << r.mixed.lambda << " 1/s, offset " << r.mixed.q << " (rms "
+    << 100 * r.mixed.relative_rms << " %)\n";
+  return o.str();
+}
+
+std::string stick_slip_text(const StickSlipResult& r, bool with_force) {
+  std::ostringstream o;
+  o.precision(6);
+  o << "slips        " << r.slip.size() << " (velocity threshold " << r.velocity_threshold << ")\n"
+    << "period       " << r.period << " s\n"
+    << "peak slip    " << r.peak_slip_velocity << " (velocity unit)\n"
+    << "slip length  " << r.mean_slip_duration << " s (mean)\n";
+  if (with_force)
+    o << "breakaway    " << r.mean_breakaway_force << " (force unit, mean)\n"
+      << "re-stick     " << r.mean_restick_force << "\n"
+      << "force drop   " << r.mean_force_drop << "\n";
+  return o.str();
+}
+
+}  // namespace
+
 Handler register_analyze(CLI::App& app) {
-  app.add_subcommand("analyze", "(not yet available)");
-  return [] {
-    throw std::invalid_argument("'analyze' is not available in this build yet");
-    return 2;
+  auto a = std::make_shared<AnalyzeArgs>();
+  CLI::App* cmd = app.add_subcommand("analyze", "Analyse a motion record: decay envelope or stick-slip.");
+  cmd->add_option("method", a->method, "envelope (free-oscillation decay) or stick-slip")
+      ->required()
+      ->check(CLI::IsMember({"envelope", "stick-slip"}));
+  cmd->add_option("data", a->data, "CSV file with a header row (the output of `frictionlab simulate` works) or .mat")
+      ->required();
+  cmd->add_option("--time", a->time, "time column (s)")->capture_default_str();
+  cmd->add_option("--position", a->position, "position column (envelope)")->capture_default_str();
+  cmd->add_option("--velocity", a->velocity, "velocity column (stick-slip)")->capture_default_str();
+  cmd->add_option("--force", a->force, "friction force column (stick-slip; optional: skipped if absent)")
+      ->capture_default_str();
+  cmd->add_option("--threshold", a->threshold,
+                  "stick-slip: |v| at or below counts as stuck (0 = automatic: exact zeros or 1 % of max |v|)");
+  cmd->add_option("--json", a->json, "write the result as JSON to FILE, or '-' for stdout");
+  cmd->add_flag("--overwrite", a->overwrite, "replace an existing --json file");
+  return [a]() -> int {
+    if (!a->json.empty() && a->json != "-" && !a->overwrite && std::filesystem::exists(a->json))
+      throw std::invalid_argument(a->json + " exists; pass --overwrite to replace it");
+    const Dataset d = load_dataset(a->data);
+    const std::vector<double> t = column(d, a->time, "--time");
+    nlohmann::json result;
+    std::string text;
+    if (a->method == "envelope") {
+      const std::vector<double> x = column(d, a->position, "--position");
+      EnvelopeResult r;
+      try {
+        r = decay_envelope(t, x);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(d.where() + e.what());
+      }
+      result = envelope_json(r);
+      text = envelope_text(r);
+    } else {
+      const std::vector<double> v = column(d, a->velocity, "--velocity");
+      std::vector<double> f;
+      if (d.has_column(a->force)) f = column(d, a->force, "--force");
+      StickSlipOptions o;
+      o.velocity_threshold = a->threshold;
+      StickSlipResult r;
+      try {
+        r = detect_stick_slip(t, v, f, o);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(d.where() + e.what());
+      }
+      result = stick_slip_json(r);
+      text = stick_slip_text(r, !f.empty());
+    }
+    const nlohmann::json j = {{"schema", 1},
+                              {"status", "ok"},
+                              {"message", ""},
+                              {"method", a->method},
+                              {"data", {{"file", d.file}, {"sha256", d.sha256}}},
+                              {"result", result}};
+    if (a->json == "-") {
+      std::cerr << text;
+      std::cout << j.dump(2) << "\n";
+    } else {
+      std::cout << text;
+      if (!a->json.empty()) {
+        AtomicWriteOptions w;
+        w.overwrite = a->overwrite;
+        write_file_atomic(a->json, j.dump(2) + "\n", w);
+      }
+    }
+    return 0;
   };
 }
 

@@ -27,7 +27,9 @@ struct MethodIO {
 struct IdentifyArgs {
   // idim
   std::string terms = "inertia,viscous,coulomb,offset";
-  double cutoff = 100, vs = 0.01, delta = 2;
+  double cutoff = 100, delta = 2;
+  std::string vs = "0.01";
+  long delay = 0;
   int decimate = 10;
   long skip = 49;
   std::string validate;
@@ -85,7 +87,16 @@ int run_idim(const IdentifyArgs& a, const MethodIO& io) {
   o.cutoff_hz = a.cutoff;
   o.decimation = a.decimate;
   o.skip = a.skip;
-  o.stribeck_vs = a.vs;
+  if (a.vs == "search") {
+    o.search_stribeck_vs = true;
+  } else {
+    try {
+      o.stribeck_vs = std::stod(a.vs);
+    } catch (const std::exception&) {
+      throw std::invalid_argument("--vs '" + a.vs + "': expected a Stribeck velocity (m/s or rad/s) or 'search'");
+    }
+  }
+  o.input_delay = a.delay;
   o.stribeck_delta = a.delta;
   o.axis = io.columns.parsed_axis();
   const IdimData data = idim_data(io.data, io.columns);
@@ -158,7 +169,7 @@ Handler register_identify(CLI::App& app) {
 
   auto* idim = method(identify, "idim",
                       "Inverse dynamic model least squares on a trajectory: force = M qdd + friction(qd) + offset "
-                      "(EMPS benchmark recipe). Best cross-test on EMPS: --terms inertia,asymmetric",
+                      "(EMPS benchmark recipe). Best cross-test on EMPS: --terms inertia,asymmetric,stribeck --delay 1",
                       (*io)[0], "linear");
   idim->add_option("--terms", a->terms,
                    "Comma-separated regressors: inertia, viscous, coulomb, offset, asymmetric (Fv_pos, Fc_pos, Fv_neg, "
@@ -167,7 +178,13 @@ Handler register_identify(CLI::App& app) {
   idim->add_option("--cutoff", a->cutoff, "Position low-pass cut-off (Hz)")->capture_default_str();
   idim->add_option("--decimate", a->decimate, "Keep one sample in N after the anti-alias filter")->capture_default_str();
   idim->add_option("--skip", a->skip, "Samples dropped at the start (filter transient)")->capture_default_str();
-  idim->add_option("--vs", a->vs, "Stribeck velocity of the stribeck term (m/s or rad/s)")->capture_default_str();
+  idim->add_option("--vs", a->vs, "Stribeck velocity of the stribeck term (m/s or rad/s), or 'search' for the value "
+                                  "that minimises the identification error")
+      ->capture_default_str();
+  idim->add_option("--delay", a->delay,
+                   "Samples by which the applied force lags the recorded input (EMPS: 1, its controller output is "
+                   "applied one sample later)")
+      ->capture_default_str();
   idim->add_option("--delta", a->delta, "Stribeck exponent of the stribeck term")->capture_default_str();
   idim->add_option("--validate", a->validate, "Second data file for a cross-test with the identified parameters");
 

@@ -194,7 +194,7 @@ EnvelopeResult decay_envelope(std::span<const double> t, std::span<const double>
   const double best2 = std::min(r.linear.relative_rms, r.exponential.relative_rms);
   if (std::abs(r.decay_fraction) < options.none_tolerance) {
     r.kind = DecayKind::none;
-  } else if (r.mixed.relative_rms < options.mixed_gain * best2 && r.mixed.q < 0) {
+  } else if (best2 > options.fit_tolerance && r.mixed.relative_rms < options.mixed_gain * best2 && r.mixed.q < 0) {
     r.kind = DecayKind::mixed;  // q = -c < 0: an exponential that reaches zero in finite time
   } else {
     r.kind = r.linear.relative_rms <= r.exponential.relative_rms ? DecayKind::linear : DecayKind::exponential;

@@ -25,7 +25,10 @@ StickSlipResult detect_stick_slip(std::span<const double> t, std::span<const dou
   StickSlipResult r;
   double vmax = 0;
   for (double x : v) vmax = std::max(vmax, std::abs(x));
-  r.velocity_threshold = options.velocity_threshold > 0 ? options.velocity_threshold : 0.01 * vmax;
+  std::size_t zeros = 0;
+  for (double x : v) zeros += x == 0.0 ? 1 : 0;
+  const bool exact = static_cast<double>(zeros) >= 0.05 * static_cast<double>(v.size());
+  r.velocity_threshold = options.velocity_threshold > 0 ? options.velocity_threshold : (exact ? 0.0 : 0.01 * vmax);
   const double thr = r.velocity_threshold;
   const std::size_t n = t.size();
 
@@ -76,7 +79,11 @@ StickSlipResult detect_stick_slip(std::span<const double> t, std::span<const dou
     dur += 0.5 * (t[run.i1] + t[run.i1 - 1]) - 0.5 * (t[run.i0] + t[run.i0 - 1]);  // mid-sample edges
     ++complete;
     if (!force.empty()) {
-      r.breakaway_force.push_back(force[run.i0 - 1]);
+      // The larger of the last two stuck samples: a sample taken at the very instant of the
+      // switch may already show the sliding level.
+      double fb = force[run.i0 - 1];
+      if (run.i0 >= 2 && std::abs(force[run.i0 - 2]) > std::abs(fb)) fb = force[run.i0 - 2];
+      r.breakaway_force.push_back(fb);
       r.restick_force.push_back(force[run.i1]);
     }
   }

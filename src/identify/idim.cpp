@@ -202,7 +202,16 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options)
     const Vec tail = full.segment(options.skip, used);
     return options.decimation == 1 ? tail : decimate(tail, options.decimation);
   };
-  reg.y = reduce(data.force, "force");
+  if (options.input_delay < 0 || options.input_delay >= n)
+    throw std::invalid_argument("idim: input_delay = " + std::to_string(options.input_delay) + " samples must be >= 0 and below " +
+                                std::to_string(n));
+  Vec force = data.force;
+  if (options.input_delay > 0) {  // y(k) = force(k - delay); the first samples hold force(0)
+    const Eigen::Index d = options.input_delay;
+    force.tail(n - d) = data.force.head(n - d).eval();
+    force.head(d).setConstant(data.force[0]);
+  }
+  reg.y = reduce(force, "force");
   reg.X.resize(reg.y.size(), static_cast<Eigen::Index>(reg.terms.size()));
   for (std::size_t j = 0; j < reg.terms.size(); ++j) {
     reg.X.col(static_cast<Eigen::Index>(j)) = reduce(reg.terms[j].column(k), reg.terms[j].parameter);
@@ -210,7 +219,81 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options)
   return reg;
 }
 
+namespace {
+
+// The friction law the identified terms make (Fs = Fc + Fs_minus_Fc when the Stribeck term is
+// present), validated; or none with a warning when the estimates break a law's rules.
+void attach_law(Result& r, const IdimOptions& o, double vs) {
+  auto has = [&](const char* n) { return r.find(n) != nullptr; };
+  auto val = [&](const char* n) { return has(n) ? r.value(n) : 0.0; };
+  const bool stribeck = has("Fs_minus_Fc");
+  const double dF = val("Fs_minus_Fc");
+  LawSpec spec;
+  if (has("Fc_pos") && has("Fc_neg")) {
+    spec.name = stribeck ? "stribeck-asymmetric" : "coulomb-viscous-asymmetric";
+    for (const char* side : {"_pos", "_neg"}) {
+      const std::string s(side);
+      spec.scalars["Fc" + s] = val(("Fc" + s).c_str());
+      spec.scalars["Fv" + s] = val(("Fv" + s).c_str());
+      if (stribeck) {
+        spec.scalars["Fs" + s] = val(("Fc" + s).c_str()) + dF;
+        spec.scalars["vs" + s] = vs;
+        spec.scalars["delta" + s] = o.stribeck_delta;
+      }
+    }
+  } else if (has("Fc") || has("Fv")) {
+    spec.name = stribeck ? "stribeck" : (has("Fc") && has("Fv") ? "coulomb-viscous" : has("Fc") ? "coulomb" : "viscous");
+    if (has("Fc") || stribeck) spec.scalars["Fc"] = val("Fc");
+    if (has("Fv") || stribeck) spec.scalars["Fv"] = val("Fv");
+    if (stribeck) {
+      spec.scalars["Fs"] = val("Fc") + dF;
+      spec.scalars["vs"] = vs;
+      spec.scalars["delta"] = o.stribeck_delta;
+    }
+  } else {
+    return;  // no friction terms: nothing to simulate with
+  }
+  try {
+    FrictionLaw::from_spec(spec);
+    r.law = spec;
+    if (r.model == "idim-custom" && r.find("M") != nullptr && !o.extra_terms.size()) r.model = spec.name;
+  } catch (const std::invalid_argument& e) {
+    r.diagnostics.warnings.push_back(std::string("the estimates do not make a valid friction law to simulate: ") + e.what());
+  }
+}
+
+Result identify_idim_fixed(const IdimData& data, const IdimOptions& options);
+
+}  // namespace
+
 Result identify_idim(const IdimData& data, const IdimOptions& options) {
+  const auto terms = idim_terms(options);
+  const bool has_stribeck = std::any_of(terms.begin(), terms.end(), [](const IdimTerm& t) { return t.parameter == "Fs_minus_Fc"; });
+  IdimOptions o = options;
+  if (options.search_stribeck_vs && has_stribeck) {
+    // Log grid over the speed range; the identification residual alone chooses (never the cross-test).
+    const double top = idim_regression(data, options).max_speed;
+    double best = std::numeric_limits<double>::infinity(), best_vs = options.stribeck_vs;
+    constexpr int kGrid = 40;
+    for (int i = 0; i < kGrid; ++i) {
+      o.stribeck_vs = top * std::pow(10.0, -4.0 + (4.0 - std::log10(2.0)) * i / (kGrid - 1));
+      const Result trial = identify_idim_fixed(data, o);
+      if (trial.ok() && trial.fit.relative_error_percent < best) {
+        best = trial.fit.relative_error_percent;
+        best_vs = o.stribeck_vs;
+      }
+    }
+    o.stribeck_vs = best_vs;
+  }
+  Result r = identify_idim_fixed(data, o);
+  if (has_stribeck) r.diagnostics.numbers["stribeck_vs"] = o.stribeck_vs;
+  if (options.input_delay > 0) r.diagnostics.numbers["input_delay"] = static_cast<double>(options.input_delay);
+  if (r.ok()) attach_law(r, o, o.stribeck_vs);
+  return r;
+}
+
+namespace {
+Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
   Result r;
   r.method = "idim";
   r.data_file = data.file;
@@ -290,11 +373,16 @@ Result identify_idim(const IdimData& data, const IdimOptions& options) {
   return r;
 }
 
+}  // namespace
+
 ValidationFigures cross_test(const Result& identified, const IdimData& data, const IdimOptions& options) {
   if (!identified.ok()) {
     throw std::invalid_argument("cross_test: the identification failed (" + identified.message + "); nothing to test");
   }
-  const IdimRegression reg = idim_regression(data, options);
+  IdimOptions o = options;
+  if (const auto it = identified.diagnostics.numbers.find("stribeck_vs"); it != identified.diagnostics.numbers.end())
+    o.stribeck_vs = it->second;  // the value the identification used (searched or given)
+  const IdimRegression reg = idim_regression(data, o);
   Vec theta(reg.X.cols());
   for (std::size_t j = 0; j < reg.terms.size(); ++j) theta(static_cast<Eigen::Index>(j)) = identified.value(reg.terms[j].parameter);
   const Vec e = reg.y - reg.X * theta;

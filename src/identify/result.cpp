@@ -66,6 +66,13 @@ std::string to_json(const Result& r, int indent) {
   d["condition_number"] = number(r.diagnostics.condition_number);
   d["warnings"] = r.diagnostics.warnings;
   j["diagnostics"] = d;
+  if (r.law) {
+    nlohmann::json law = {{"law", r.law->name}};
+    for (const auto& [k, v] : r.law->scalars) law[k] = number(v);
+    for (const auto& [k, v] : r.law->arrays) law[k] = v;
+    for (const auto& [k, v] : r.law->strings) law[k] = v;
+    j["law"] = law;
+  }
   return j.dump(indent);
 }
 

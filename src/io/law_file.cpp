@@ -60,6 +60,7 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
 FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
   if (!j.is_object()) throw std::invalid_argument(where + ": expected a JSON object describing a friction law");
   LawSpec spec;
+  if (j.contains("law") && j["law"].is_object()) return law_from_json(j["law"], where + ": law");  // MODEL.json
   const nlohmann::json* params = &j;
   if (j.contains("model") && j.contains("parameters")) {  // MODEL.json written by identify
     if (!j["model"].is_string()) throw std::invalid_argument(where + ": 'model' must be a law name");

@@ -130,3 +130,37 @@ TEST(IdimEmps, JsonFollowsTheSchema) {
   EXPECT_TRUE(j["diagnostics"]["condition_number"].is_number());
   EXPECT_TRUE(j["diagnostics"]["warnings"].is_array());
 }
+
+// Doing better than the recipe on the cross-test. The scipy exploration behind these figures
+// (same recipe, columns added one at a time) is recorded in the README's EMPS section. Two
+// additions matter: the one-sample delay of the drive force (the benchmark's controller applies
+// its output one sample later) and a Stribeck-shaped term near zero speed (vs = 0.01 m/s, the
+// value that minimises the identification error; the cross-test never chooses anything).
+TEST(IdimEmps, DelayAsymmetryAndStribeckTermLowerTheCrossTestBelowFourAndAHalfPercent) {
+  fl::IdimOptions o;
+  o.terms = {"inertia", "asymmetric", "stribeck"};
+  o.input_delay = 1;
+  o.stribeck_vs = 0.01;
+  const fl::Result r = fl::identify_idim(load("DATA_EMPS.mat"), o);
+  ASSERT_TRUE(r.ok()) << r.message;
+  const fl::ValidationFigures v = fl::cross_test(r, load("DATA_EMPS_PULSES.mat"), o);
+  constexpr double kFigureAbsTol = 0.005;  // percentage points: the README quotes three decimals
+  EXPECT_NEAR(r.fit.relative_error_percent, 2.310, kFigureAbsTol);
+  EXPECT_NEAR(v.relative_error_percent, 3.118, kFigureAbsTol);
+  EXPECT_LT(v.relative_error_percent, 4.5);
+  // The same search by the identification residual alone lands on about the same velocity.
+  o.search_stribeck_vs = true;
+  const fl::Result searched = fl::identify_idim(load("DATA_EMPS.mat"), o);
+  const double vs = searched.diagnostics.numbers.at("stribeck_vs");
+  EXPECT_GT(vs, 0.005);
+  EXPECT_LT(vs, 0.02);
+  EXPECT_LT(fl::cross_test(searched, load("DATA_EMPS_PULSES.mat"), o).relative_error_percent, 4.5);
+}
+
+TEST(IdimEmps, IdentifiedLawIsAttachedForSimulation) {
+  const fl::Result r = fl::identify_idim(load("DATA_EMPS.mat"));
+  ASSERT_TRUE(r.law.has_value());
+  EXPECT_EQ(r.law->name, "coulomb-viscous");
+  EXPECT_DOUBLE_EQ(r.law->scalars.at("Fc"), r.value("Fc"));
+  EXPECT_DOUBLE_EQ(r.law->scalars.at("Fv"), r.value("Fv"));
+}

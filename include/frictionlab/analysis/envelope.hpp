@@ -30,6 +30,10 @@ struct EnvelopeOptions {
   /// two-parameter model's (linear or exponential). Default 0.5: a third parameter always fits a
   /// little better, so it must fit much better to count.
   double mixed_gain = 0.5;
+  /// A two-parameter model (linear or exponential) whose relative rms error is below this is
+  /// kept even if the mixed model fits better. Default 0.01: a large pendulum swing (sin th, not
+  /// th) bends a Coulomb envelope by about 0.2 %, which must not read as viscous friction.
+  double fit_tolerance = 0.01;
   /// Half swings smaller than this fraction of the largest are ignored (noise, the last creep).
   /// Default 1e-3.
   double min_relative_amplitude = 1e-3;

@@ -9,8 +9,9 @@ namespace frictionlab {
 
 /// Options of detect_stick_slip.
 struct StickSlipOptions {
-  /// |v| at or below this counts as stuck (m/s or rad/s). Default 0: use 1 % of the largest |v|
-  /// (dynamic laws creep while "stuck"; exact hybrid simulations have v = 0 exactly).
+  /// |v| at or below this counts as stuck (m/s or rad/s). Default 0 = automatic: exactly 0 when
+  /// at least 5 % of the samples have v == 0 exactly (an exact hybrid simulation), else 1 % of
+  /// the largest |v| (dynamic laws and measurements creep or are noisy while "stuck").
   double velocity_threshold = 0.0;
   /// Slips shorter than this are merged into the surrounding stick (s). Default 0.
   double min_slip_duration = 0.0;
@@ -33,8 +34,9 @@ struct StickSlipResult {
   double period = 0.0;
   double peak_slip_velocity = 0.0;  ///< largest |v| during slips (m/s or rad/s)
   double mean_slip_duration = 0.0;  ///< s, over complete slips
-  /// Force at each breakaway (the last stuck sample before a slip) and at each re-stick (the
-  /// first stuck sample after a slip); empty without a force signal.
+  /// Force at each breakaway (the larger in magnitude of the last two stuck samples before a
+  /// slip: a sample at the switch instant may already show the sliding level) and at each
+  /// re-stick (the first stuck sample after a slip); complete slips only; empty without a force.
   std::vector<double> breakaway_force;
   std::vector<double> restick_force;
   double mean_breakaway_force = 0.0;

@@ -61,6 +61,9 @@ struct IdimOptions {
   int filter_order = 4;
   /// Odd padding of the zero-phase low-pass, samples. Default 12 = 3 * (order + 1 - 1) (MATLAB).
   Eigen::Index padlen = 12;
+  /// Samples by which the applied force lags the recorded drive input: y(k) = force(k - delay).
+  /// EMPS: 1, because its controller output is applied one sample later. Default 0 (recipe).
+  Eigen::Index input_delay = 0;
   /// Samples dropped at the start after differentiation. Default 49.
   Eigen::Index skip = 49;
   /// Samples dropped at the end, after differentiation. Default 0 (EMPS ends at rest). Records
@@ -70,6 +73,9 @@ struct IdimOptions {
   int decimation = 10;
   /// Stribeck velocity (m/s or rad/s, > 0) and exponent of the "stribeck" term. Defaults 0.01, 2.
   double stribeck_vs = 0.01;
+  /// Search the Stribeck velocity instead: the value (on a log grid from 1e-4 to 0.5 of the top
+  /// speed) that minimises the identification residual; reported as diagnostics "stribeck_vs".
+  bool search_stribeck_vs = false;
   double stribeck_delta = 2.0;
   /// No excitation when max |qd| over the used samples is not above this, m/s or rad/s. Default 0.
   double min_velocity = 0.0;

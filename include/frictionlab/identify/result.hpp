@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "frictionlab/models/friction_law.hpp"
+
 namespace frictionlab {
 
 /// One identified parameter.
@@ -62,6 +64,9 @@ struct Result {
   FitFigures fit;
   std::optional<ValidationFigures> validation;
   Diagnostics diagnostics;
+  /// The identified friction law in its file form, ready for simulate and validate (absent when
+  /// the estimates do not make a valid law, e.g. a negative Coulomb level; a warning says why).
+  std::optional<LawSpec> law;
 
   bool ok() const { return status == ResultStatus::ok; }
   /// The parameter named `name`, or nullptr.

@@ -9,8 +9,9 @@
 //   Fv: 0.4
 // Lists for table (velocity, force) and gms (k, alpha); `shape: tanh|atan` for smooth.
 //
-// JSON: the same object, or the result of `frictionlab identify --json` (MODEL.json), whose
-// "model" names the law and whose "parameters" map names to {"value": v, "std": s, "unit": u}.
+// JSON: the same object, or the result of `frictionlab identify --json` (MODEL.json): its "law"
+// object when present, else its "model" (the law name) with "parameters" mapping names to
+// {"value": v, "std": s, "unit": u}.
 
 #include <string>
 
