@@ -1,9 +1,73 @@
 """frictionlab: model, simulate and identify friction in motion systems.
 
-SI units throughout: forces in N (N m on a rotary axis), velocities in m/s (rad/s).
-Errors in input raise ValueError with the same message as the C++ library and the CLI.
+SI units throughout: forces in N (N m on a rotary axis), velocities in m/s (rad/s), positions
+in m (rad), inertia in kg (kg m^2), time in s. Errors in input raise ValueError with the same
+message as the C++ library and the command line; a failed integration raises RuntimeError.
+
+    import frictionlab as fl
+    d = fl.load("DATA_EMPS.mat")                       # dict of numpy columns and scalars
+    r = fl.identify_idim(d["t"], d["gtau"] * d["vir"], position=d["qm"], source=d)
+    print(r)                                           # parameter table
+    tr = fl.simulate("examples/craig_motor_trapezoid.yaml")
+    fl.plot.simulation(tr, file="trapezoid.png")
+
+Plotting helpers (matplotlib) are in frictionlab.plot, imported on first use.
 """
 
-from ._core import FrictionLaw, __version__, law_names
+from ._core import (
+    BreakawayOptions,
+    DecayOptions,
+    Diagnostics,
+    EnvelopeFit,
+    EnvelopeOptions,
+    EnvelopeResult,
+    FitFigures,
+    FrictionLaw,
+    IdimOptions,
+    Parameter,
+    Result,
+    Scenario,
+    StaticFit,
+    StaticFitOptions,
+    StickSlipOptions,
+    StickSlipResult,
+    SweepOptions,
+    Trajectory,
+    ValidationFigures,
+    __version__,
+    law_names,
+    load_law,
+    sha256_file,
+)
+from .analysis import decay_envelope, detect_stick_slip
+from .data import Data, load
+from .identify import (
+    cross_test,
+    fit_static_law,
+    identify_breakaway,
+    identify_decay,
+    identify_idim,
+    identify_sweep,
+    idim_reconstruction,
+    idim_regression,
+    sweep_points,
+)
+from .simulate import simulate
 
-__all__ = ["FrictionLaw", "law_names", "__version__"]
+__all__ = [
+    "BreakawayOptions", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
+    "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
+    "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
+    "cross_test", "decay_envelope", "detect_stick_slip", "fit_static_law", "identify_breakaway", "identify_decay",
+    "identify_idim", "identify_sweep", "idim_reconstruction", "idim_regression", "law_names", "load", "load_law",
+    "sha256_file", "simulate", "sweep_points",
+]
+
+
+def __getattr__(name):
+    # `frictionlab.plot` imports matplotlib only when asked for.
+    if name == "plot":
+        import importlib
+
+        return importlib.import_module(".plot", __name__)
+    raise AttributeError(f"module 'frictionlab' has no attribute '{name}'")

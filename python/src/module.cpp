@@ -1,113 +1,58 @@
-// The frictionlab Python extension `_core`: friction laws (and, as they land, simulation,
-// identification and analysis). numpy in and out; C++ std::invalid_argument becomes ValueError
-// with the same message.
-#include <pybind11/numpy.h>
-#include <pybind11/pybind11.h>
-#include <pybind11/stl.h>
+// The frictionlab Python extension `_core`: friction laws, data files, identification,
+// simulation and analysis, numpy in and out. C++ std::invalid_argument and std::logic_error
+// become ValueError with the same message; std::runtime_error becomes RuntimeError.
+// The bindings live in one file per library layer (laws.cpp, io.cpp, identify.cpp,
+// simulate.cpp, analysis.cpp); the friendly keyword API and the plots are pure Python
+// (python/frictionlab/*.py).
+#include <stdexcept>
 
-#include <optional>
-#include <sstream>
-
-#include "frictionlab/models/friction_law.hpp"
+#include "common.hpp"
 #include "frictionlab/version.hpp"
 
-namespace py = pybind11;
-using namespace frictionlab;
+namespace frictionlab::python {
 
-namespace {
+Eigen::VectorXd vector_arg(const py::handle& x, const std::string& name) {
+  const std::vector<double> v = std_vector_arg(x, name);
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+}
 
-// A law from a Python dict {"law": name, param: value, ...} (the same form as the YAML files).
-FrictionLaw law_from_dict(const py::dict& d) {
-  LawSpec spec;
-  for (auto item : d) {
-    const std::string key = py::cast<std::string>(item.first);
-    py::handle value = item.second;
-    if (key == "law") {
-      spec.name = py::cast<std::string>(value);
-    } else if (py::isinstance<py::str>(value)) {
-      spec.strings[key] = py::cast<std::string>(value);
-    } else if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)) {
-      spec.scalars[key] = py::cast<double>(value);
-    } else {
-      try {
-        spec.arrays[key] = py::cast<std::vector<double>>(value);
-      } catch (const py::cast_error&) {
-        throw std::invalid_argument("law parameter '" + key + "': expected a number or a list of numbers");
-      }
-    }
+std::vector<double> std_vector_arg(const py::handle& x, const std::string& name) {
+  if (x.is_none()) return {};
+  py::array_t<double, py::array::c_style | py::array::forcecast> a;
+  try {
+    a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(x);
+  } catch (const py::error_already_set&) {
   }
-  if (spec.name.empty()) throw std::invalid_argument("missing 'law' (one of frictionlab.law_names())");
-  return FrictionLaw::from_spec(spec);
+  if (!a) {
+    PyErr_Clear();
+    throw std::invalid_argument(name + ": expected a 1-D array of numbers, got " +
+                                py::cast<std::string>(py::str(py::type::of(x).attr("__name__"))));
+  }
+  if (a.ndim() != 1) {
+    throw std::invalid_argument(name + ": expected a 1-D array of numbers, got an array with " +
+                                std::to_string(a.ndim()) + " dimensions");
+  }
+  return std::vector<double>(a.data(), a.data() + a.shape(0));
 }
 
-py::dict law_to_dict(const FrictionLaw& law) {
-  const LawSpec spec = law.to_spec();
-  py::dict d;
-  d["law"] = spec.name;
-  for (const auto& [k, v] : spec.scalars) d[py::str(k)] = v;
-  for (const auto& [k, v] : spec.arrays) d[py::str(k)] = v;
-  for (const auto& [k, v] : spec.strings) d[py::str(k)] = v;
-  return d;
+std::string path_arg(const py::handle& p) {
+  return py::cast<std::string>(py::module_::import("os").attr("fspath")(p));
 }
 
-std::string law_repr(const FrictionLaw& law) {
-  std::ostringstream s;
-  s << "FrictionLaw('" << law.name() << "'";
-  for (const auto& p : law.parameters()) s << ", " << p.name << "=" << p.value;
-  s << ")";
-  return s.str();
+py::array_t<double> to_array(std::span<const double> values) {
+  py::array_t<double> out(static_cast<py::ssize_t>(values.size()));
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
 }
 
-}  // namespace
+}  // namespace frictionlab::python
 
 PYBIND11_MODULE(_core, m) {
+  namespace fp = frictionlab::python;
   m.doc() = "frictionlab: friction models, simulation and identification (SI units throughout).";
-  m.attr("__version__") = kVersion;
+  m.attr("__version__") = frictionlab::kVersion;
 
-  py::class_<FrictionLaw>(m, "FrictionLaw", R"doc(
-A friction law chosen by name, e.g. FrictionLaw({"law": "stribeck", "Fc": 1, "Fs": 1.5, "vs": 0.001, "Fv": 0.4}).
-Forces in N (N m on a rotary axis), velocities in m/s (rad/s). Friction has the sign of velocity.
-Raises ValueError naming the law and parameter for an unknown name, a missing or invalid parameter.)doc")
-      .def(py::init(&law_from_dict), py::arg("spec"))
-      .def_property_readonly("name", &FrictionLaw::name, "The law's name, e.g. 'stribeck'.")
-      .def_property_readonly("is_dynamic", &FrictionLaw::is_dynamic, "True for laws with internal state (dahl, lugre, elastoplastic, gms).")
-      .def_property_readonly("num_states", &FrictionLaw::num_states, "Number of internal states (0 for static laws).")
-      .def_property_readonly("parameters", [](const FrictionLaw& l) {
-        py::dict d;
-        for (const auto& p : l.parameters()) d[py::str(p.name)] = p.value;
-        return d;
-      }, "Scalar parameters by name (SI units).")
-      .def("to_dict", &law_to_dict, "The law as a dict, the form the constructor accepts.")
-      .def("sliding", [](const FrictionLaw& l, py::object v) {
-        return py::vectorize([&l](double x) { return l.sliding(x); })(v);
-      }, py::arg("v"),
-           "Friction force (N or N m) while sliding at velocity v (m/s or rad/s; scalar or numpy array). "
-           "For dynamic laws: the steady-state force at constant v.")
-      .def("force", [](const FrictionLaw& l, py::object v, py::object applied) {
-        return py::vectorize([&l](double x, double a) { return l.force(x, a); })(v, applied);
-      }, py::arg("v"), py::arg("applied"),
-           "Static law force with stiction (N or N m): at v == 0 it balances `applied` up to the breakaway level.")
-      .def_property_readonly("breakaway", [](const FrictionLaw& l) {
-        return py::make_tuple(l.breakaway_positive(), l.breakaway_negative());
-      }, "(positive, negative) breakaway levels (N or N m) a stuck contact holds.")
-      .def("step", [](const FrictionLaw& l, py::array_t<double> v, double dt, std::optional<std::vector<double>> z0) {
-        std::vector<double> z = z0.value_or(std::vector<double>(static_cast<std::size_t>(l.num_states()), 0.0));
-        if (static_cast<int>(z.size()) != l.num_states())
-          throw std::invalid_argument("z0 has " + std::to_string(z.size()) + " entries; " + l.name() + " has " +
-                                      std::to_string(l.num_states()) + " states");
-        auto vin = v.unchecked<1>();
-        py::array_t<double> out(vin.shape(0));
-        auto o = out.mutable_unchecked<1>();
-        for (py::ssize_t i = 0; i < vin.shape(0); ++i) o(i) = l.step(z, vin(i), dt);
-        return py::make_tuple(out, z);
-      }, py::arg("v"), py::arg("dt"), py::arg("z0") = py::none(),
-      "Fixed-step evaluation of a dynamic law over a velocity sequence v (m/s or rad/s, 1-D) at step dt (s): "
-      "returns (force array in N or N m, final state). Raises ValueError for a static law.")
-      .def("__repr__", &law_repr);
-
-  m.def("law_names", &FrictionLaw::names, "Every friction law name the FrictionLaw constructor accepts.");
-
-  py::register_exception_translator([](std::exception_ptr p) {
+  pybind11::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const std::logic_error& e) {
@@ -115,4 +60,10 @@ Raises ValueError naming the law and parameter for an unknown name, a missing or
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });
+
+  fp::init_laws(m);
+  fp::init_io(m);
+  fp::init_identify(m);
+  fp::init_simulate(m);
+  fp::init_analysis(m);
 }

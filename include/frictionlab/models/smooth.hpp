@@ -58,7 +58,7 @@ struct SmoothT {
     using std::tanh;
     const T x = v / T(vt);
     const T s = shape == SmoothShape::tanh ? tanh(x) : T(2.0 / std::numbers::pi) * atan(x);
-    return s * (T(Fc) + (T(Fs) - T(Fc)) * exp(-abs_pow_ratio(v, vs, delta))) + T(Fv) * v;
+    return s * (T(Fc) + (T(Fs) - T(Fc)) * stribeck_decay(v, vs, delta)) + T(Fv) * v;
   }
   S breakaway_positive() const { return S(0); }
   S breakaway_negative() const { return S(0); }

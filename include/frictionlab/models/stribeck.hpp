@@ -45,7 +45,7 @@ struct StribeckT {
   template <class T>
   T level(const T& v) const {
     using std::exp;
-    return T(Fc) + (T(Fs) - T(Fc)) * exp(-abs_pow_ratio(v, vs, delta));
+    return T(Fc) + (T(Fs) - T(Fc)) * stribeck_decay(v, vs, delta);
   }
 
   template <class T>

@@ -1,0 +1,126 @@
+// Friction laws: construction from a dict, evaluation on numpy arrays, dynamic stepping.
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <sstream>
+
+#include "common.hpp"
+
+namespace frictionlab::python {
+
+namespace {
+
+// A law from a Python dict {"law": name, param: value, ...} (the same form as the YAML files).
+FrictionLaw law_from_dict(const py::dict& d) {
+  LawSpec spec;
+  for (auto item : d) {
+    const std::string key = py::cast<std::string>(py::str(item.first));
+    py::handle value = item.second;
+    if (key == "law") {
+      spec.name = py::cast<std::string>(py::str(value));
+    } else if (py::isinstance<py::str>(value)) {
+      spec.strings[key] = py::cast<std::string>(value);
+    } else if (py::isinstance<py::bool_>(value)) {
+      throw std::invalid_argument("law parameter '" + key + "': expected a number or a list of numbers");
+    } else if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) ||
+               (py::isinstance<py::array>(value) && py::cast<py::array>(value).ndim() == 0)) {
+      spec.scalars[key] = py::cast<double>(value);
+    } else {
+      try {
+        spec.arrays[key] = std_vector_arg(value, "law parameter '" + key + "'");
+      } catch (const std::invalid_argument&) {
+        throw std::invalid_argument("law parameter '" + key + "': expected a number or a list of numbers");
+      }
+    }
+  }
+  if (spec.name.empty()) throw std::invalid_argument("missing 'law' (one of frictionlab.law_names())");
+  return FrictionLaw::from_spec(spec);
+}
+
+std::string law_repr(const FrictionLaw& law) {
+  std::ostringstream s;
+  s << "FrictionLaw('" << law.name() << "'";
+  for (const auto& p : law.parameters()) s << ", " << p.name << "=" << p.value;
+  s << ")";
+  return s.str();
+}
+
+}  // namespace
+
+FrictionLaw law_arg(const py::handle& x) {
+  if (py::isinstance<FrictionLaw>(x)) return py::cast<FrictionLaw>(x);
+  if (py::isinstance<py::dict>(x)) return law_from_dict(py::reinterpret_borrow<py::dict>(x));
+  throw std::invalid_argument("law: expected a FrictionLaw or a dict {'law': NAME, ...}");
+}
+
+py::dict law_to_dict(const FrictionLaw& law) {
+  const LawSpec spec = law.to_spec();
+  py::dict d;
+  d["law"] = spec.name;
+  for (const auto& [k, v] : spec.scalars) d[py::str(k)] = v;
+  for (const auto& [k, v] : spec.arrays) d[py::str(k)] = v;
+  for (const auto& [k, v] : spec.strings) d[py::str(k)] = v;
+  return d;
+}
+
+void init_laws(py::module_& m) {
+  py::class_<FrictionLaw>(m, "FrictionLaw", R"doc(
+A friction law chosen by name, e.g. FrictionLaw({"law": "stribeck", "Fc": 1, "Fs": 1.5, "vs": 0.001, "Fv": 0.4}).
+Forces in N (N m on a rotary axis), velocities in m/s (rad/s). Friction has the sign of velocity.
+Raises ValueError naming the law and parameter for an unknown name, a missing or invalid parameter.)doc")
+      .def(py::init(&law_from_dict), py::arg("spec"))
+      .def_property_readonly("name", &FrictionLaw::name, "The law's name, e.g. 'stribeck'.")
+      .def_property_readonly("is_dynamic", &FrictionLaw::is_dynamic, "True for laws with internal state (dahl, lugre, elastoplastic, gms).")
+      .def_property_readonly("num_states", &FrictionLaw::num_states, "Number of internal states (0 for static laws).")
+      .def_property_readonly("parameters", [](const FrictionLaw& l) {
+        py::dict d;
+        for (const auto& p : l.parameters()) d[py::str(p.name)] = p.value;
+        return d;
+      }, "Scalar parameters by name (SI units).")
+      .def("units", [](const FrictionLaw& l, const std::string& axis) {
+        py::dict d;
+        const Axis a = parse_axis(axis);
+        for (const auto& p : l.parameters()) d[py::str(p.name)] = std::string(unit(p.quantity, a));
+        return d;
+      }, py::arg("axis") = "linear", "Unit of each scalar parameter on a 'linear' or 'rotary' axis, e.g. {'Fc': 'N', 'Fv': 'N s/m'}.")
+      .def("to_dict", &law_to_dict, "The law as a dict, the form the constructor accepts.")
+      .def("sliding", [](const FrictionLaw& l, py::object v) {
+        return py::vectorize([&l](double x) { return l.sliding(x); })(v);
+      }, py::arg("v"),
+           "Friction force (N or N m) while sliding at velocity v (m/s or rad/s; scalar or numpy array). "
+           "For dynamic laws: the steady-state force at constant v.")
+      .def("__call__", [](const FrictionLaw& l, py::object v) {
+        return py::vectorize([&l](double x) { return l.sliding(x); })(v);
+      }, py::arg("v"), "Same as sliding(v): friction force (N or N m) at velocity v (m/s or rad/s).")
+      .def("force", [](const FrictionLaw& l, py::object v, py::object applied) {
+        return py::vectorize([&l](double x, double a) { return l.force(x, a); })(v, applied);
+      }, py::arg("v"), py::arg("applied"),
+           "Static law force with stiction (N or N m): at v == 0 it balances `applied` up to the breakaway level.")
+      .def_property_readonly("breakaway", [](const FrictionLaw& l) {
+        return py::make_tuple(l.breakaway_positive(), l.breakaway_negative());
+      }, "(positive, negative) breakaway levels (N or N m) a stuck contact holds.")
+      .def("step", [](const FrictionLaw& l, py::object v, double dt, std::optional<std::vector<double>> z0) {
+        std::vector<double> z = z0.value_or(std::vector<double>(static_cast<std::size_t>(l.num_states()), 0.0));
+        if (static_cast<int>(z.size()) != l.num_states())
+          throw std::invalid_argument("z0 has " + std::to_string(z.size()) + " entries; " + l.name() + " has " +
+                                      std::to_string(l.num_states()) + " states");
+        const std::vector<double> vin = std_vector_arg(v, "v");
+        py::array_t<double> out(static_cast<py::ssize_t>(vin.size()));
+        double* o = out.mutable_data();
+        for (std::size_t i = 0; i < vin.size(); ++i) o[i] = l.step(z, vin[i], dt);
+        return py::make_tuple(out, z);
+      }, py::arg("v"), py::arg("dt"), py::arg("z0") = py::none(),
+      "Fixed-step evaluation of a dynamic law over a velocity sequence v (m/s or rad/s, 1-D) at step dt (s): "
+      "returns (force array in N or N m, final state in m or rad). Raises ValueError for a static law.")
+      .def("__eq__", [](const FrictionLaw& a, const FrictionLaw& b) {
+        const LawSpec x = a.to_spec(), y = b.to_spec();
+        return x.name == y.name && x.scalars == y.scalars && x.arrays == y.arrays && x.strings == y.strings;
+      })
+      .def(py::pickle([](const FrictionLaw& l) { return law_to_dict(l); },
+                      [](const py::dict& d) { return law_from_dict(d); }))
+      .def("__repr__", &law_repr);
+
+  m.def("law_names", &FrictionLaw::names, "Every friction law name the FrictionLaw constructor accepts.");
+}
+
+}  // namespace frictionlab::python

@@ -1,0 +1,154 @@
+// Simulation: scenarios (from a YAML file or a dict of the same form) and trajectories.
+#include <pybind11/stl.h>
+#include <yaml-cpp/yaml.h>
+
+#include <charconv>
+#include <sstream>
+
+#include "common.hpp"
+#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/simulate/simulate.hpp"
+
+namespace frictionlab::python {
+
+namespace {
+
+// A Python value (dict, list, tuple, numpy array, number, str, bool, None) as a YAML node, so
+// that a dict goes through the same reader, checks and messages as a scenario file.
+YAML::Node to_yaml(const py::handle& x, const std::string& where) {
+  if (x.is_none()) return YAML::Node(YAML::NodeType::Null);
+  if (py::isinstance<py::bool_>(x)) return YAML::Node(py::cast<bool>(x) ? "true" : "false");
+  if (py::isinstance<py::str>(x)) return YAML::Node(py::cast<std::string>(x));
+  if (py::isinstance<py::dict>(x)) {
+    YAML::Node n(YAML::NodeType::Map);
+    for (auto item : py::reinterpret_borrow<py::dict>(x)) {
+      const std::string key = py::cast<std::string>(py::str(item.first));
+      n[key] = to_yaml(item.second, where + ": " + key);
+    }
+    return n;
+  }
+  if (py::isinstance<py::list>(x) || py::isinstance<py::tuple>(x) ||
+      (py::isinstance<py::array>(x) && py::cast<py::array>(x).ndim() > 0)) {
+    YAML::Node n(YAML::NodeType::Sequence);
+    for (auto item : py::iter(x)) n.push_back(to_yaml(item, where));
+    return n;
+  }
+  try {
+    const double v = py::cast<double>(py::float_(py::reinterpret_borrow<py::object>(x)));
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return YAML::Node(std::string(buf, r.ptr));
+  } catch (const py::error_already_set&) {
+    throw std::invalid_argument(where + ": expected a number, text, list or dict, got " +
+                                py::cast<std::string>(py::str(py::type::of(x).attr("__name__"))));
+  }
+}
+
+py::dict trajectory_dict(const Trajectory& tr) {
+  py::dict d;
+  for (const auto& n : Trajectory::column_names()) d[py::str(n)] = to_array(tr.column(n));
+  return d;
+}
+
+}  // namespace
+
+void init_simulate(py::module_& m) {
+  py::class_<Scenario>(m, "Scenario", R"doc(
+A simulation problem: plant, friction law, input and options, read from a scenario YAML file
+(Scenario.load(path)) or a dict of the same form (Scenario(dict)). Times in s, rates in Hz.)doc")
+      .def(py::init([](const py::dict& d, const std::string& where) {
+             return scenario_from_yaml(to_yaml(d, where), where);
+           }),
+           py::arg("spec"), py::arg("where") = "scenario",
+           "From a dict of the scenario-file form; `where` prefixes error messages.")
+      .def_static("load", [](const py::object& p) { return load_scenario(path_arg(p)); }, py::arg("path"),
+                  "Reads a scenario YAML file; ValueError naming the file, key and value on bad content.")
+      .def_property("law", [](const Scenario& s) { return s.law; },
+                    [](Scenario& s, const py::object& law) { s.law = law_arg(law); },
+                    "Friction law on the plant's friction body (FrictionLaw; a dict is accepted when set).")
+      .def_property_readonly("plant", [](const Scenario& s) { return s.plant ? s.plant->type() : std::string(); },
+                             "Plant type ('axis', 'pendulum', 'spring-base', 'dc-motor', 'velocity-drive', closed loops).")
+      .def_property("duration", [](const Scenario& s) { return s.options.duration; },
+                    [](Scenario& s, double v) { s.options.duration = v; }, "Simulated time, s (> 0).")
+      .def_property("output_rate", [](const Scenario& s) { return s.options.output_rate; },
+                    [](Scenario& s, double v) { s.options.output_rate = v; }, "Output samples per second, Hz (> 0).")
+      .def_property("initial_position", [](const Scenario& s) { return s.options.initial_position; },
+                    [](Scenario& s, double v) { s.options.initial_position = v; }, "Initial position, m or rad.")
+      .def_property("initial_velocity", [](const Scenario& s) { return s.options.initial_velocity; },
+                    [](Scenario& s, double v) { s.options.initial_velocity = v; }, "Initial velocity, m/s or rad/s.")
+      .def_property_readonly("solver", [](const Scenario& s) { return std::string(solver_mode_name(s.options.mode)); },
+                             "Requested solver mode ('auto', 'hybrid', 'stiff', 'fixed-step').")
+      .def("__copy__", [](const Scenario& s) { return s; })
+      .def("__repr__", [](const Scenario& s) {
+        std::ostringstream o;
+        o << "Scenario(plant='" << (s.plant ? s.plant->type() : "") << "', law='" << s.law.name()
+          << "', input='" << InputSignal::shape_name(s.input.shape) << "', duration=" << s.options.duration
+          << ", output_rate=" << s.options.output_rate << ")";
+        return o.str();
+      });
+
+  py::class_<Trajectory>(m, "Trajectory", R"doc(
+Sampled simulation result, a read-only mapping of column name to numpy array:
+time (s), position (m or rad), velocity (m/s or rad/s), friction (N or N m), applied (N or N m,
+net non-friction force), current (A), voltage (V), reference (input signal), stuck (1 while stuck).
+dict(trajectory) gives the columns; also law_state, switches, stats, to_csv().)doc")
+      .def("__getitem__", [](const Trajectory& t, const std::string& name) {
+        try {
+          return to_array(t.column(name));
+        } catch (const std::invalid_argument& e) {
+          throw py::key_error(e.what());
+        }
+      })
+      .def("__len__", [](const Trajectory& t) { return t.rows(); })
+      .def("__iter__", [](const Trajectory&) { return py::iter(py::cast(Trajectory::column_names())); })
+      .def("__contains__", [](const Trajectory&, const std::string& n) {
+        const auto& names = Trajectory::column_names();
+        return std::find(names.begin(), names.end(), n) != names.end();
+      })
+      .def("keys", [](const Trajectory&) { return Trajectory::column_names(); }, "Column names in CSV order.")
+      .def("to_dict", &trajectory_dict, "The columns as a dict of numpy arrays.")
+      .def_property_readonly("rows", &Trajectory::rows, "Number of samples.")
+      .def_property_readonly("law_state", [](const Trajectory& t) {
+        py::array_t<double> a({static_cast<py::ssize_t>(t.law_state.size()), static_cast<py::ssize_t>(t.rows())});
+        auto w = a.mutable_unchecked<2>();
+        for (std::size_t i = 0; i < t.law_state.size(); ++i)
+          for (std::size_t k = 0; k < t.rows(); ++k) w(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(k)) = t.law_state[i][k];
+        return a;
+      }, "Internal states of a dynamic law, shape (num_states, rows), m or rad; (0, rows) for static laws.")
+      .def_property_readonly("switches", [](const Trajectory& t) {
+        py::list l;
+        for (const auto& s : t.switches) {
+          py::dict d;
+          d["time"] = s.time;
+          d["kind"] = switch_kind_name(s.kind);
+          d["position"] = s.position;
+          d["applied"] = s.applied;
+          d["direction"] = s.direction;
+          l.append(d);
+        }
+        return l;
+      }, "Mode switches of the hybrid solver: dicts {time (s), kind ('breakaway'|'stick'|'reversal'), position, applied (N or N m), direction}.")
+      .def_property_readonly("stats", [](const Trajectory& t) {
+        py::dict d;
+        d["steps"] = t.stats.steps;
+        d["rhs_evaluations"] = t.stats.rhs_evaluations;
+        d["restarts"] = t.stats.restarts;
+        d["solver"] = std::string(t.stats.solver);
+        return d;
+      }, "Integrator counters and the solver used.")
+      .def("to_csv", &Trajectory::to_csv, "The CSV text `frictionlab simulate -o` writes.")
+      .def("__repr__", [](const Trajectory& t) {
+        std::ostringstream o;
+        o << "Trajectory(rows=" << t.rows();
+        if (t.rows()) o << ", t=" << t.time.front() << ".." << t.time.back() << " s";
+        o << ", solver='" << t.stats.solver << "', switches=" << t.switches.size() << ")";
+        return o.str();
+      });
+
+  m.def("_simulate", [](const Scenario& s) {
+    py::gil_scoped_release release;
+    return simulate(s);
+  }, py::arg("scenario"));
+}
+
+}  // namespace frictionlab::python
