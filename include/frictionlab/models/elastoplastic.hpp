@@ -119,31 +119,28 @@ struct ElastoPlasticT {
   void steady_state(double v, std::span<double> z) const { z[0] = sgn(v) * level(v) / sigma0; }
 
  private:
-  // Solves w1 = w + h (1 - a(w1) w1 / zmax) for w1 in [w, zmax]; phi(w1) is increasing there,
-  // so Newton with the analytic slope, kept inside a shrinking bracket, converges in a few steps.
+  // Solves w1 = w + h (1 - a(w1) w1 / zmax) for w1 in [w, zmax]; phi(w1) is increasing there.
   double implicit_transition(double w, double h, double zmax) const {
-    const double width = zmax - zba, k = std::numbers::pi / width;
-    auto phi = [&](double y, double& slope) {
-      double a = 1.0, da = 0.0;
-      if (y <= zba) {
-        a = 0.0;
-      } else if (y < zmax) {
-        const double arg = k * (y - (zmax + zba) / 2);
-        a = 0.5 * std::sin(arg) + 0.5;
-        da = 0.5 * k * std::cos(arg);
-      }
-      slope = 1.0 + h * (da * y + a) / zmax;
-      return y - w - h * (1.0 - a * y / zmax);
+    auto a_of = [&](double y) {
+      if (y <= zba) return 0.0;
+      if (y >= zmax) return 1.0;
+      return 0.5 * std::sin(std::numbers::pi * (y - (zmax + zba) / 2) / (zmax - zba)) + 0.5;
     };
-    double lo = w, hi = zmax, slope = 1.0;
-    if (phi(lo, slope) >= 0) return lo;
+    auto phi = [&](double y) { return y - w - h * (1.0 - a_of(y) * y / zmax); };
+    double lo = w, hi = zmax;
+    if (phi(lo) >= 0) return lo;
     double y = std::min(w + h, zmax);
-    for (int it = 0; it < 50; ++it) {
-      const double f = phi(y, slope);
+    for (int it = 0; it < 60 && hi - lo > 1e-15 * zmax; ++it) {
+      const double f = phi(y);
       (f > 0 ? hi : lo) = y;
-      double next = y - f / slope;
+      const double eps = 1e-9 * zmax;
+      const double df = (phi(y + eps) - f) / eps;
+      double next = df > 0 ? y - f / df : 0.5 * (lo + hi);
       if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      if (f == 0.0 || std::abs(next - y) <= 1e-13 * zmax) return next;  // 1e-13: a few ulps of zmax
+      if (std::abs(next - y) < 1e-14 * zmax) {
+        y = next;
+        break;
+      }
       y = next;
     }
     return y;
