@@ -145,6 +145,10 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
   num["hold_start_time"] = t_hold;
   num["velocity_threshold"] = threshold;
   num["sliding_samples"] = static_cast<double>(rows.size());
+  r.series["time"].assign(d.time.data(), d.time.data() + n);
+  r.series["velocity"].assign(d.velocity.data(), d.velocity.data() + n);
+  r.series["force"].assign(d.force.data(), d.force.data() + n);
+  if (Fs >= Fc && Fc >= 0 && Fv >= 0) r.law = FrictionLaw(StaticCoulombViscous{Fs, Fc, Fv}).to_spec();
   if (Fs < Fc) warn("Fs = " + format_number(Fs) + " is below Fc = " + format_number(Fc) + ": no stiction peak in this record");
   return r;
 }

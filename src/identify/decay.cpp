@@ -105,6 +105,14 @@ Result identify_decay(const DecayData& d, const DecayOptions& o) {
   r.diagnostics.numbers["first_amplitude"] = std::abs(tp.front().position);
   r.diagnostics.numbers["last_amplitude"] = std::abs(tp.back().position);
   r.diagnostics.numbers["stiffness"] = k;
+  r.series["time"].assign(d.time.data(), d.time.data() + n);
+  r.series["position"].assign(d.position.data(), d.position.data() + n);
+  for (const auto& q : tp) {
+    r.series["peak_time"].push_back(d.time[q.sample]);
+    r.series["peak_position"].push_back(q.position);
+  }
+  if (!relative && fit.beta[0] >= 0 && fit.beta[1] >= 0)
+    r.law = FrictionLaw(CoulombViscous{fit.beta[0], fit.beta[1]}).to_spec();
   for (const auto& p : r.parameters)
     if (std::abs(p.value) <= 2 * p.std)
       r.diagnostics.warnings.push_back(p.name + " = " + format_number(p.value) + " is zero within 2 std (" +

@@ -357,6 +357,13 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
   r.fit.relative_error_percent = 100.0 * std::sqrt(ee) / reg.y.norm();
   r.fit.rmse = std::sqrt(ee / static_cast<double>(nobs));
   r.fit.samples = static_cast<std::size_t>(nobs);
+  {  // figure signals: the decimated samples keep every decimation-th sample after the skip
+    const Vec model = reg.X * theta;
+    auto& t = r.series["time"];
+    for (Eigen::Index k = 0; k < nobs; ++k) t.push_back(data.time[options.skip + k * std::max(1, options.decimation)]);
+    r.series["force"].assign(reg.y.data(), reg.y.data() + nobs);
+    r.series["force_model"].assign(model.data(), model.data() + nobs);
+  }
   r.diagnostics.numbers["residual_std"] = std::sqrt(s2);
 
   for (const auto& q : r.parameters) {

@@ -113,6 +113,20 @@ Result identify_sweep(const SweepData& d, const SweepOptions& o) {
   r.fit.samples = fit.samples;
   for (auto& w : fit.warnings) r.diagnostics.warnings.push_back(w);
   r.diagnostics.numbers["iterations"] = fit.iterations;
+  for (const auto& q : points) {  // figure signals: the measured map and the fitted law over it
+    r.series["velocity"].push_back(q.velocity);
+    r.series["force"].push_back(q.force);
+    r.series["force_std"].push_back(q.force_std);
+  }
+  const double vlo = v.minCoeff(), vhi = v.maxCoeff();
+  constexpr int kCurve = 400;
+  for (int i = 0; i < kCurve; ++i) {
+    const double x = vlo + (vhi - vlo) * i / (kCurve - 1);
+    if (x == 0.0) continue;
+    r.series["law_velocity"].push_back(x);
+    r.series["law_force"].push_back(fit.law.sliding(x));
+  }
+  r.law = fit.law.to_spec();
   r.diagnostics.numbers["max_speed"] = v.cwiseAbs().maxCoeff();
   r.diagnostics.numbers["min_speed"] = v.cwiseAbs().minCoeff();
   return r;

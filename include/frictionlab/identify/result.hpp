@@ -67,6 +67,10 @@ struct Result {
   /// The identified friction law in its file form, ready for simulate and validate (absent when
   /// the estimates do not make a valid law, e.g. a negative Coulomb level; a warning says why).
   std::optional<LawSpec> law;
+  /// Signals behind the result's figures, by name, in SI units (not written to JSON): e.g. idim
+  /// "time", "force", "force_model"; sweep "velocity", "force", "force_std"; decay "time",
+  /// "position", "peak_time", "peak_position". Series that share a prefix share a length.
+  std::map<std::string, std::vector<double>> series;
 
   bool ok() const { return status == ResultStatus::ok; }
   /// The parameter named `name`, or nullptr.
