@@ -52,7 +52,8 @@ std::string result_text(const Result& r) {
 }
 
 int emit(const Result& r, const OutputOptions& o) {
-  std::ostream& text = o.json == "-" ? std::cerr : std::cout;
+  // Text goes to stderr when stdout carries the JSON, and always when the data gave no answer.
+  std::ostream& text = (o.json == "-" || !r.ok()) ? std::cerr : std::cout;
   text << result_text(r);
   if (o.json == "-") {
     std::cout << to_json(r, -1) << "\n";
