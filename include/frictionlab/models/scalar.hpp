@@ -34,10 +34,13 @@ T abs_pow_ratio(const T& x, const S& scale, const E& exponent) {
   return pow(abs(x / scale), exponent);
 }
 
-/// The Stribeck decay exp(-|v / vs|^delta), in [0, 1]. Fast paths, all exact to rounding:
-/// delta = 2 (the usual shape) squares instead of calling pow when the exponent is a plain
-/// number; a decay below the smallest double (|v/vs|^delta > 745) returns 0 without calling exp,
-/// whose underflow path is slow and sets errno.
+/// The Stribeck decay exp(-|v / vs|^delta), in [0, 1]. Fast paths: delta = 2 (the usual shape)
+/// squares instead of calling pow when the exponent is a plain number; far past the Stribeck
+/// velocity (|v/vs|^delta > 40, decay < 4.3e-18, below the rounding of Fc + (Fs - Fc) decay for
+/// any Fc > 1e-2 (Fs - Fc)) it returns 0 without calling exp, which is slow on its way to
+/// underflow.
+inline constexpr double kNegligibleDecayExponent = 40.0;
+
 template <class T, class S, class E>
 T stribeck_decay(const T& v, const S& vs, const E& delta) {
   using std::exp;
@@ -45,11 +48,11 @@ T stribeck_decay(const T& v, const S& vs, const E& delta) {
     if (delta == 2.0) {
       const T x = v / vs;
       const double xx = value_of(x) * value_of(x);
-      return xx > 745.0 ? T(0) : exp(-x * x);
+      return xx > kNegligibleDecayExponent ? T(0) : exp(-x * x);
     }
   }
   const T u = abs_pow_ratio(v, vs, delta);
-  return value_of(u) > 745.0 ? T(0) : exp(-u);
+  return value_of(u) > kNegligibleDecayExponent ? T(0) : exp(-u);
 }
 
 }  // namespace frictionlab
