@@ -1,6 +1,7 @@
 // Analyses of motion records: decay envelope and stick-slip detection.
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "common.hpp"
@@ -29,15 +30,14 @@ void init_analysis(py::module_& m) {
       .def_readwrite("fit_tolerance", &EnvelopeOptions::fit_tolerance, "A 2-parameter model with relative rms below this is kept (0.01).")
       .def_readwrite("min_relative_amplitude", &EnvelopeOptions::min_relative_amplitude, "Smaller half swings are ignored (1e-3 of the largest).");
 
-  py::class_<EnvelopeFit>(m, "EnvelopeFit", "A(t) = p exp(-lambda t) + q (linear model: q + slope t).")
+  py::class_<EnvelopeFit>(m, "EnvelopeFit",
+                          "A(t) = p exp(-lambda (t - t1)) + q with t1 the first peak time (linear model: q + slope t); "
+                          "evaluate with EnvelopeResult.envelope(t).")
       .def_readonly("lambda_", &EnvelopeFit::lambda, "Decay rate, 1/s (0 for the linear model).")
       .def_readonly("p", &EnvelopeFit::p, "Position unit.")
       .def_readonly("q", &EnvelopeFit::q, "Position unit (linear model: intercept).")
       .def_readonly("slope", &EnvelopeFit::slope, "Linear model: position unit per s.")
       .def_readonly("relative_rms", &EnvelopeFit::relative_rms, "rms residual / mean amplitude.")
-      .def("__call__", [](const EnvelopeFit& f, py::object t) {
-        return py::vectorize([f](double x) { return f.lambda == 0.0 ? f.q + f.slope * x : f.p * std::exp(-f.lambda * x) + f.q; })(t);
-      }, py::arg("t"), "The envelope at times t (s).")
       .def("__repr__", [](const EnvelopeFit& f) {
         std::ostringstream o;
         o << "EnvelopeFit(lambda_=" << f.lambda << ", p=" << f.p << ", q=" << f.q << ", slope=" << f.slope
@@ -61,6 +61,19 @@ void init_analysis(py::module_& m) {
           default: return r.exponential;
         }
       }, py::return_value_policy::copy, "The fit of the chosen kind (exponential for 'none').")
+      .def("envelope", [](const EnvelopeResult& r, py::object t, const std::string& kind) {
+        const EnvelopeFit* f = kind == "linear" ? &r.linear : kind == "exponential" ? &r.exponential : kind == "mixed" ? &r.mixed : nullptr;
+        if (kind.empty()) f = r.kind == DecayKind::linear ? &r.linear : r.kind == DecayKind::mixed ? &r.mixed : &r.exponential;
+        if (!f) throw std::invalid_argument("envelope kind '" + kind + "': expected linear, exponential or mixed");
+        const bool linear = f == &r.linear;
+        const double t1 = r.peak_times.empty() ? 0.0 : r.peak_times.front();
+        const EnvelopeFit fit = *f;
+        return py::vectorize([fit, linear, t1](double x) {
+          return linear ? fit.q + fit.slope * x : fit.p * std::exp(-fit.lambda * (x - t1)) + fit.q;
+        })(t);
+      }, py::arg("t"), py::arg("kind") = "",
+         "Amplitude (position unit) of the fitted envelope at times t (s): the detected kind's fit, or kind = "
+         "'linear', 'exponential', 'mixed'. Exponential fits run from the first peak time.")
       .def_readonly("decrement_per_half_cycle", &EnvelopeResult::decrement_per_half_cycle, "Linear: amplitude lost per half cycle, position unit.")
       .def_readonly("log_decrement", &EnvelopeResult::log_decrement, "Exponential: logarithmic decrement per full cycle.")
       .def_readonly("decay_fraction", &EnvelopeResult::decay_fraction, "1 - last amplitude / first amplitude.")

@@ -183,6 +183,12 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
         if (!r.law) return py::none();
         return py::cast(FrictionLaw::from_spec(*r.law));
       }, "The identified friction law (FrictionLaw, ready to simulate), or None when the estimates do not make one.")
+      .def_property_readonly("series", [](const Result& r) {
+        py::dict d;
+        for (const auto& [k, v] : r.series) d[py::str(k)] = to_array(v);
+        return d;
+      }, "Signals behind the result's figures, by name, as numpy arrays in SI units (not in the JSON): idim 'time', "
+         "'force', 'force_model'; sweep 'velocity', 'force', 'force_std'; decay 'time', 'position', 'peak_time', ...")
       .def("value", &Result::value, py::arg("name"), "Value of parameter `name`; ValueError listing the parameters otherwise.")
       .def("__getitem__", [](const Result& r, const std::string& name) {
         if (const auto* p = r.find(name)) return p->value;

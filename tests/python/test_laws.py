@@ -49,3 +49,29 @@ def test_repr_and_round_trip():
     law = fl.FrictionLaw({"law": "coulomb-viscous", "Fc": 2.0, "Fv": 0.5})
     assert repr(law) == "FrictionLaw('coulomb-viscous', Fc=2, Fv=0.5)"
     assert fl.FrictionLaw(law.to_dict()).parameters == {"Fc": 2.0, "Fv": 0.5}
+
+
+def test_units_call_pickle_and_equality():
+    import pickle
+
+    law = fl.FrictionLaw({"law": "coulomb-viscous", "Fc": 2.0, "Fv": 0.5})
+    assert law.units("rotary") == {"Fc": "N m", "Fv": "N m s/rad"}
+    assert law.units() == {"Fc": "N", "Fv": "N s/m"}
+    np.testing.assert_allclose(law(np.array([-1.0, 2.0])), [-2.5, 3.0], rtol=REL_TOL)
+    assert pickle.loads(pickle.dumps(law)) == law
+    assert law != fl.FrictionLaw({"law": "coulomb-viscous", "Fc": 2.0, "Fv": 0.6})
+    table = fl.FrictionLaw({"law": "table", "velocity": np.array([0.1, 1.0]), "force": [1.0, 2.0]})
+    assert table.sliding(0.55) == pytest.approx(1.5, rel=REL_TOL)
+
+
+def test_bad_dict_values():
+    with pytest.raises(ValueError, match="law parameter 'Fc': expected a number or a list of numbers"):
+        fl.FrictionLaw({"law": "coulomb", "Fc": True})
+    with pytest.raises(ValueError, match="law parameter 'Fc': expected a number or a list of numbers"):
+        fl.FrictionLaw({"law": "coulomb", "Fc": object()})
+    with pytest.raises(ValueError, match=r"missing 'law' \(one of frictionlab.law_names\(\)\)"):
+        fl.FrictionLaw({"Fc": 1})
+    with pytest.raises(ValueError, match="axis"):
+        fl.FrictionLaw({"law": "coulomb", "Fc": 1}).units("diagonal")
+    with pytest.raises(ValueError, match="v: expected a 1-D array of numbers"):
+        fl.FrictionLaw({"law": "dahl", "sigma0": 1e5, "Fc": 1}).step(np.zeros((2, 2)), 1e-3)

@@ -54,11 +54,22 @@ struct SmoothT {
   template <class T>
   T sliding(const T& v) const {
     using std::atan;
-    using std::exp;
-    using std::tanh;
+    using std::expm1;
     const T x = v / T(vt);
-    const T s = shape == SmoothShape::tanh ? tanh(x) : T(2.0 / std::numbers::pi) * atan(x);
-    return s * (T(Fc) + (T(Fs) - T(Fc)) * stribeck_decay(v, vs, delta)) + T(Fv) * v;
+    T s;
+    if (shape == SmoothShape::atan) {
+      s = T(2.0 / std::numbers::pi) * atan(x);
+    } else if (value_of(x) > 20.0 || value_of(x) < -20.0) {
+      s = T(value_of(x) > 0 ? 1.0 : -1.0);  // tanh(20) = 1 - 8e-18: one to rounding
+    } else {
+      // tanh|x| = expm1(2|x|) / (expm1(2|x|) + 2): one exp, accurate near 0; the sign is
+      // applied last so the law stays exactly odd.
+      using std::abs;
+      const T e = expm1(T(2) * abs(x));
+      s = sgn(x) * e / (e + T(2));
+    }
+    const T level = value_of(Fs) == value_of(Fc) ? T(Fc) : T(Fc) + (T(Fs) - T(Fc)) * stribeck_decay(v, vs, delta);
+    return s * level + T(Fv) * v;
   }
   S breakaway_positive() const { return S(0); }
   S breakaway_negative() const { return S(0); }
