@@ -55,10 +55,7 @@ struct GmsT {
       sum += alpha[i];
     }
     detail::require(std::abs(sum - 1.0) <= 1e-9, kName, "sum(alpha)", sum, "1 (the elements share the Stribeck level)");
-    detail::require(std::isfinite(Fc) && Fc > 0, kName, "Fc", Fc, "> 0 (N or N m)");
-    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + detail::format_value(Fc) + " (N or N m)");
-    detail::require(std::isfinite(vs) && vs > 0, kName, "vs", vs, "> 0 (m/s or rad/s)");
-    detail::require(std::isfinite(delta) && delta > 0, kName, "delta", delta, "> 0");
+    detail::validate_stribeck_level(kName, Fc, Fs, vs, delta, true);
     detail::require(std::isfinite(C) && C > 0, kName, "C", C, "> 0 (N/s or N m/s)");
     detail::require(std::isfinite(sigma2) && sigma2 >= 0, kName, "sigma2", sigma2, ">= 0 (N s/m or N m s/rad)");
   }

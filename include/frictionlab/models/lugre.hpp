@@ -52,10 +52,7 @@ struct LuGreT {
     detail::require(std::isfinite(sigma0) && sigma0 > 0, kName, "sigma0", sigma0, "> 0 (N/m or N m/rad)");
     detail::require(std::isfinite(sigma1) && sigma1 >= 0, kName, "sigma1", sigma1, ">= 0 (N s/m or N m s/rad)");
     detail::require(std::isfinite(sigma2) && sigma2 >= 0, kName, "sigma2", sigma2, ">= 0 (N s/m or N m s/rad)");
-    detail::require(std::isfinite(Fc) && Fc > 0, kName, "Fc", Fc, "> 0 (N or N m)");
-    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + detail::format_value(Fc) + " (N or N m)");
-    detail::require(std::isfinite(vs) && vs > 0, kName, "vs", vs, "> 0 (m/s or rad/s)");
-    detail::require(std::isfinite(delta) && delta > 0, kName, "delta", delta, "> 0");
+    detail::validate_stribeck_level(kName, Fc, Fs, vs, delta, true);
     detail::require(std::isfinite(vd) && vd >= 0, kName, "vd", vd, ">= 0 (m/s or rad/s; 0 = constant damping)");
   }
 

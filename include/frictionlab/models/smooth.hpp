@@ -11,6 +11,7 @@
 
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/models/scalar.hpp"
+#include "frictionlab/models/stribeck.hpp"
 
 namespace frictionlab {
 
@@ -43,10 +44,7 @@ struct SmoothT {
 
   /// Throws std::invalid_argument naming the first parameter that breaks its rule.
   void validate() const {
-    detail::require(std::isfinite(Fc) && Fc >= 0, kName, "Fc", Fc, ">= 0 (N or N m)");
-    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + detail::format_value(Fc) + " (N or N m)");
-    detail::require(std::isfinite(vs) && vs > 0, kName, "vs", vs, "> 0 (m/s or rad/s)");
-    detail::require(std::isfinite(delta) && delta > 0, kName, "delta", delta, "> 0");
+    detail::validate_stribeck_level(kName, Fc, Fs, vs, delta);
     detail::require(std::isfinite(Fv) && Fv >= 0, kName, "Fv", Fv, ">= 0 (N s/m or N m s/rad)");
     detail::require(std::isfinite(vt) && vt > 0, kName, "vt", vt, "> 0 (m/s or rad/s)");
   }

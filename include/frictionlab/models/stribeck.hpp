@@ -10,6 +10,20 @@
 
 namespace frictionlab {
 
+namespace detail {
+/// The rules of a Stribeck level Fc + (Fs - Fc) exp(-|v/vs|^delta), shared by every law built on
+/// it (stribeck, smooth, lugre, elasto-plastic, gms): Fc >= 0 (> 0 when `Fc_positive`, as the
+/// bristle laws divide by it), Fs >= Fc, vs > 0, delta > 0, all finite.
+/// \throws std::invalid_argument naming `law`, the first parameter that breaks its rule and the rule.
+inline void validate_stribeck_level(std::string_view law, double Fc, double Fs, double vs, double delta,
+                                    bool Fc_positive = false) {
+  require(std::isfinite(Fc) && (Fc_positive ? Fc > 0 : Fc >= 0), law, "Fc", Fc, Fc_positive ? "> 0 (N or N m)" : ">= 0 (N or N m)");
+  require(std::isfinite(Fs) && Fs >= Fc, law, "Fs", Fs, ">= Fc = " + format_value(Fc) + " (N or N m)");
+  require(std::isfinite(vs) && vs > 0, law, "vs", vs, "> 0 (m/s or rad/s)");
+  require(std::isfinite(delta) && delta > 0, law, "delta", delta, "> 0");
+}
+}  // namespace detail
+
 /// Stribeck curve: F falls from Fs at rest to Fc over about vs, plus viscous Fv v.
 /// A stuck contact holds up to Fs. delta = 2 is the usual (Gaussian) shape, 1 the exponential one.
 template <class S = double>
@@ -34,10 +48,7 @@ struct StribeckT {
   /// Throws std::invalid_argument naming the first parameter that breaks its rule
   /// (Fc >= 0, Fs >= Fc, vs > 0, delta > 0, Fv >= 0, all finite).
   void validate() const {
-    detail::require(std::isfinite(Fc) && Fc >= 0, kName, "Fc", Fc, ">= 0 (N or N m)");
-    detail::require(std::isfinite(Fs) && Fs >= Fc, kName, "Fs", Fs, ">= Fc = " + detail::format_value(Fc) + " (N or N m)");
-    detail::require(std::isfinite(vs) && vs > 0, kName, "vs", vs, "> 0 (m/s or rad/s)");
-    detail::require(std::isfinite(delta) && delta > 0, kName, "delta", delta, "> 0");
+    detail::validate_stribeck_level(kName, Fc, Fs, vs, delta);
     detail::require(std::isfinite(Fv) && Fv >= 0, kName, "Fv", Fv, ">= 0 (N s/m or N m s/rad)");
   }
 
