@@ -34,8 +34,9 @@ sanitize: deps
 
 bench: deps
 	@$(call CONFIGURE,$(BUILD)-bench,-DCMAKE_BUILD_TYPE=Release -DFRICTIONLAB_BUILD_BENCHMARKS=ON -DFRICTIONLAB_BUILD_TESTS=OFF)
-	@cmake --build $(BUILD)-bench -j $(JOBS) --target frictionlab_bench
+	@cmake --build $(BUILD)-bench -j $(JOBS) --target frictionlab_bench frictionlab_compare
 	@$(BUILD)-bench/bench/frictionlab_bench
+	@$(PYTHON) bench/compare --build $(BUILD)-bench --no-build --json bench/results.json
 
 # Installs the library into a scratch prefix and builds a consumer with find_package(frictionlab).
 install-test: build

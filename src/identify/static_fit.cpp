@@ -140,6 +140,11 @@ OneSided fit_one_sided(const Eigen::VectorXd& v, const Eigen::VectorXd& f, const
   const int n = static_cast<int>(v.size());
   const int chunks = std::max(1, std::min(n / 2000, 4 * std::max(1, o.num_threads)));
   for (double d0 : delta_starts) {
+    // The second exponent start is only needed when the first ends badly: not converged, or
+    // with the exponent pinned at a bound (a sign of the wrong basin).
+    if (d0 != delta_starts.front() && best.converged && best.p[kDelta] > o.delta_min * (1 + 1e-6) &&
+        best.p[kDelta] < o.delta_max * (1 - 1e-6))
+      break;
     OneSided cur;
     std::copy(start, start + kNp, cur.p);
     cur.p[kDelta] = d0;
