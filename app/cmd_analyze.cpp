@@ -1,5 +1,5 @@
 // frictionlab analyze envelope|stick-slip DATA [--time C] [--position C] [--velocity C] [--force C]
-//                     [--json FILE|-] [--overwrite]
+//                     [--json FILE|-] [--plot FILE] [--overwrite]
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -7,6 +7,9 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "figures.hpp"
+#include "frictionlab/io/figure.hpp"
+#include "output.hpp"
 #include "frictionlab/analysis/envelope.hpp"
 #include "frictionlab/analysis/stick_slip.hpp"
 #include "frictionlab/io/atomic_write.hpp"
@@ -20,6 +23,7 @@ struct AnalyzeArgs {
   std::string data;
   std::string time = "time", position = "position", velocity = "velocity", force = "friction";
   std::string json;
+  std::string plot;
   bool overwrite = false;
   double threshold = 0.0;
 };
@@ -124,11 +128,15 @@ Handler register_analyze(CLI::App& app) {
   cmd->add_option("--threshold", a->threshold,
                   "stick-slip: |v| at or below counts as stuck (0 = automatic: exact zeros or 1 % of max |v|)");
   cmd->add_option("--json", a->json, "write the result as JSON to FILE, or '-' for stdout");
-  cmd->add_flag("--overwrite", a->overwrite, "replace an existing --json file");
+  add_plot_option(cmd, a->plot);
+  cmd->add_flag("--overwrite", a->overwrite, "replace an existing --json or --plot file");
   return [a]() -> int {
     if (!a->json.empty() && a->json != "-" && !a->overwrite && std::filesystem::exists(a->json))
       throw std::invalid_argument(a->json + " exists; pass --overwrite to replace it");
+    check_plot(a->plot, a->overwrite);
     const Dataset d = load_dataset(a->data);
+    std::optional<Figure> figure;
+    const std::string name = std::filesystem::path(a->data).filename().string();
     const std::vector<double> t = column(d, a->time, "--time");
     nlohmann::json result;
     std::string text;
@@ -141,6 +149,7 @@ Handler register_analyze(CLI::App& app) {
         throw std::invalid_argument(d.where() + e.what());
       }
       result = envelope_json(r);
+      if (!a->plot.empty()) figure = envelope_figure(t, x, r, name);
       text = envelope_text(r);
     } else {
       const std::vector<double> v = column(d, a->velocity, "--velocity");
@@ -155,6 +164,7 @@ Handler register_analyze(CLI::App& app) {
         throw std::invalid_argument(d.where() + e.what());
       }
       result = stick_slip_json(r);
+      if (!a->plot.empty()) figure = stick_slip_figure(t, v, f, r, name);
       text = stick_slip_text(r, !f.empty());
     }
     const nlohmann::json j = {{"schema", 1},
@@ -173,6 +183,11 @@ Handler register_analyze(CLI::App& app) {
         w.overwrite = a->overwrite;
         write_file_atomic(a->json, j.dump(2) + "\n", w);
       }
+    }
+    if (figure) {
+      const FigureFiles files = write_figure(*figure, a->plot, a->overwrite);
+      (a->json == "-" ? std::cerr : std::cout) << "figure " << files.figure << " (data " << files.data
+                                               << ", gnuplot script " << files.script << ")\n";
     }
     return 0;
   };

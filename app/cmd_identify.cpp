@@ -9,7 +9,9 @@
 #include "frictionlab/identify/breakaway.hpp"
 #include "frictionlab/identify/decay.hpp"
 #include "frictionlab/identify/idim.hpp"
+#include "frictionlab/identify/lugre.hpp"
 #include "frictionlab/identify/sweep.hpp"
+#include "frictionlab/io/law_file.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {
@@ -43,6 +45,10 @@ struct IdentifyArgs {
   double fixed_delta = 0;
   double relative_tolerance = 0.01, min_duration = 0.5;
   std::vector<std::string> segments;
+  // lugre
+  double lugre_inertia = std::numeric_limits<double>::quiet_NaN();
+  std::string lugre_static;
+  int lugre_substeps = 4;
 };
 
 std::vector<std::string> split_list(const std::string& s) {
@@ -81,7 +87,7 @@ IdimData idim_data(const std::string& path, const DataOptions& c) {
 }
 
 int run_idim(const IdentifyArgs& a, const MethodIO& io) {
-  check_output_path(io.output.json, io.output.overwrite, "--json");
+  check_outputs(io.output);
   IdimOptions o;
   o.terms = split_list(a.terms);
   o.cutoff_hz = a.cutoff;
@@ -108,7 +114,7 @@ int run_idim(const IdentifyArgs& a, const MethodIO& io) {
 }
 
 int run_breakaway(const IdentifyArgs& a, const MethodIO& io) {
-  check_output_path(io.output.json, io.output.overwrite, "--json");
+  check_outputs(io.output);
   const Dataset d = load_data(io.data, io.columns);
   BreakawayData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns)};
   BreakawayOptions o;
@@ -121,7 +127,7 @@ int run_breakaway(const IdentifyArgs& a, const MethodIO& io) {
 }
 
 int run_sweep(const IdentifyArgs& a, const MethodIO& io) {
-  check_output_path(io.output.json, io.output.overwrite, "--json");
+  check_outputs(io.output);
   const Dataset d = load_data(io.data, io.columns);
   SweepData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns)};
   SweepOptions o;
@@ -145,7 +151,7 @@ int run_sweep(const IdentifyArgs& a, const MethodIO& io) {
 }
 
 int run_decay(const IdentifyArgs& a, const MethodIO& io) {
-  check_output_path(io.output.json, io.output.overwrite, "--json");
+  check_outputs(io.output);
   const Dataset d = load_data(io.data, io.columns);
   DecayData x{time_column(d, io.columns), position_column(d, io.columns)};
   DecayOptions o;
@@ -159,13 +165,30 @@ int run_decay(const IdentifyArgs& a, const MethodIO& io) {
   return emit(r, io.output);
 }
 
+int run_lugre(const IdentifyArgs& a, const MethodIO& io) {
+  check_outputs(io.output);
+  LugreOptions o;
+  o.inertia = a.lugre_inertia;
+  o.substeps = a.lugre_substeps;
+  o.axis = io.columns.parsed_axis();
+  if (!a.lugre_static.empty()) o.static_law = load_law(a.lugre_static);
+  const Dataset d = load_data(io.data, io.columns);
+  LugreData x{time_column(d, io.columns), force_column(d, io.columns), position_column(d, io.columns)};
+  o.progress = [](int iteration, double cost, double) {
+    progress_stage("output-error fit, iteration " + std::to_string(iteration) + ", cost " + std::to_string(cost) + " m^2");
+  };
+  Result r = identify_lugre(x, o);
+  stamp(r, d);
+  return emit(r, io.output);
+}
+
 }  // namespace
 
 Handler register_identify(CLI::App& app) {
   auto* identify = app.add_subcommand("identify", "Identify friction parameters from measured data");
   identify->require_subcommand(1);
   auto a = std::make_shared<IdentifyArgs>();
-  auto io = std::make_shared<std::array<MethodIO, 4>>();
+  auto io = std::make_shared<std::array<MethodIO, 5>>();
 
   auto* idim = method(identify, "idim",
                       "Inverse dynamic model least squares on a trajectory: force = M qdd + friction(qd) + offset "
@@ -215,11 +238,23 @@ Handler register_identify(CLI::App& app) {
                     "sqrt(k/M) (rad/s): without --stiffness, report Fc/k and the damping ratio");
   decay->add_flag("--pendulum", a->pendulum, "Restoring torque is stiffness * sin(angle)");
 
-  return [a, io, idim, breakaway, sweep, decay]() -> int {
+  auto* lugre = method(identify, "lugre",
+                       "LuGre dynamic parameters sigma0, sigma1 by output error (simulate the axis with the measured "
+                       "force, compare positions, Ceres least squares) over presliding and sliding; the static ones "
+                       "(Fc, Fs, vs, sigma2) from the same record unless --static gives them",
+                       (*io)[4], "linear");
+  lugre->add_option("--inertia", a->lugre_inertia, "Mass or inertia of the axis (kg or kg m^2), > 0")->required();
+  lugre->add_option("--static", a->lugre_static,
+                    "MODEL.json (or .yaml) with the static law (stribeck, lugre, static-coulomb-viscous, coulomb-viscous), "
+                    "e.g. from identify sweep: held fixed instead of identified");
+  lugre->add_option("--substeps", a->lugre_substeps, "Simulation steps per sample interval of the fit")->capture_default_str();
+
+  return [a, io, idim, breakaway, sweep, decay, lugre]() -> int {
     if (idim->parsed()) return run_idim(*a, (*io)[0]);
     if (breakaway->parsed()) return run_breakaway(*a, (*io)[1]);
     if (sweep->parsed()) return run_sweep(*a, (*io)[2]);
     if (decay->parsed()) return run_decay(*a, (*io)[3]);
+    if (lugre->parsed()) return run_lugre(*a, (*io)[4]);
     return 2;
   };
 }

@@ -1,10 +1,13 @@
-// frictionlab simulate SCENARIO.yaml [-o OUT.csv] [--overwrite]
+// frictionlab simulate SCENARIO.yaml [-o OUT.csv] [--plot FILE] [--overwrite]
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
 
 #include "commands.hpp"
+#include "figures.hpp"
+#include "frictionlab/io/figure.hpp"
+#include "output.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/io/scenario.hpp"
 #include "frictionlab/simulate/simulate.hpp"
@@ -15,6 +18,7 @@ namespace {
 struct SimulateArgs {
   std::string scenario;
   std::string output;
+  std::string plot;
   bool overwrite = false;
 };
 
@@ -57,12 +61,28 @@ Handler register_simulate(CLI::App& app) {
   cmd->add_option("-o,--output", args->output,
                   "write the trajectory as CSV (columns time, position, velocity, friction, applied, current, "
                   "voltage, reference, stuck); without it a summary is printed");
+  add_plot_option(cmd, args->plot);
   cmd->add_flag("--overwrite", args->overwrite, "replace an existing output file");
   return [args]() -> int {
     if (!args->output.empty() && !args->overwrite && std::filesystem::exists(args->output))
       throw std::invalid_argument(args->output + " exists; pass --overwrite to replace it");
+    check_plot(args->plot, args->overwrite);
+    progress_start("frictionlab simulate");
     const Scenario sc = load_scenario(args->scenario);
+    progress_stage("simulating");
     const Trajectory tr = simulate(sc);
+    if (!args->plot.empty()) {
+      progress_stage("drawing " + args->plot);
+      // Pendulums and motors turn (rad, N m); the other plants translate (m, N).
+      const std::string type = sc.plant->type();
+      const Axis axis = (type == "pendulum" || type == "dc-motor") ? Axis::rotary : Axis::linear;
+      const FigureFiles files = write_figure(
+          trajectory_figure(tr, axis, std::filesystem::path(args->scenario).filename().string()), args->plot,
+          args->overwrite);
+      progress_stop();
+      std::cerr << "figure     " << files.figure << " (data " << files.data << ", script " << files.script << ")\n";
+    }
+    progress_stop();
     if (args->output.empty()) {
       std::cout << summary(args->scenario, sc, tr);
     } else {

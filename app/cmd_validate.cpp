@@ -1,14 +1,142 @@
+// frictionlab validate MODEL.json DATA --scenario SCENARIO.yaml: simulate an identified model in
+// the scenario's plant and controller and compare it with a measured run.
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
 #include "commands.hpp"
+#include "data_options.hpp"
+#include "frictionlab/identify/validate.hpp"
+#include "frictionlab/io/atomic_write.hpp"
+#include "frictionlab/io/law_file.hpp"
+#include "frictionlab/io/scenario.hpp"
+#include "output.hpp"
 
 namespace frictionlab::cli {
+namespace {
 
-// Placeholder until the validate work lands: the subcommand exists and says so.
-Handler register_validate(CLI::App& app) {
-  app.add_subcommand("validate", "(not yet available)");
-  return [] {
-    throw std::invalid_argument("'validate' is not available in this build yet");
-    return 2;
+struct ValidateArgs {
+  std::string model, data, scenario;
+  DataOptions columns;
+  OutputOptions output;
+};
+
+// The model a `frictionlab identify ... --json` run wrote: its "law", parameters M and offset.
+struct ModelFile {
+  IdentifiedModel model;
+  std::string data_file, data_sha256;
+};
+
+ModelFile read_model(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument(path + ": cannot open the model file (MODEL.json of frictionlab identify --json)");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(path + ": not valid JSON: " + e.what());
+  }
+  if (!j.is_object()) throw std::invalid_argument(path + ": expected a JSON object (MODEL.json of frictionlab identify --json)");
+  if (j.contains("status") && j["status"] != "ok")
+    throw std::invalid_argument(path + ": the identification failed (status " + j["status"].dump() + "); nothing to validate");
+  if (!j.contains("law") || !j["law"].is_object())
+    throw std::invalid_argument(path + ": no 'law' object; expected the friction law of an identification "
+                                "(frictionlab identify ... --json writes it when the estimates make a valid law)");
+  ModelFile m;
+  m.model.law = law_from_json(j["law"], path + ": law");
+  auto param = [&](const char* name, bool required, double fallback) {
+    const auto& p = j.contains("parameters") ? j["parameters"] : nlohmann::json::object();
+    if (!p.is_object() || !p.contains(name)) {
+      if (required)
+        throw std::invalid_argument(path + ": parameters." + name + ": missing; expected the identified inertia (kg or kg m^2)");
+      return fallback;
+    }
+    const auto& v = p[name].is_object() ? p[name]["value"] : p[name];
+    if (!v.is_number()) throw std::invalid_argument(path + ": parameters." + name + ".value: expected a number, got " + v.dump());
+    return v.get<double>();
   };
+  m.model.axis.M = param("M", true, 0.0);
+  m.model.axis.offset = param("offset", false, 0.0);
+  m.model.method = j.value("method", "");
+  m.model.source = path;
+  if (j.contains("data") && j["data"].is_object()) {
+    m.data_file = j["data"].value("file", "");
+    m.data_sha256 = j["data"].value("sha256", "");
+  }
+  return m;
+}
+
+std::string text_of(const Result& r, const std::string& scenario) {
+  std::ostringstream s;
+  s << "frictionlab validate: " << r.model << " model in " << scenario << "\n";
+  if (!r.ok()) {
+    s << "error: " << r.message << "\n";
+    return s.str();
+  }
+  for (const auto& p : r.parameters)
+    s << "  " << std::left << std::setw(7) << p.name << " = " << std::right << std::setw(12) << std::setprecision(6) << p.value
+      << " " << p.unit << "\n";
+  const auto& v = *r.validation;
+  const auto& full = r.diagnostics.groups.at("relative_error_percent_full_rate");
+  s << "data " << v.file << ": relative error % (IDIM grid, " << v.samples << " samples; every sample)\n";
+  for (const char* name : {"position", "velocity", "acceleration", "force"})
+    s << "  " << std::left << std::setw(13) << name << std::right << std::setw(10) << std::setprecision(4)
+      << v.signal_errors_percent.at(name) << std::setw(10) << full.at(name) << "\n";
+  for (const auto& w : r.diagnostics.warnings) s << "warning: " << w << "\n";
+  return s.str();
+}
+
+int run(const ValidateArgs& a) {
+  check_output_path(a.output.json, a.output.overwrite, "--json");
+  const ModelFile mf = read_model(a.model);
+  auto data = std::make_shared<const Dataset>(load_data(a.data, a.columns));
+  ScenarioOptions so;
+  so.data = data;
+  so.law = mf.model.law;
+  so.axis = mf.model.axis;
+  const Scenario sc = load_scenario(a.scenario, so);
+  ValidationData v;
+  v.time = time_column(*data, a.columns);
+  v.position = position_column(*data, a.columns);
+  v.force = force_column(*data, a.columns);
+  v.file = data->file;
+  v.sha256 = data->sha256;
+  ValidateOptions vo;
+  vo.processing.axis = a.columns.parsed_axis();
+  Result r = validate_model(mf.model, sc, v, vo);
+  r.data_file = mf.data_file;
+  r.data_sha256 = mf.data_sha256;
+  std::ostream& text = a.output.json == "-" ? std::cerr : std::cout;
+  text << text_of(r, a.scenario);
+  if (a.output.json == "-") {
+    std::cout << to_json(r, -1) << "\n";
+  } else if (!a.output.json.empty()) {
+    write_file_atomic(a.output.json, to_json(r) + "\n", AtomicWriteOptions{a.output.overwrite});
+  }
+  return r.ok() ? 0 : 2;
+}
+
+}  // namespace
+
+Handler register_validate(CLI::App& app) {
+  auto a = std::make_shared<ValidateArgs>();
+  auto* cmd = app.add_subcommand("validate",
+                                 "Simulate an identified model (MODEL.json of identify --json) in a scenario's plant and "
+                                 "controller, driven by a measured run, and report the relative errors of position, "
+                                 "velocity, acceleration and force");
+  cmd->add_option("MODEL", a->model, "MODEL.json written by frictionlab identify ... --json")->required();
+  cmd->add_option("DATA", a->data, "Measured run: a CSV file with a header row, or a MATLAB .mat file")->required();
+  cmd->add_option("--scenario", a->scenario,
+                  "Scenario YAML: plant (axis), controller and input (e.g. examples/emps_closed_loop.yaml); its data "
+                  "inputs read DATA, its M, offset and friction come from MODEL")
+      ->required();
+  add_data_options(cmd, a->columns, "linear");
+  add_output_options(cmd, a->output);
+  return [a]() -> int { return run(*a); };
 }
 
 }  // namespace frictionlab::cli

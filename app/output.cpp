@@ -1,23 +1,259 @@
 #include "output.hpp"
 
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <mutex>
 #include <sstream>
+#include <streambuf>
+#include <thread>
+#include <unistd.h>
 
+#include "figures.hpp"
 #include "frictionlab/io/atomic_write.hpp"
+#include "frictionlab/io/figure.hpp"
+#include "frictionlab/io/report.hpp"
+#include "frictionlab/version.hpp"
 
 namespace frictionlab::cli {
 
+// ---------------------------------------------------------------------------------------------
+// Progress line. A thread redraws "\r<task>: <stage> ... 3.2 s" on stderr every 0.25 s once the
+// run has taken a second; std::cout and std::cerr are routed through a buffer that erases the
+// line before any other text, so messages never land in the middle of it.
+namespace {
+
+class Progress {
+ public:
+  static Progress& instance() {
+    static Progress p;
+    return p;
+  }
+
+  void start(const std::string& task) {
+    if (!::isatty(STDERR_FILENO) || std::getenv("FRICTIONLAB_NO_PROGRESS")) return;
+    std::lock_guard lock(mutex_);
+    if (thread_.joinable()) return;
+    task_ = task;
+    stage_ = "working";
+    begin_ = last_output_ = Clock::now();
+    install();
+    thread_ = std::jthread([this](std::stop_token stop) { loop(stop); });
+  }
+
+  void stage(const std::string& s) {
+    std::lock_guard lock(mutex_);
+    stage_ = s;
+  }
+
+  void stop() {
+    if (!thread_.joinable()) return;
+    thread_.request_stop();
+    wake_.notify_all();
+    thread_.join();
+    std::lock_guard lock(mutex_);
+    erase_locked();
+  }
+
+  // Called by the routing buffer before any text goes out.
+  void before_output() {
+    std::lock_guard lock(mutex_);
+    erase_locked();
+    last_output_ = Clock::now();
+  }
+
+  ~Progress() {
+    stop();
+    if (cout_) std::cout.rdbuf(cout_->inner);
+    if (cerr_) std::cerr.rdbuf(cerr_->inner);
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+
+  struct Routing : std::streambuf {
+    explicit Routing(std::streambuf* in) : inner(in) {}
+    std::streambuf* inner;
+
+   protected:
+    int_type overflow(int_type c) override {
+      if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
+      Progress::instance().before_output();
+      return inner->sputc(traits_type::to_char_type(c));
+    }
+    std::streamsize xsputn(const char* s, std::streamsize n) override {
+      Progress::instance().before_output();
+      return inner->sputn(s, n);
+    }
+    int sync() override { return inner->pubsync(); }
+  };
+
+  void install() {
+    if (cout_) return;
+    cout_ = std::make_unique<Routing>(std::cout.rdbuf());
+    cerr_ = std::make_unique<Routing>(std::cerr.rdbuf());
+    std::cout.rdbuf(cout_.get());
+    std::cerr.rdbuf(cerr_.get());
+  }
+
+  void erase_locked() {
+    if (!shown_) return;
+    const char clear[] = "\r\033[K";
+    [[maybe_unused]] const auto n = ::write(STDERR_FILENO, clear, sizeof clear - 1);
+    shown_ = false;
+  }
+
+  void loop(const std::stop_token& stop) {
+    std::mutex m;
+    std::unique_lock wait_lock(m);
+    while (!stop.stop_requested()) {
+      wake_.wait_for(wait_lock, stop, std::chrono::milliseconds(250), [] { return false; });
+      if (stop.stop_requested()) break;
+      std::lock_guard lock(mutex_);
+      const auto now = Clock::now();
+      if (now - begin_ < std::chrono::seconds(1) || now - last_output_ < std::chrono::milliseconds(500)) continue;
+      std::ostringstream line;
+      line << "\r\033[K" << task_ << ": " << stage_ << " ... " << std::fixed << std::setprecision(1)
+           << std::chrono::duration<double>(now - begin_).count() << " s";
+      const std::string s = line.str();
+      [[maybe_unused]] const auto n = ::write(STDERR_FILENO, s.data(), s.size());
+      shown_ = true;
+    }
+  }
+
+  std::mutex mutex_;
+  std::condition_variable_any wake_;
+  std::jthread thread_;
+  std::string task_, stage_;
+  Clock::time_point begin_, last_output_;
+  bool shown_ = false;
+  std::unique_ptr<Routing> cout_, cerr_;
+};
+
+std::string command_path(const CLI::App* cmd) {
+  std::string s;
+  // The root's name is argv[0] (a build path): the tool's own name reads better.
+  for (const CLI::App* a = cmd; a; a = a->get_parent())
+    s = (a->get_parent() ? a->get_name() : std::string("frictionlab")) + (s.empty() ? "" : " " + s);
+  return s;
+}
+
+std::string shell_word(const std::string& s) {
+  if (!s.empty() && s.find_first_of(" \t\n'\"\\$`*?[]{}();&|<>!#~") == std::string::npos) return s;
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// The command line (as given, options in their declared order) and every option with its value
+// or default, for the report.
+ReportInfo report_info(const Result& r, const OutputOptions& o) {
+  ReportInfo info;
+  info.version = kVersion;
+  if (!o.command) {
+    info.title = "frictionlab " + r.method;
+    return info;
+  }
+  info.title = command_path(o.command);
+  std::string line = info.title;
+  for (const CLI::Option* opt : o.command->get_options()) {
+    const std::string name = opt->get_name(false, true);
+    if (name == "--help" || name == "-h" || name.empty()) continue;
+    const bool flag = opt->get_expected_min() == 0 && opt->get_type_size_max() == 0;
+    if (opt->count() > 0) {
+      std::string joined;
+      for (const auto& v : opt->results()) {
+        if (!flag) line += " " + (opt->get_positional() ? "" : name + " ") + shell_word(v);
+        joined += (joined.empty() ? "" : ", ") + v;
+      }
+      if (flag) line += " " + name;
+      info.options.emplace_back(name, flag ? "yes" : joined);
+    } else if (!opt->get_default_str().empty()) {
+      info.options.emplace_back(name, opt->get_default_str() + " (default)");
+    }
+  }
+  info.command_line = line;
+  return info;
+}
+
+std::string caption(const Result& r) {
+  if (r.method == "idim")
+    return "Measured drive force and the force the identified inverse dynamic model reconstructs from position "
+           "(top), and their difference (bottom), on the identification data after filtering and decimation.";
+  if (r.method == "sweep")
+    return "Friction against velocity: the mean of each steady segment with its standard deviation, and the "
+           "fitted law.";
+  if (r.method == "breakaway")
+    return "Applied force and velocity over the experiment; the point marks the breakaway (Fs), the line the "
+           "identified Coulomb level.";
+  if (r.method == "decay")
+    return "Free oscillation with its turning points and the envelope fitted to their half swings.";
+  if (r.method == "validate")
+    return "Measured signals and the simulation of the identified model driven by the same input.";
+  if (r.method == "lugre") return "Measured and simulated position and force of the identified LuGre model.";
+  return "Signals of the result.";
+}
+
+}  // namespace
+
+void progress_start(const std::string& task) { Progress::instance().start(task); }
+void progress_stage(const std::string& stage) { Progress::instance().stage(stage); }
+void progress_stop() { Progress::instance().stop(); }
+
+// ---------------------------------------------------------------------------------------------
+
 void add_output_options(CLI::App* cmd, OutputOptions& o) {
+  o.command = cmd;
   cmd->add_option("--json", o.json, "Write the result as JSON to FILE, or to stdout with '-'")->group("Output");
-  cmd->add_flag("--overwrite", o.overwrite, "Replace existing output files")->group("Output");
+  cmd->add_option("--plot", o.plot,
+                  "Draw the result's figure to FILE (.svg, .png or .pdf, by gnuplot); FILE.dat (data) and FILE.gp "
+                  "(script) are written next to it for restyling")
+      ->group("Output");
+  cmd->add_option("--report", o.report,
+                  "Write a self-contained DIR/report.html (data, options, parameters with std and units, fit, "
+                  "diagnostics, warnings, figures)")
+      ->group("Output");
+  cmd->add_flag("--overwrite", o.overwrite, "Replace existing output files and report files")->group("Output");
+}
+
+void add_plot_option(CLI::App* cmd, std::string& plot) {
+  cmd->add_option("--plot", plot,
+                  "Draw the figure to FILE (.svg, .png or .pdf, by gnuplot); FILE.dat (data) and FILE.gp (script) are "
+                  "written next to it for restyling");
 }
 
 void check_output_path(const std::string& path, bool overwrite, const std::string& option) {
   if (path.empty() || path == "-" || overwrite) return;
   if (std::filesystem::exists(path))
     throw std::invalid_argument(path + " exists (" + option + "); pass --overwrite to replace it");
+}
+
+void check_plot(const std::string& plot, bool overwrite) {
+  if (plot.empty()) return;
+  try {
+    check_figure_path(plot, overwrite);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--plot ") + e.what());
+  }
+  find_gnuplot();
+}
+
+void check_outputs(const OutputOptions& o) {
+  check_output_path(o.json, o.overwrite, "--json");
+  check_plot(o.plot, o.overwrite);
+  if (!o.report.empty()) {
+    try {
+      check_report_dir(o.report, o.overwrite);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("--report ") + e.what());
+    }
+    find_gnuplot();
+  }
+  progress_start(o.command ? command_path(o.command) : "frictionlab");
 }
 
 std::string result_text(const Result& r) {
@@ -52,6 +288,7 @@ std::string result_text(const Result& r) {
 }
 
 int emit(const Result& r, const OutputOptions& o) {
+  progress_stage("writing results");
   // Text goes to stderr when stdout carries the JSON, and always when the data gave no answer.
   std::ostream& text = (o.json == "-" || !r.ok()) ? std::cerr : std::cout;
   text << result_text(r);
@@ -62,6 +299,27 @@ int emit(const Result& r, const OutputOptions& o) {
     w.overwrite = o.overwrite;
     write_file_atomic(o.json, to_json(r) + "\n", w);
   }
+  const std::optional<Figure> figure = r.ok() ? result_figure(r) : std::nullopt;
+  std::ostream& note = o.json == "-" ? std::cerr : std::cout;
+  if (!o.plot.empty()) {
+    if (!r.ok()) {
+      std::cerr << "no figure drawn: the data gave no answer\n";
+    } else if (!figure) {
+      throw std::runtime_error("--plot: the " + r.method + " result carries no signals to draw");
+    } else {
+      progress_stage("drawing " + o.plot);
+      const FigureFiles files = write_figure(*figure, o.plot, o.overwrite);
+      note << "figure " << files.figure << " (data " << files.data << ", gnuplot script " << files.script << ")\n";
+    }
+  }
+  if (!o.report.empty()) {
+    progress_stage("writing report " + o.report);
+    std::vector<ReportFigure> figs;
+    if (figure) figs.push_back({"fit", caption(r), *figure});
+    const std::string page = write_report(r, figs, report_info(r, o), o.report, o.overwrite);
+    note << "report " << page << "\n";
+  }
+  progress_stop();
   return r.ok() ? 0 : 2;
 }
 

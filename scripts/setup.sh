@@ -9,6 +9,7 @@ packages=(
   libyaml-cpp-dev libmatio-dev libssl-dev libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-scipy python3-pytest
   python3-venv python3-pip python3-setuptools python3-wheel gnuplot-nox
+  chromium  # the headless browser of the report test (tests/cli/report_browser.sh)
 )
 packages+=("$@")
 

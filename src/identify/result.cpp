@@ -46,6 +46,11 @@ std::string to_json(const Result& r, int indent) {
                        {"relative_error_percent", number(v.relative_error_percent)},
                        {"rmse", number(v.rmse)},
                        {"samples", v.samples}};
+    if (!v.signal_errors_percent.empty()) {
+      nlohmann::json e = nlohmann::json::object();
+      for (const auto& [name, value] : v.signal_errors_percent) e[name] = number(value);
+      j["validation"]["relative_error_percent"] = e;
+    }
   }
   nlohmann::json d = nlohmann::json::object();
   for (const auto& [key, value] : r.diagnostics.numbers) d[key] = number(value);

@@ -3,17 +3,22 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <initializer_list>
 #include <numbers>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
+#include "frictionlab/io/columns.hpp"
 #include "frictionlab/io/law_file.hpp"
+#include "frictionlab/io/load.hpp"
 #include "frictionlab/plants/axis.hpp"
 #include "frictionlab/plants/closed_loop.hpp"
 #include "frictionlab/plants/dc_motor.hpp"
+#include "frictionlab/plants/emps_pd.hpp"
 #include "frictionlab/plants/pendulum.hpp"
 #include "frictionlab/plants/spring_base.hpp"
 #include "frictionlab/plants/velocity_drive.hpp"
@@ -57,6 +62,7 @@ class Section {
   }
 
   bool has(const std::string& key) const { return static_cast<bool>(node_[key]); }
+  YAML::Node node(const std::string& key) const { return node_[key]; }
 
   double number(const std::string& key) const {
     const YAML::Node v = node_[key];
@@ -106,7 +112,59 @@ auto with_context(const std::string& where, F&& make) {
   }
 }
 
-std::shared_ptr<const Plant> read_plant(const Section& s) {
+// Where data come from while one scenario is read: the caller's data set, or files by name
+// (each read once), resolved from the scenario's directory.
+class DataSource {
+ public:
+  DataSource(const ScenarioOptions& o, std::string default_file) : o_(o), default_file_(std::move(default_file)) {}
+
+  // The data set of a section: options.data, else the section's `file`, else the top-level one.
+  // Null when there is none (the caller decides whether that is an error).
+  std::shared_ptr<const Dataset> get(const std::string& file = "") {
+    if (o_.data) return o_.data;
+    const std::string name = file.empty() ? default_file_ : file;
+    if (name.empty()) return nullptr;
+    std::filesystem::path path(name);
+    if (path.is_relative() && !o_.base_dir.empty()) path = std::filesystem::path(o_.base_dir) / path;
+    auto& slot = cache_[path.string()];
+    if (!slot) slot = std::make_shared<const Dataset>(load_dataset(path.string()));
+    return slot;
+  }
+
+  // A number, or the name of a scalar of the data set (resolve_constant).
+  double constant(const Section& s, const std::string& key, const std::shared_ptr<const Dataset>& d) {
+    const YAML::Node v = s.node(key);
+    if (!v) throw std::invalid_argument(s.path() + ": missing '" + key + "' (a number or a scalar of the data file)");
+    if (!v.IsScalar()) throw std::invalid_argument(s.at(key) + ": expected a number or the name of a scalar of the data file");
+    try {
+      return v.as<double>();
+    } catch (const YAML::Exception&) {
+    }
+    const std::string name = v.as<std::string>();
+    if (!d)
+      throw std::invalid_argument(s.at(key) + ": '" + name +
+                                  "' is not a number, and the scenario names no data file to read a scalar from (top-level 'data')");
+    return with_context(s.at(key), [&] { return resolve_constant(*d, name, key); });
+  }
+
+  std::optional<double> data_step;  // s: step of the data input's grid, when there is one
+  std::string time_column;          // the data input's time column
+
+ private:
+  const ScenarioOptions& o_;
+  std::string default_file_;
+  std::map<std::string, std::shared_ptr<const Dataset>> cache_;
+};
+
+std::shared_ptr<const Plant> read_plant(const Section& s, const ScenarioOptions& o) {
+  if (o.axis) {
+    const std::string type = s.text("type", "axis");
+    if (type != "axis")
+      throw std::invalid_argument(s.at("type") + ": plant type '" + type +
+                                  "' cannot take an identified inertia and offset; expected axis");
+    s.allow({"type", "M", "offset"});
+    return with_context(s.path(), [&] { return std::make_shared<const RigidAxis>(*o.axis); });
+  }
   const std::string type = s.text("type", "");
   if (type.empty())
     throw std::invalid_argument(s.path() + ": missing 'type'; valid plant types: axis, pendulum, spring-base, dc-motor, velocity-drive");
@@ -166,10 +224,30 @@ std::shared_ptr<const Plant> read_plant(const Section& s) {
                               "'; valid plant types: axis, pendulum, spring-base, dc-motor, velocity-drive");
 }
 
-InputSignal read_input(const Section& s) {
+bool read_interpolation(const Section& s) {
+  const std::string interp = s.text("interpolation", "linear");
+  if (interp == "linear") return false;
+  if (interp == "hold") return true;
+  throw std::invalid_argument(s.at("interpolation") + ": unknown interpolation '" + interp + "'; valid: linear, hold");
+}
+
+InputSignal read_input(const Section& s, DataSource& src) {
   InputSignal in;
   const std::string type = s.text("type", "");
-  const char* valid = "constant, step, ramp, trapezoid, sine, table";
+  const char* valid = "constant, step, ramp, trapezoid, sine, table, data";
+  if (type == "data") {
+    s.allow({"type", "file", "column", "time", "scale", "interpolation"});
+    const std::string column = s.text("column", "");
+    if (column.empty()) throw std::invalid_argument(s.path() + ": missing 'column' (the column of the data file to read)");
+    const auto d = src.get(s.text("file", ""));
+    if (!d) throw std::invalid_argument(s.path() + ": no data file: give 'file' here or a top-level 'data'");
+    const double scale = s.number("scale", 1.0);
+    if (!std::isfinite(scale)) throw std::invalid_argument(s.at("scale") + ": " + fmt(scale) + " must be a finite number");
+    in = with_context(s.path(), [&] { return input_from_column(*d, s.text("time", "time"), column, scale, read_interpolation(s)); });
+    src.data_step = in.times.size() > 1 ? in.times[1] - in.times[0] : 0.0;
+    src.time_column = s.text("time", "time");
+    return in;
+  }
   if (type.empty()) throw std::invalid_argument(s.path() + ": missing 'type'; valid input types: " + std::string(valid));
   if (type == "constant") {
     s.allow({"type", "value"});
@@ -220,15 +298,7 @@ InputSignal read_input(const Section& s) {
     in.shape = InputShape::table;
     in.times = s.numbers("times");
     in.values = s.numbers("values");
-    const std::string interp = s.text("interpolation", "linear");
-    if (interp == "linear") {
-      in.hold_steps = false;
-    } else if (interp == "hold") {
-      in.hold_steps = true;
-    } else {
-      throw std::invalid_argument(s.at("interpolation") + ": unknown interpolation '" + interp +
-                                  "'; valid: linear, hold");
-    }
+    in.hold_steps = read_interpolation(s);
   } else {
     throw std::invalid_argument(s.at("type") + ": unknown input type '" + type + "'; valid input types: " + valid);
   }
@@ -236,8 +306,55 @@ InputSignal read_input(const Section& s) {
   return in;
 }
 
+EmpsPdParams read_emps_pd(const Section& s, DataSource& src) {
+  s.allow({"type", "kp", "kv", "gtau", "limit", "dt", "delay", "pulses"});
+  const auto d = src.get();
+  EmpsPdParams p;
+  p.kp = src.constant(s, "kp", d);
+  p.kv = src.constant(s, "kv", d);
+  p.gtau = src.constant(s, "gtau", d);
+  p.limit = s.number("limit", 10.0);
+  if (s.has("dt")) {
+    p.dt = s.number("dt");
+  } else if (src.data_step && *src.data_step > 0) {
+    p.dt = *src.data_step;
+  } else {
+    throw std::invalid_argument(s.path() + ": missing 'dt' (sample period, s); without it the controller takes the step of a data input");
+  }
+  const double delay = s.number("delay", 1.0);
+  if (delay != 0.0 && delay != 1.0) throw std::invalid_argument(s.at("delay") + ": " + fmt(delay) + " must be 0 or 1 (samples)");
+  p.delay = static_cast<int>(delay);
+  if (s.has("pulses")) {
+    std::string column;
+    double scale = 1.0;
+    bool optional = false;
+    const YAML::Node node = s.node("pulses");
+    if (node.IsScalar()) {
+      column = node.as<std::string>();
+    } else {
+      const Section ps(node, s.at("pulses"));
+      ps.allow({"column", "scale", "optional"});
+      column = ps.text("column", "");
+      if (column.empty()) throw std::invalid_argument(ps.path() + ": missing 'column' (pulses in V)");
+      scale = ps.number("scale", 1.0);
+      const std::string opt = ps.text("optional", "false");
+      if (opt != "true" && opt != "false") throw std::invalid_argument(ps.at("optional") + ": expected true or false, got '" + opt + "'");
+      optional = opt == "true";
+    }
+    if (!d) throw std::invalid_argument(s.at("pulses") + ": the scenario names no data file to read column '" + column + "' from");
+    if (d->has_column(column)) {
+      const std::string time = src.time_column.empty() ? "time" : src.time_column;
+      p.pulses = with_context(s.at("pulses"), [&] { return input_from_column(*d, time, column, scale, true); });
+    } else if (!optional) {
+      throw std::invalid_argument(s.at("pulses") + ": " + d->where() + "no column '" + column +
+                                  "'; the file has columns: " + d->describe_contents() + " (set optional: true to run without pulses)");
+    }
+  }
+  return p;
+}
+
 ControllerParams read_controller(const Section& s) {
-  s.allow({"loop", "Kp", "Ki", "Kd", "limit"});
+  s.allow({"type", "loop", "Kp", "Ki", "Kd", "limit"});
   ControllerParams c;
   const std::string loop = s.text("loop", "position");
   if (loop == "position") {
@@ -262,24 +379,55 @@ double positive(const Section& s, const std::string& key, double fallback, const
 
 }  // namespace
 
-Scenario scenario_from_yaml(const YAML::Node& root, const std::string& where) {
+InputSignal input_from_column(const Dataset& data, const std::string& time_column, const std::string& column,
+                              double scale, bool hold) {
+  const Eigen::VectorXd& t = select_column(data, time_column, "time");
+  const Eigen::VectorXd& x = select_column(data, column, "input");
+  const double dt = check_time(data, t);
+  InputSignal in;
+  in.shape = InputShape::table;
+  in.hold_steps = hold;
+  in.times.resize(static_cast<std::size_t>(t.size()));
+  in.values.resize(in.times.size());
+  for (Eigen::Index k = 0; k < t.size(); ++k) {
+    if (!std::isfinite(x[k]))
+      throw std::invalid_argument(data.where() + data.row_label(k) + ", column '" + column + "': value is not a finite number");
+    // k * dt: the same product the engine forms for a sampled controller's instants.
+    in.times[static_cast<std::size_t>(k)] = static_cast<double>(k) * dt;
+    in.values[static_cast<std::size_t>(k)] = scale * x[k];
+  }
+  return in;
+}
+
+Scenario scenario_from_yaml(const YAML::Node& root, const std::string& where, const ScenarioOptions& options) {
   const Section top(root, where);
-  top.allow({"description", "plant", "friction", "input", "controller", "duration", "output_rate", "solver", "initial"});
+  top.allow({"description", "data", "plant", "friction", "input", "controller", "duration", "output_rate", "solver",
+             "initial"});
   auto section = [&](const char* key) {
     if (!top.has(key)) throw std::invalid_argument(where + ": missing '" + key + "'");
     return Section(root[key], where + ": " + key);
   };
+  DataSource src(options, top.text("data", ""));
   Scenario sc;
-  sc.plant = read_plant(section("plant"));
-  sc.law = law_from_yaml(root["friction"], where + ": friction");
+  sc.plant = read_plant(section("plant"), options);
+  sc.law = options.law ? *options.law : law_from_yaml(root["friction"], where + ": friction");
   if (top.has("input")) {
-    sc.input = read_input(section("input"));
+    sc.input = read_input(section("input"), src);
   } else {
     sc.input = InputSignal{};  // constant 0: a free response
   }
   if (top.has("controller")) {
-    const ControllerParams c = read_controller(section("controller"));
-    sc.plant = with_context(where + ": controller", [&] { return std::make_shared<const ClosedLoop>(sc.plant, c); });
+    const Section cs = section("controller");
+    const std::string type = cs.text("type", "pid");
+    if (type == "emps-pd") {
+      const EmpsPdParams p = read_emps_pd(cs, src);
+      sc.plant = with_context(cs.path(), [&] { return std::make_shared<const EmpsPdLoop>(sc.plant, p); });
+    } else if (type == "pid") {
+      const ControllerParams c = read_controller(cs);
+      sc.plant = with_context(where + ": controller", [&] { return std::make_shared<const ClosedLoop>(sc.plant, c); });
+    } else {
+      throw std::invalid_argument(cs.at("type") + ": unknown controller type '" + type + "'; valid: pid, emps-pd");
+    }
   }
   // Top-level values: messages as "FILE: duration: ..." to match the key path style.
   SimulationOptions& o = sc.options;
@@ -293,7 +441,8 @@ Scenario scenario_from_yaml(const YAML::Node& root, const std::string& where) {
     if (!(std::isfinite(v) && v > 0)) throw std::invalid_argument(top_key(key) + ": " + fmt(v) + " must be > 0 (" + unit + ")");
     return v;
   };
-  o.duration = top_positive("duration", 0.0, "s", true);
+  const bool data_input = src.data_step.has_value();
+  o.duration = top_positive("duration", data_input ? sc.input.times.back() : 0.0, "s", !data_input);
   o.output_rate = top_positive("output_rate", 100.0, "Hz", false);
   if (top.has("solver")) {
     const Section s = section("solver");
@@ -324,13 +473,31 @@ Scenario scenario_from_yaml(const YAML::Node& root, const std::string& where) {
   if (top.has("initial")) {
     const Section s = section("initial");
     s.allow({"position", "velocity"});
-    o.initial_position = s.number("position", 0.0);
+    const YAML::Node pos = s.node("position");
+    bool is_number = true;
+    if (pos && pos.IsScalar()) {
+      try {
+        (void)pos.as<double>();
+      } catch (const YAML::Exception&) {
+        is_number = false;
+      }
+    }
+    if (!is_number) {  // a column of the data file: its first sample
+      const auto d = src.get();
+      const std::string name = pos.as<std::string>();
+      if (!d) throw std::invalid_argument(s.at("position") + ": '" + name + "' is not a number, and the scenario names no data file");
+      const Eigen::VectorXd& q = with_context(s.at("position"), [&]() -> const Eigen::VectorXd& { return select_column(*d, name, "initial position"); });
+      if (q.size() == 0) throw std::invalid_argument(s.at("position") + ": column '" + name + "' is empty");
+      o.initial_position = q[0];
+    } else {
+      o.initial_position = s.number("position", 0.0);
+    }
     o.initial_velocity = s.number("velocity", 0.0);
   }
   return sc;
 }
 
-Scenario load_scenario(const std::string& path) {
+Scenario load_scenario(const std::string& path, const ScenarioOptions& options) {
   std::ifstream file(path);
   if (!file) throw std::invalid_argument(path + ": cannot open the scenario file");
   YAML::Node root;
@@ -341,7 +508,9 @@ Scenario load_scenario(const std::string& path) {
                                 std::to_string(e.mark.column + 1) + ": " + e.msg);
   }
   if (!root || root.IsNull()) throw std::invalid_argument(path + ": empty scenario file");
-  return scenario_from_yaml(root, path);
+  ScenarioOptions o = options;
+  if (o.base_dir.empty()) o.base_dir = std::filesystem::path(path).parent_path().string();
+  return scenario_from_yaml(root, path, o);
 }
 
 }  // namespace frictionlab

@@ -37,6 +37,8 @@ PlantSignals Plant::signals(double, std::span<const double>, const InputValue& u
   return {0.0, 0.0, u.value};
 }
 
+void Plant::sample(double, std::span<double>, const InputValue&) const {}
+
 // ---- rigid axis -------------------------------------------------------------------------------
 
 RigidAxis::RigidAxis(AxisParams p) : p_(p) {

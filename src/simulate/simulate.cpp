@@ -108,6 +108,7 @@ class Engine {
     row_.assign(static_cast<std::size_t>(n_), 0.0);
     // Hybrid modes only where stiction exists and the velocity is not imposed.
     hybrid_ = mode == SolverMode::hybrid && has_stiction(law) && !plant.kinematic();
+    sample_period_ = plant.sample_period();
   }
 
   Trajectory run() {
@@ -337,6 +338,7 @@ class Engine {
     }
 
     mode_now_ = Mode::free;
+    if (sample_period_ > 0) plant_.sample(0.0, std::span<double>(y, static_cast<std::size_t>(np_)), input_.at(0.0));
     if (hybrid_) {
       if (o_.initial_velocity > 0) {
         mode_now_ = Mode::slide_pos;
@@ -367,7 +369,10 @@ class Engine {
       CVodeSetNoInactiveRootWarn(sd_.mem);
     }
 
-    const std::vector<double> corners = input_.breakpoints(0.0, o_.duration);
+    // Corners of the input and, for a sampled controller, its sample instants k Ts (flagged).
+    std::vector<double> corners;
+    std::vector<char> is_sample;
+    merge_corners(corners, is_sample);
     std::size_t next_corner = 0;
     const double rate = o_.output_rate;
     auto close = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); };
@@ -379,7 +384,15 @@ class Engine {
     for (std::size_t k = 1; k < rows; ++k) {
       double tout = std::min(static_cast<double>(k) / rate, o_.duration);
       while (!close(t, tout)) {
-        while (next_corner < corners.size() && corners[next_corner] <= t + 1e-12 * std::max(1.0, t)) ++next_corner;
+        // Corners already behind t are skipped, but a sample instant never is (a root located
+        // within rounding of it must not swallow the controller update).
+        while (next_corner < corners.size() && corners[next_corner] <= t + 1e-12 * std::max(1.0, t)) {
+          if (is_sample[next_corner]) {
+            take_sample(tr, corners[next_corner], y);
+            restart(t);
+          }
+          ++next_corner;
+        }
         const double tstop = next_corner < corners.size() ? corners[next_corner] : o_.duration;
         if (tstop != stop_set_) {
           CVodeSetStopTime(sd_.mem, tstop);
@@ -406,8 +419,14 @@ class Engine {
           // At a corner of the input (reached as a stop time, or as an output time that coincides
           // with it): restart from the exact state; an input jump may break a stuck body loose.
           if (next_corner < corners.size() && close(t, corners[next_corner])) {
+            const bool sample_now = is_sample[next_corner] != 0;
+            const double t_corner = corners[next_corner];  // exact: t may be an output time rounded apart
             ++next_corner;
-            if (mode_now_ == Mode::stuck) settle_at_rest(tr, t, y, true, 0);
+            if (sample_now) {
+              take_sample(tr, t_corner, y);
+            } else if (mode_now_ == Mode::stuck) {
+              settle_at_rest(tr, t, y, true, 0);
+            }
             restart(t);
           }
         }
@@ -418,6 +437,41 @@ class Engine {
     tr.stats.steps = steps_;
     tr.stats.rhs_evaluations = rhs_evals_;
     tr.stats.restarts = restarts_;
+  }
+
+  // Input corners in (0, duration) and sample instants k Ts (k >= 1) of a sampled controller, in
+  // time order; equal times (as the table of a data input sampled on the same grid) merge.
+  void merge_corners(std::vector<double>& corners, std::vector<char>& is_sample) const {
+    std::vector<std::pair<double, char>> all;
+    for (double c : input_.breakpoints(0.0, o_.duration)) all.emplace_back(c, 0);
+    if (sample_period_ > 0) {
+      for (long k = 1;; ++k) {
+        const double ts = static_cast<double>(k) * sample_period_;  // same product as a table built as k * dt
+        // The instant at the end is included, so the last output row has its controller update.
+        if (!(ts <= o_.duration * (1.0 + 1e-12))) break;
+        all.emplace_back(ts, 1);
+      }
+    }
+    std::sort(all.begin(), all.end());
+    for (const auto& [time, flag] : all) {
+      if (!corners.empty() && std::abs(corners.back() - time) <= 1e-12 * std::max(1.0, time)) {
+        is_sample.back() = static_cast<char>(is_sample.back() | flag);
+      } else {
+        corners.push_back(time);
+        is_sample.push_back(flag);
+      }
+    }
+  }
+
+  // The controller update at the sample instant t = k Ts (exactly that product, so a data input
+  // tabulated at k dt gives its sample k); a stuck body may break loose under the new output.
+  void take_sample(Trajectory& tr, double t, double* y) {
+    if (mode_now_ == Mode::stuck) {
+      y[0] = stuck_position_;
+      y[1] = 0.0;
+    }
+    plant_.sample(t, std::span<double>(y, static_cast<std::size_t>(np_)), input_.at(t));
+    if (mode_now_ == Mode::stuck) settle_at_rest(tr, t, y, true, 0);
   }
 
   void handle_root(Trajectory& tr, double t, double* y) {
@@ -448,11 +502,20 @@ class Engine {
     x[0] = o_.initial_position;
     x[1] = plant_.kinematic() ? input_.at(0.0).value : o_.initial_velocity;
     mode_now_ = Mode::free;
+    long per_sample = 0;  // steps per controller sample (sampled plants)
+    if (sample_period_ > 0) {
+      const double ratio = sample_period_ / dt;
+      per_sample = std::lround(ratio);
+      if (per_sample < 1 || std::abs(ratio - static_cast<double>(per_sample)) > 1e-6 * ratio)
+        throw std::invalid_argument("simulation option dt = " + fmt(dt) + " s must divide the controller's sample period " +
+                                    fmt(sample_period_) + " s a whole number of times");
+      plant_.sample(0.0, x, input_.at(0.0));
+    }
     long step = 0;
     for (std::size_t k = 0; k < rows; ++k) {
       // Advance to the row's step count, then record the state there.
       const long target = static_cast<long>(k) * per_row;
-      for (; step < target; ++step) {
+      for (; step < target;) {
         const double t = static_cast<double>(step) * dt;
         const InputValue in = input_.at(t);
         if (plant_.kinematic()) x[1] = in.value;
@@ -472,6 +535,11 @@ class Engine {
           x[0] += dt * x[1];
         }
         for (int i = 2; i < np_; ++i) x[static_cast<std::size_t>(i)] += dt * dx[static_cast<std::size_t>(i)];
+        ++step;
+        if (per_sample > 0 && step % per_sample == 0) {
+          const double ts = static_cast<double>(step / per_sample) * sample_period_;
+          plant_.sample(ts, x, input_.at(ts));
+        }
       }
       const double t = static_cast<double>(step) * dt;
       const InputValue in = input_.at(t);
@@ -508,6 +576,7 @@ class Engine {
   int np_ = 2, nz_ = 0, n_ = 2;
   double fbp_ = 0.0, fbn_ = 0.0;
   bool hybrid_ = false;
+  double sample_period_ = 0.0;  // s; > 0 for a plant with a sampled controller
   Mode mode_now_ = Mode::free;
   double stuck_position_ = 0.0;
   std::vector<double> scratch_, row_;

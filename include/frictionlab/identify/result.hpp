@@ -36,6 +36,10 @@ struct ValidationFigures {
   double relative_error_percent = std::numeric_limits<double>::quiet_NaN();
   double rmse = std::numeric_limits<double>::quiet_NaN();
   std::size_t samples = 0;
+  /// Per-signal relative errors (%), e.g. "position", "velocity", "acceleration", "force" of
+  /// `frictionlab validate`. When not empty, JSON "relative_error_percent" is this object
+  /// instead of the single number above.
+  std::map<std::string, double> signal_errors_percent;
 };
 
 /// Numerical health of an identification.

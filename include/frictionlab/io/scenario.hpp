@@ -5,7 +5,9 @@
 //   plant:      {type: axis|pendulum|spring-base|dc-motor|velocity-drive, ...parameters}
 //   friction:   {law: NAME, ...parameters}          # the law YAML form of io/law_file.hpp
 //   input:      {type: constant|step|ramp|trapezoid|sine|table, ...}
-//   controller: {loop: position|velocity, Kp, Ki, Kd, limit}   # optional
+//   controller: {loop: position|velocity, Kp, Ki, Kd, limit}   # optional, continuous P/PI/PD/PID
+//   controller: {type: emps-pd, kp, kv, gtau, limit (10 V), dt, delay (1), pulses}  # EMPS loop
+//   data: FILE              # optional: data file of `data` inputs, named constants, pulses
 //   duration: 30            # s, > 0 (required)
 //   output_rate: 100        # Hz, > 0 (default 100)
 //   solver: {mode: auto|hybrid|stiff|fixed-step, rtol, atol, dt, max_step}   # optional
@@ -18,10 +20,27 @@
 // Inputs: constant: value; step: value, initial (0), time (0); ramp: rate, initial (0), time (0),
 // limit (none); trapezoid: level, rate, hold (0), rate_down (= rate), initial (0), time (0);
 // sine: amplitude, omega (rad/s) or frequency (Hz), phase (0, rad), offset (0);
-// table: times, values, interpolation: linear|hold (linear).
+// table: times, values, interpolation: linear|hold (linear);
+// data: column (required), time (column name, default "time"), file (default: the top-level
+// `data`), scale (1), interpolation: linear|hold (linear). The samples are placed on a regular
+// grid t_k = k dt from t = 0 s, dt the mean step of the time column (checked regular within 1 %),
+// so that a sampled controller with the same dt reads sample k exactly at its instant k.
+// Without `duration`, a data input sets it to the data's span (N - 1) dt.
+//
+// emps-pd (plants/emps_pd.hpp): kp (1/s), kv (V/(m/s)), gtau (N/V) each a number or the name of
+// a scalar of the data file; limit (V, 10); dt (s; default the data input's step); delay (0|1,
+// default 1); pulses: COLUMN, or {column, scale (1), optional (false)}: volts added to the
+// saturated output, read from the data file on the same grid (optional: none when absent).
+// initial.position may name a column of the data file: its first sample (m).
+// Relative file names are resolved from the scenario file's directory.
+
+#include <memory>
+#include <optional>
 
 #include <string>
 
+#include "frictionlab/io/dataset.hpp"
+#include "frictionlab/plants/axis.hpp"
 #include "frictionlab/simulate/scenario.hpp"
 
 namespace YAML {
@@ -30,14 +49,39 @@ class Node;
 
 namespace frictionlab {
 
-/// Reads a scenario from a parsed YAML mapping. `where` prefixes every message (the file name).
-/// \throws std::invalid_argument "WHERE: KEY.PATH: ..." for an unknown plant/law/input type or
-///         field (listing the valid ones), a missing required field (naming it), a value that is
-///         not a number, or a non-positive duration, output rate, tolerance or step (with its value).
-Scenario scenario_from_yaml(const YAML::Node& root, const std::string& where);
+/// What the caller supplies or replaces when reading a scenario (frictionlab validate: the
+/// measured data set, and the identified law, inertia and offset).
+struct ScenarioOptions {
+  /// Data set for every `data` input, named constant and pulses column; replaces the files the
+  /// scenario names (top-level `data`, input `file`). Null: read the named files.
+  std::shared_ptr<const Dataset> data;
+  /// Replaces the `friction` section (which may then be absent).
+  std::optional<FrictionLaw> law;
+  /// Replaces M (kg or kg m^2) and offset (N or N m) of the plant, which must then be an axis
+  /// (`M` may then be absent in the file).
+  std::optional<AxisParams> axis;
+  /// Directory relative file names are resolved from; empty = the working directory.
+  std::string base_dir;
+};
 
-/// Reads a scenario file. \throws std::invalid_argument naming the file when it cannot be read
+/// Reads a scenario from a parsed YAML mapping. `where` prefixes every message (the file name).
+/// \throws std::invalid_argument "WHERE: KEY.PATH: ..." for an unknown plant/law/input/controller
+///         type or field (listing the valid ones), a missing required field (naming it), a value
+///         that is not a number, a non-positive duration, output rate, tolerance or step (with its
+///         value), a data file that cannot be read, or a column or scalar it lacks (listing the
+///         ones it has).
+Scenario scenario_from_yaml(const YAML::Node& root, const std::string& where, const ScenarioOptions& options = {});
+
+/// Reads a scenario file; relative data files are resolved from its directory unless
+/// options.base_dir is set. \throws std::invalid_argument naming the file when it cannot be read
 /// or is not valid YAML (with line and column), and what scenario_from_yaml throws.
-Scenario load_scenario(const std::string& path);
+Scenario load_scenario(const std::string& path, const ScenarioOptions& options = {});
+
+/// A column of a data set as a table input: values * scale at t_k = k dt (s), dt the mean step of
+/// `time_column` (checked finite, increasing and regular within 1 %). `hold`: piecewise constant.
+/// \throws std::invalid_argument naming the file and the missing column (listing the columns)
+///         or the offending time sample.
+InputSignal input_from_column(const Dataset& data, const std::string& time_column, const std::string& column,
+                              double scale = 1.0, bool hold = false);
 
 }  // namespace frictionlab

@@ -51,6 +51,17 @@ class Plant {
 
   /// Current, voltage and reference at (t, x, u).
   virtual PlantSignals signals(double t, std::span<const double> x, const InputValue& u) const;
+
+  /// Sample period (s) of a discrete controller inside the plant (EmpsPdLoop); 0 = none, the
+  /// plant is purely continuous (default). With a period Ts > 0 the engine stops at every
+  /// t = k Ts (k = 0, 1, ...), calls sample() there, and restarts its integrator from the
+  /// updated state, so the held controller output is piecewise constant (zero-order hold).
+  virtual double sample_period() const { return 0.0; }
+
+  /// The discrete update at a sample instant t (s): may rewrite the plant's discrete states in
+  /// x[2..] (controller memory, held output; their derivatives are 0 between samples), never
+  /// x[0] or x[1]. `u` is the input (reference) at t. Default: nothing.
+  virtual void sample(double t, std::span<double> x, const InputValue& u) const;
 };
 
 }  // namespace frictionlab

@@ -1,0 +1,380 @@
+#include "figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <filesystem>
+#include <string_view>
+
+namespace frictionlab::cli {
+namespace {
+
+std::string label(std::string_view quantity, Quantity q, Axis axis) {
+  return std::string(quantity) + " (" + std::string(unit(q, axis)) + ")";
+}
+
+std::string force_name(Axis axis) { return axis == Axis::rotary ? "torque" : "force"; }
+
+const std::vector<double>* find(const Result& r, const std::string& name) {
+  const auto it = r.series.find(name);
+  return it == r.series.end() || it->second.empty() ? nullptr : &it->second;
+}
+
+FigureSeries series(std::string name, std::vector<double> x, std::vector<double> y,
+                    SeriesStyle style = SeriesStyle::lines, std::string color = {}) {
+  FigureSeries s;
+  s.name = std::move(name);
+  const std::size_t n = std::min(x.size(), y.size());
+  x.resize(n);
+  y.resize(n);
+  s.x = std::move(x);
+  s.y = std::move(y);
+  s.style = style;
+  s.color = std::move(color);
+  return s;
+}
+
+FigurePanel time_panel(std::string y_label, bool zero_line = true) {
+  FigurePanel p;
+  p.x_label = "time (s)";
+  p.y_label = std::move(y_label);
+  p.zero_line = zero_line;
+  p.tight_x = true;
+  return p;
+}
+
+std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+std::string title_for(const Result& r, const std::string& what) {
+  return what + (r.data_file.empty() ? "" : " - " + file_name(r.data_file));
+}
+
+double parameter(const Result& r, const std::string& name) {
+  const ParameterEstimate* p = r.find(name);
+  return p ? p->value : std::numeric_limits<double>::quiet_NaN();
+}
+
+// Value of one fitted envelope model at time t (s). decay_envelope fits the linear model in
+// absolute time and the exponential ones in time since the first peak time.
+double fit_at(const EnvelopeResult& e, const EnvelopeFit& f, bool linear, double t) {
+  if (linear) return f.q + f.slope * t;
+  const double t0 = e.peak_times.empty() ? 0.0 : e.peak_times.front();
+  return f.p * std::exp(-f.lambda * (t - t0)) + f.q;
+}
+
+// The chosen envelope model at time t.
+double envelope_at(const EnvelopeResult& e, double t) {
+  switch (e.kind) {
+    case DecayKind::linear: return fit_at(e, e.linear, true, t);
+    case DecayKind::exponential: return fit_at(e, e.exponential, false, t);
+    case DecayKind::mixed: return fit_at(e, e.mixed, false, t);
+    case DecayKind::none: break;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+std::string kind_words(DecayKind k) {
+  switch (k) {
+    case DecayKind::linear: return "linear (Coulomb)";
+    case DecayKind::exponential: return "exponential (viscous)";
+    case DecayKind::mixed: return "mixed (Coulomb + viscous)";
+    case DecayKind::none: break;
+  }
+  return "none";
+}
+
+// The position signal with its turning points and the fitted envelope drawn as +-A(t) about the
+// centre of the oscillation (the mean of the midpoints of consecutive turning points).
+FigurePanel position_with_envelope(std::span<const double> t, std::span<const double> x,
+                                   const std::vector<double>& peak_t, const std::vector<double>& peak_x,
+                                   const std::optional<EnvelopeResult>& env, const std::string& y_label) {
+  FigurePanel p = time_panel(y_label);
+  p.series.push_back(series("measured", {t.begin(), t.end()}, {x.begin(), x.end()}, SeriesStyle::lines, "#0072b2"));
+  if (!peak_t.empty()) p.series.push_back(series("turning points", peak_t, peak_x, SeriesStyle::points, "#d55e00"));
+  if (env && env->kind != DecayKind::none && !t.empty() && !env->peak_times.empty()) {
+    double centre = 0;
+    if (peak_x.size() >= 2) {
+      for (std::size_t i = 1; i < peak_x.size(); ++i) centre += 0.5 * (peak_x[i] + peak_x[i - 1]);
+      centre /= static_cast<double>(peak_x.size() - 1);
+    }
+    const double t0 = t.front(), t1 = env->peak_times.back();
+    std::vector<double> tt, up, lo;
+    constexpr int kPoints = 300;
+    for (int i = 0; i < kPoints; ++i) {
+      const double ti = t0 + (t1 - t0) * i / (kPoints - 1);
+      // A fitted half swing at t_k is the mean of the swings ending at t_(k-1) and t_k: the
+      // amplitude of the signal half a half period earlier.
+      const double a = std::max(0.0, envelope_at(*env, ti + 0.5 * env->half_period));
+      tt.push_back(ti);
+      up.push_back(centre + a);
+      lo.push_back(centre - a);
+    }
+    p.series.push_back(series("fitted envelope: " + kind_words(env->kind), tt, up, SeriesStyle::lines, "#009e73"));
+    p.series.push_back(series("", tt, lo, SeriesStyle::lines, "#009e73"));
+  }
+  return p;
+}
+
+Figure idim_figure(const Result& r) {
+  Figure f;
+  f.title = title_for(r, "IDIM least squares: measured and reconstructed " + force_name(result_axis(r)));
+  const Axis axis = result_axis(r);
+  const auto *t = find(r, "time"), *y = find(r, "force"), *m = find(r, "force_model");
+  if (!t || !y) return f;
+  FigurePanel p = time_panel(label("drive " + force_name(axis), Quantity::force, axis));
+  p.series.push_back(series("measured", *t, *y, SeriesStyle::lines, "#0072b2"));
+  if (m) p.series.push_back(series("model (M a + friction + offset)", *t, *m, SeriesStyle::lines, "#d55e00"));
+  f.panels.push_back(p);
+  if (m) {
+    std::vector<double> e(std::min(y->size(), m->size()));
+    for (std::size_t i = 0; i < e.size(); ++i) e[i] = (*y)[i] - (*m)[i];
+    FigurePanel q = time_panel(label("residual", Quantity::force, axis));
+    q.series.push_back(series("measured - model", *t, e, SeriesStyle::lines, "#555555"));
+    f.panels.push_back(q);
+  }
+  return f;
+}
+
+Figure sweep_figure(const Result& r) {
+  const Axis axis = result_axis(r);
+  Figure f;
+  f.title = title_for(r, "Friction map: steady segments and the fitted " + r.model + " law");
+  f.panel_height = 520;
+  FigurePanel p;
+  p.x_label = label("velocity", Quantity::velocity, axis);
+  p.y_label = label("friction " + force_name(axis), Quantity::force, axis);
+  p.zero_line = true;
+  p.key = "top left";
+  if (const auto *v = find(r, "velocity"), *F = find(r, "force"); v && F) {
+    FigureSeries s = series("steady segments (mean +- std)", *v, *F, SeriesStyle::errorbars, "#0072b2");
+    if (const auto* sd = find(r, "force_std"); sd && sd->size() == s.y.size()) s.y_error = *sd;
+    else s.y_error.assign(s.y.size(), 0.0);
+    p.series.push_back(s);
+  }
+  if (const auto *v = find(r, "law_velocity"), *F = find(r, "law_force"); v && F) {
+    // The law is discontinuous at v = 0: a gap there, not a vertical line through the origin.
+    FigureSeries s = series("fitted " + r.model + " law", {}, {}, SeriesStyle::lines, "#d55e00");
+    for (std::size_t i = 0; i < std::min(v->size(), F->size()); ++i) {
+      if (i > 0 && ((*v)[i - 1] < 0) != ((*v)[i] < 0)) {
+        s.x.push_back(std::numeric_limits<double>::quiet_NaN());
+        s.y.push_back(std::numeric_limits<double>::quiet_NaN());
+      }
+      s.x.push_back((*v)[i]);
+      s.y.push_back((*F)[i]);
+    }
+    p.series.push_back(s);
+  }
+  f.panels.push_back(p);
+  return f;
+}
+
+Figure breakaway_figure(const Result& r) {
+  const Axis axis = result_axis(r);
+  Figure f;
+  f.title = title_for(r, "Breakaway experiment: applied " + force_name(axis) + " and velocity");
+  const auto *t = find(r, "time"), *F = find(r, "force"), *v = find(r, "velocity");
+  if (!t) return f;
+  if (F) {
+    FigurePanel p = time_panel(label("applied " + force_name(axis), Quantity::force, axis));
+    p.key = "top left";
+    p.series.push_back(series("applied", *t, *F, SeriesStyle::lines, "#0072b2"));
+    const auto tb = r.diagnostics.numbers.find("breakaway_time");
+    const double Fs = parameter(r, "Fs"), Fc = parameter(r, "Fc");
+    if (tb != r.diagnostics.numbers.end() && std::isfinite(Fs))
+      p.series.push_back(series("breakaway (Fs)", {tb->second}, {Fs}, SeriesStyle::points, "#d55e00"));
+    if (std::isfinite(Fc))
+      p.series.push_back(series("Coulomb level Fc", {t->front(), t->back()}, {Fc, Fc}, SeriesStyle::lines, "#009e73"));
+    f.panels.push_back(p);
+  }
+  if (v) {
+    FigurePanel p = time_panel(label("velocity", Quantity::velocity, axis));
+    p.key = "top left";
+    p.series.push_back(series("measured", *t, *v, SeriesStyle::lines, "#0072b2"));
+    f.panels.push_back(p);
+  }
+  return f;
+}
+
+Figure decay_figure(const Result& r) {
+  const Axis axis = result_axis(r);
+  Figure f;
+  f.title = title_for(r, "Free decay: turning points and the fitted envelope");
+  const auto *t = find(r, "time"), *x = find(r, "position");
+  if (!t || !x) return f;
+  std::optional<EnvelopeResult> env;
+  try {
+    env = decay_envelope(*t, *x);
+  } catch (const std::invalid_argument&) {  // too few swings for an envelope: the signal alone
+  }
+  const auto* pt = find(r, "peak_time");
+  const auto* px = find(r, "peak_position");
+  f.panels.push_back(position_with_envelope(*t, *x, pt ? *pt : std::vector<double>{}, px ? *px : std::vector<double>{},
+                                            env, label("position", Quantity::displacement, axis)));
+  return f;
+}
+
+// Measured against simulated, one panel per signal that has both (or at least the measurement).
+Figure compare_figure(const Result& r, const std::string& what) {
+  const Axis axis = result_axis(r);
+  Figure f;
+  f.title = title_for(r, what);
+  const auto* t = find(r, "time");
+  if (!t) return f;
+  struct Signal {
+    const char* name;
+    std::string label;
+  };
+  const Signal signals[] = {{"position", label("position", Quantity::displacement, axis)},
+                            {"velocity", label("velocity", Quantity::velocity, axis)},
+                            {"force", label((r.method == "lugre" ? "applied " : "drive ") + force_name(axis),
+                                            Quantity::force, axis)}};
+  for (const auto& s : signals) {
+    const auto* meas = find(r, s.name);
+    const auto* sim = find(r, std::string(s.name) + "_sim");
+    if (!meas && !sim) continue;
+    FigurePanel p = time_panel(s.label);
+    if (meas) p.series.push_back(series("measured", *t, *meas, SeriesStyle::lines, "#0072b2"));
+    if (sim) p.series.push_back(series("simulated", *t, *sim, SeriesStyle::lines, "#d55e00"));
+    f.panels.push_back(p);
+  }
+  return f;
+}
+
+}  // namespace
+
+Axis result_axis(const Result& r) {
+  for (const auto& p : r.parameters)
+    if (p.unit.find("rad") != std::string::npos || p.unit.find("N m") != std::string::npos ||
+        p.unit.find("kg m^2") != std::string::npos)
+      return Axis::rotary;
+  return Axis::linear;
+}
+
+std::optional<Figure> result_figure(const Result& r) {
+  Figure f;
+  if (r.method == "idim") f = idim_figure(r);
+  else if (r.method == "sweep") f = sweep_figure(r);
+  else if (r.method == "breakaway") f = breakaway_figure(r);
+  else if (r.method == "decay") f = decay_figure(r);
+  else if (r.method == "validate") f = compare_figure(r, "Validation: measured and simulated");
+  else if (r.method == "lugre") f = compare_figure(r, "LuGre identification: measured and simulated");
+  else f = compare_figure(r, r.method);
+  bool any = false;
+  for (const auto& p : f.panels)
+    for (const auto& s : p.series) any = any || !s.x.empty();
+  if (!any) return std::nullopt;
+  return f;
+}
+
+Figure trajectory_figure(const Trajectory& tr, Axis axis, const std::string& title) {
+  Figure f;
+  f.title = "Simulation - " + title;
+  f.panel_height = 300;
+  FigurePanel pos = time_panel(label("position", Quantity::displacement, axis));
+  pos.series.push_back(series("position", tr.position.empty() ? std::vector<double>{} : tr.time, tr.position,
+                              SeriesStyle::lines, "#0072b2"));
+  FigurePanel vel = time_panel(label("velocity", Quantity::velocity, axis));
+  vel.series.push_back(series("velocity", tr.time, tr.velocity, SeriesStyle::lines, "#0072b2"));
+  FigurePanel force = time_panel(label(force_name(axis), Quantity::force, axis));
+  force.series.push_back(series("applied (net non-friction)", tr.time, tr.applied, SeriesStyle::lines, "#0072b2"));
+  force.series.push_back(series("friction", tr.time, tr.friction, SeriesStyle::lines, "#d55e00"));
+  f.panels = {pos, vel, force};
+  const bool motor = std::any_of(tr.current.begin(), tr.current.end(), [](double c) { return c != 0.0; });
+  if (motor) {
+    FigurePanel cur = time_panel("current (A)");
+    cur.series.push_back(series("motor current", tr.time, tr.current, SeriesStyle::lines, "#009e73"));
+    f.panels.push_back(cur);
+  }
+  return f;
+}
+
+Figure envelope_figure(std::span<const double> t, std::span<const double> x, const EnvelopeResult& r,
+                       const std::string& title) {
+  Figure f;
+  f.title = "Decay envelope - " + title;
+  // The extremes: the first sample's turning point is not in peak_times; the signal value at
+  // each peak time is interpolated from the record.
+  std::vector<double> pt, px;
+  for (double tp : r.peak_times) {
+    const auto it = std::lower_bound(t.begin(), t.end(), tp);
+    if (it == t.end()) continue;
+    const std::size_t i = static_cast<std::size_t>(it - t.begin());
+    double xi = x[i];
+    if (i > 0 && t[i] != tp) xi = x[i - 1] + (x[i] - x[i - 1]) * (tp - t[i - 1]) / (t[i] - t[i - 1]);
+    pt.push_back(tp);
+    px.push_back(xi);
+  }
+  f.panels.push_back(position_with_envelope(t, x, pt, px, r, "position (m or rad)"));
+  FigurePanel a;
+  a.x_label = "time (s)";
+  a.y_label = "half-swing amplitude (m or rad)";
+  a.key = "top right";
+  a.series.push_back(series("half swings", r.peak_times, r.amplitudes, SeriesStyle::points, "#0072b2"));
+  if (!r.peak_times.empty()) {
+    const double t0 = r.peak_times.front(), t1 = r.peak_times.back();
+    auto curve = [&](const EnvelopeFit& fit, bool linear, const std::string& name, const char* color) {
+      std::vector<double> tt, yy;
+      for (int i = 0; i < 200; ++i) {
+        const double ti = t0 + (t1 - t0) * i / 199.0;
+        tt.push_back(ti);
+        yy.push_back(fit_at(r, fit, linear, ti));
+      }
+      char rms[32];
+      std::snprintf(rms, sizeof rms, "%.2g", 100 * fit.relative_rms);
+      a.series.push_back(series(name + " (rms " + rms + " %)", tt, yy, SeriesStyle::lines, color));
+    };
+    curve(r.linear, true, "linear fit", "#d55e00");
+    curve(r.exponential, false, "exponential fit", "#009e73");
+    curve(r.mixed, false, "mixed fit", "#cc79a7");
+  }
+  a.title = "chosen: " + kind_words(r.kind);
+  f.panels.push_back(a);
+  return f;
+}
+
+Figure stick_slip_figure(std::span<const double> t, std::span<const double> v, std::span<const double> force,
+                         const StickSlipResult& r, const std::string& title) {
+  Figure f;
+  f.title = "Stick-slip - " + title;
+  FigurePanel vel = time_panel("velocity (m/s or rad/s)");
+  vel.key = "top left";  // stick-slip records start stuck: the upper left corner is free
+  vel.series.push_back(series("velocity", {t.begin(), t.end()}, {v.begin(), v.end()}, SeriesStyle::lines, "#0072b2"));
+  if (r.velocity_threshold > 0 && !t.empty()) {
+    char band[48];
+    std::snprintf(band, sizeof band, "stuck band |v| <= %.3g", r.velocity_threshold);
+    vel.series.push_back(series(band,
+                                {t.front(), t.back()}, {r.velocity_threshold, r.velocity_threshold},
+                                SeriesStyle::lines, "#999999"));
+    vel.series.push_back(series("", {t.front(), t.back()}, {-r.velocity_threshold, -r.velocity_threshold},
+                                SeriesStyle::lines, "#999999"));
+  }
+  std::vector<double> starts, zeros;
+  for (const auto& s : r.slip) {
+    starts.push_back(s.start);
+    zeros.push_back(0.0);
+  }
+  vel.series.push_back(series("slip starts", starts, zeros, SeriesStyle::points, "#d55e00"));
+  f.panels.push_back(vel);
+  if (!force.empty() && !t.empty()) {
+    FigurePanel fp = time_panel("friction force (N or N m)");
+    fp.key = "top left";
+    fp.series.push_back(series("friction", {t.begin(), t.end()}, {force.begin(), force.end()}, SeriesStyle::lines,
+                               "#0072b2"));
+    // Complete slips (started after the record's start, ended before its end) carry the forces.
+    std::vector<double> tb, tr;
+    for (const auto& s : r.slip)
+      if (s.start > t.front() && s.end < t.back()) {
+        tb.push_back(s.start);
+        tr.push_back(s.end);
+      }
+    if (tb.size() == r.breakaway_force.size()) {
+      fp.series.push_back(series("breakaway", tb, r.breakaway_force, SeriesStyle::points, "#d55e00"));
+      fp.series.push_back(series("re-stick", tr, r.restick_force, SeriesStyle::points, "#009e73"));
+    }
+    f.panels.push_back(fp);
+  }
+  return f;
+}
+
+}  // namespace frictionlab::cli

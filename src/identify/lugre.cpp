@@ -1,0 +1,540 @@
+#include "frictionlab/identify/lugre.hpp"
+
+#include <ceres/ceres.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "frictionlab/identify/static_fit.hpp"
+#include "frictionlab/models/scalar.hpp"
+#include "frictionlab/signal/differentiate.hpp"
+#include "method_support.hpp"
+
+namespace frictionlab {
+using namespace detail;
+namespace {
+
+// Parameter blocks of the output-error fit. Dynamic: [log sigma0, log sigma1] (logs keep them
+// positive and make the steps relative: sigma0 spans decades between rigs). Static:
+// [sigma2, log Fc, dF = Fs - Fc, log vs] (dF >= 0 and sigma2 >= 0 are box bounds).
+constexpr int kLogS0 = 0, kLogS1 = 1, kNd = 2;
+constexpr int kS2 = 0, kLogFc = 1, kDF = 2, kLogVs = 3, kNs = 4;
+
+// What the simulation of a record needs besides the parameters.
+struct Record {
+  const double* u = nullptr;  // applied force at the samples (N)
+  const double* x = nullptr;  // measured position (m)
+  const double* v = nullptr;  // velocity by central differences (m/s), for the window starts
+  double dt = 0;              // sample time (s)
+  int substeps = 1;
+  double M = 1;               // inertia (kg)
+  double delta = 2;           // Stribeck exponent
+  double scale = 1;           // residuals are (x_sim - x) / scale (m / m)
+};
+
+// One simulated window [begin, end] of samples. It starts from the measured position and
+// velocity at `begin` with the bristles at rest (z = 0) when v = 0 (the record's start) or in
+// their steady state g(v) sign(v) / sigma0 otherwise (windows start at velocity peaks, in steady
+// sliding).
+struct Window {
+  int begin = 0, end = 0;
+  bool at_rest = false;
+  int residuals() const { return end - begin; }
+};
+
+// Bristle state after tau (s) at constant velocity v, from z: the exact solution of
+// dz/dt = v - rate z, rate = sigma0 |v| / g(v), as LuGreT::step. Also gives dz/dt at the end.
+template <class T>
+struct Relaxed {
+  T z, zdot;
+};
+template <class T>
+Relaxed<T> relax(const T& z, const T& v, double tau, const T& s0, const T& Fc, const T& dF, const T& vs, double delta) {
+  using std::abs;
+  using std::exp;
+  const double vv = value_of(v);
+  if (vv == 0.0) return {z, v};
+  const T g = Fc + dF * stribeck_decay(v, vs, delta);
+  const T rate = s0 * abs(v) / g;
+  const T zss = (vv > 0 ? g : -g) / s0;
+  const T zn = zss + (z - zss) * exp(-rate * tau);
+  return {zn, v - rate * zn};
+}
+
+// dz/dt = v - sigma0 |v| z / g(v) (m/s).
+template <class T>
+T state_rate(const T& z, const T& v, const T& s0, const T& Fc, const T& dF, const T& vs, double delta) {
+  using std::abs;
+  if (value_of(v) == 0.0) return v;
+  return v - s0 * abs(v) * z / (Fc + dF * stribeck_decay(v, vs, delta));
+}
+
+// Simulates M x'' = u - F_lugre over window w and writes (x_sim[k] - x[k]) / scale for
+// k = begin+1 .. end. Per substep h a second-order predictor-corrector (a fixed step, so that the
+// cost is one smooth computation of the parameters and Jets can carry its derivative):
+//  - predictor: v* = v + h (u(t) - F(z, v)) / M;
+//  - corrector: at the midpoint velocity vm = (v + v*) / 2 the bristles relax exactly (z over h/2
+//    for the force, over h for the new state): the relaxation rate sigma0 |v| / g(v) reaches
+//    1e5 1/s in sliding, far beyond any explicit step; v1 = v + h (u(t + h/2) - F(z_mid, vm)) / M;
+//  - x: trapezoidal in v.
+// Written by hand rather than through simulate(): CVODE's adaptive steps would make the cost a
+// non-smooth function of the parameters, and Ceres needs its derivative. A first-order version
+// (explicit v, exact z) was 70 um off CVODE per 1 s window of Table I sliding at 8 substeps,
+// enough to bias sigma1 by far more than 5 %.
+template <class T>
+void simulate_residuals(const T* dyn, const T* sta, const Record& r, const Window& w, T* out) {
+  using std::exp;
+  const T s0 = exp(dyn[kLogS0]), s1 = exp(dyn[kLogS1]);
+  const T s2 = sta[kS2], Fc = exp(sta[kLogFc]), dF = sta[kDF], vs = exp(sta[kLogVs]);
+  const double h = r.dt / r.substeps;
+  const double inv_m = 1.0 / r.M;
+  const double v0 = w.at_rest ? 0.0 : r.v[w.begin];
+  T x(r.x[w.begin]), v(v0), z(0.0);
+  if (v0 != 0.0) z = T(v0 > 0 ? 1.0 : -1.0) * (Fc + dF * stribeck_decay(v, vs, r.delta)) / s0;
+  T zdot = state_rate(z, v, s0, Fc, dF, vs, r.delta);
+  for (int k = w.begin; k < w.end; ++k) {
+    const double u0 = r.u[k], du = r.u[k + 1] - r.u[k];
+    for (int j = 0; j < r.substeps; ++j) {
+      const double ua = u0 + du * (static_cast<double>(j) / r.substeps);
+      const double um = u0 + du * ((j + 0.5) / r.substeps);
+      const T F0 = s0 * z + s1 * zdot + s2 * v;
+      const T vp = v + h * inv_m * (ua - F0);
+      const T vm = 0.5 * (v + vp);
+      const Relaxed<T> mid = relax(z, vm, 0.5 * h, s0, Fc, dF, vs, r.delta);
+      const T Fm = s0 * mid.z + s1 * mid.zdot + s2 * vm;
+      const T vn = v + h * inv_m * (um - Fm);
+      const Relaxed<T> end = relax(z, vm, h, s0, Fc, dF, vs, r.delta);
+      x += (0.5 * h) * (v + vn);
+      v = vn;
+      z = end.z;
+      zdot = state_rate(z, v, s0, Fc, dF, vs, r.delta);
+    }
+    out[k - w.begin] = (x - r.x[k + 1]) / r.scale;
+  }
+}
+
+struct OutputError {
+  const Record* r;
+  Window w;
+  template <class T>
+  bool operator()(const T* dyn, const T* sta, T* residuals) const {
+    simulate_residuals(dyn, sta, *r, w, residuals);
+    return true;
+  }
+};
+
+// Windows of the output error: from the record's start to the first velocity peak, then from
+// each peak to the next (one reversal each), then to the end. A peak is the sample of largest
+// |v| in a run of one sign whose largest |v| exceeds `peak_speed`. Short windows keep the error
+// of a wrong trial parameter from growing over the whole record (a simulated axis that slid
+// once too far stays off by that much for ever), which is what made one long window fail.
+std::vector<Window> make_windows(const Eigen::VectorXd& vel, double peak_speed, bool start_at_rest) {
+  const auto n = static_cast<int>(vel.size());
+  std::vector<int> peaks;
+  int k = 0;
+  while (k < n) {
+    const int sign = vel[k] > 0 ? 1 : (vel[k] < 0 ? -1 : 0);
+    int e = k, best = k;
+    while (e < n && (vel[e] > 0 ? 1 : (vel[e] < 0 ? -1 : 0)) == sign) {
+      if (std::abs(vel[e]) > std::abs(vel[best])) best = e;
+      ++e;
+    }
+    if (sign != 0 && std::abs(vel[best]) > peak_speed && best > 0 && best < n - 1) peaks.push_back(best);
+    k = e;
+  }
+  std::vector<Window> w;
+  int begin = 0;
+  bool rest = start_at_rest;
+  for (int p : peaks) {
+    if (p - begin >= 2) {
+      w.push_back({begin, p, rest});
+      begin = p;
+      rest = false;
+    }
+  }
+  if (n - 1 - begin >= 1) w.push_back({begin, n - 1, rest});
+  return w;
+}
+
+class Progress final : public ceres::IterationCallback {
+ public:
+  Progress(const LugreProgress& f, double scale, std::chrono::steady_clock::time_point t0) : f_(f), scale2_(scale * scale), t0_(t0) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    f_(s.iteration, s.cost * scale2_, elapsed);
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const LugreProgress& f_;
+  double scale2_;
+  std::chrono::steady_clock::time_point t0_;
+};
+
+// The static part of a given law: Fc, Fs, vs, delta, sigma2.
+struct StaticPart {
+  double Fc = 0, Fs = 0, vs = 0, delta = 2, sigma2 = 0;
+};
+
+StaticPart static_part_of(const FrictionLaw& law, const LugreOptions& o) {
+  const LawSpec s = law.to_spec();
+  const auto get = [&](const char* name) { return s.scalars.at(name); };
+  StaticPart p;
+  if (s.name == "stribeck") {
+    p = {get("Fc"), get("Fs"), get("vs"), get("delta"), get("Fv")};
+  } else if (s.name == "lugre") {
+    p = {get("Fc"), get("Fs"), get("vs"), get("delta"), get("sigma2")};
+  } else if (s.name == "static-coulomb-viscous") {
+    p = {get("Fc"), get("Fs"), o.stribeck_velocity, o.delta, get("Fv")};
+  } else if (s.name == "coulomb-viscous") {
+    p = {get("Fc"), get("Fc"), o.stribeck_velocity, o.delta, get("Fv")};
+  } else {
+    throw std::invalid_argument("lugre: the static law '" + s.name +
+                                "' cannot give the LuGre static part; expected stribeck, lugre, static-coulomb-viscous "
+                                "or coulomb-viscous");
+  }
+  if (!(p.Fc > 0))
+    throw std::invalid_argument("lugre: the static law's Coulomb level Fc = " + format_number(p.Fc) +
+                                " must be > 0 (N or N m) for a LuGre model");
+  return p;
+}
+
+}  // namespace
+
+Result identify_lugre(const LugreData& d, const LugreOptions& o) {
+  const auto t_start = std::chrono::steady_clock::now();
+  const Eigen::Index n = d.time.size();
+  if (!(std::isfinite(o.inertia) && o.inertia > 0))
+    throw std::invalid_argument("lugre: the inertia (--inertia) must be > 0 (kg or kg m^2), got " + format_number(o.inertia));
+  if (d.force.size() != n || d.position.size() != n)
+    throw std::invalid_argument("lugre: time, force and position must have equal lengths (have " + std::to_string(n) + ", " +
+                                std::to_string(d.force.size()) + ", " + std::to_string(d.position.size()) + ")");
+  if (o.substeps < 1) throw std::invalid_argument("lugre: substeps = " + std::to_string(o.substeps) + " must be >= 1");
+  if (!(std::isfinite(o.delta) && o.delta > 0))
+    throw std::invalid_argument("lugre: delta = " + format_number(o.delta) + " must be > 0");
+  const double dt = regular_time_step(d.time, "lugre");
+  for (Eigen::Index k = 0; k < n; ++k) {
+    if (!std::isfinite(d.force[k]))
+      throw std::invalid_argument("lugre: force at sample " + std::to_string(k) + " is not finite");
+    if (!std::isfinite(d.position[k]))
+      throw std::invalid_argument("lugre: position at sample " + std::to_string(k) + " is not finite");
+  }
+  const bool given = o.static_law.has_value();
+  StaticPart st;
+  if (given) st = static_part_of(*o.static_law, o);
+
+  Result r = make_result("lugre", "lugre");
+  const auto warn = [&](const std::string& w) { r.diagnostics.warnings.push_back(w); };
+  const auto vunit = std::string(unit(Quantity::velocity, o.axis));
+  const auto punit = std::string(unit(Quantity::displacement, o.axis));
+  const auto funit = std::string(unit(Quantity::force, o.axis));
+  const double M = o.inertia;
+
+  // Velocity and acceleration by central differences (noise-free enough for starting values;
+  // the output error below does not use them).
+  const Eigen::VectorXd vel = gradient(d.position, dt);
+  const Eigen::VectorXd acc = gradient(vel, dt);
+  const double range = d.position.maxCoeff() - d.position.minCoeff();
+  const double vmax = vel.cwiseAbs().maxCoeff();
+  if (!(range > 0) || !(vmax > 0))
+    return fail(r, "no motion: the position never changes (range " + format_number(range) + " " + punit +
+                       "); the record must contain presliding and sliding");
+  // Sliding samples: |v| above 1 % of the largest speed, two samples away from any slower sample
+  // (a reversal's kink spoils the differences there).
+  const double threshold = 0.01 * vmax;
+  std::vector<Eigen::Index> sliding;
+  constexpr Eigen::Index kEdge = 2;
+  for (Eigen::Index k = kEdge; k + kEdge < n; ++k) {
+    bool ok = true;
+    for (Eigen::Index j = k - kEdge; j <= k + kEdge && ok; ++j) ok = std::abs(vel[j]) > threshold;
+    if (ok) sliding.push_back(k);
+  }
+
+  // (1) Static part.
+  if (!given) {
+    constexpr std::size_t kMinSliding = 20;  // a Stribeck fit has 4 free parameters; ask for 5 per parameter
+    if (sliding.size() < kMinSliding)
+      return fail(r, "no sliding: only " + std::to_string(sliding.size()) + " samples with |velocity| > " +
+                         format_number(threshold) + " " + vunit + " (need " + std::to_string(kMinSliding) +
+                         ") to identify Fc, Fs, vs and sigma2; give the static law (--static MODEL.json) or a record that slides");
+    Eigen::VectorXd vs_(static_cast<Eigen::Index>(sliding.size())), fs_(vs_.size());
+    for (std::size_t i = 0; i < sliding.size(); ++i) {
+      const auto k = sliding[i];
+      vs_[static_cast<Eigen::Index>(i)] = vel[k];
+      fs_[static_cast<Eigen::Index>(i)] = d.force[k] - M * acc[k];
+    }
+    StaticFitOptions so;
+    so.model = StaticFitModel::stribeck;
+    so.fixed_delta = o.delta;
+    try {
+      const StaticFit sf = fit_static_law(vs_, fs_, so);
+      for (const auto& p : sf.parameters) {
+        if (p.name == "Fc") st.Fc = p.value;
+        if (p.name == "Fs") st.Fs = p.value;
+        if (p.name == "vs") st.vs = p.value;
+        if (p.name == "Fv") st.sigma2 = p.value;
+      }
+      st.delta = o.delta;
+      r.diagnostics.groups["static_fit"] = {{"Fc", st.Fc}, {"Fs", st.Fs}, {"vs", st.vs}, {"sigma2", st.sigma2},
+                                            {"relative_error_percent", sf.relative_error_percent}};
+    } catch (const std::invalid_argument& e) {
+      return fail(r, std::string("the static fit on the sliding samples failed: ") + e.what() +
+                         "; give the static law (--static MODEL.json)");
+    }
+    if (!(st.Fc > 0))
+      return fail(r, "the sliding samples give a Coulomb level Fc = " + format_number(st.Fc) + " " + funit +
+                         ", not > 0: the record does not show sliding friction; give the static law (--static MODEL.json) or a "
+                         "record that slides");
+    // A record's sliding samples are mostly far above vs, where a Stribeck fit cannot see Fs and vs:
+    // keep them physical as starting values.
+    if (!(st.vs > 0) || st.vs > 0.5 * vmax) st.vs = 0.01 * vmax;
+    if (!(st.Fs >= st.Fc) || st.Fs > 3 * st.Fc) st.Fs = st.Fc;
+    st.sigma2 = std::max(st.sigma2, 0.0);
+    // The contact held every force before the first sliding sample: the static level is at least
+    // their largest magnitude (slightly above it: a force ramp breaks away just past that level).
+    // A start below it would let the simulation slide where the record did not, far from the data.
+    constexpr double kAboveHeld = 1.02;
+    double held = 0;
+    for (Eigen::Index k = 0; k < sliding.front(); ++k) held = std::max(held, std::abs(d.force[k]));
+    if (kAboveHeld * held > st.Fs && held < 3 * st.Fc) st.Fs = kAboveHeld * held;
+  }
+
+  // (2) Starting values of the dynamic part. sigma0 from the presliding before the first
+  // sliding: quasi-static loading from rest gives x - x0 = -(Fs / sigma0) ln(1 - u / Fs)
+  // (dz/dx = 1 - sigma0 z / Fs), so sigma0 is the least-squares slope of -Fs ln(1 - u / Fs)
+  // against the displacement, on the samples with |u| below half the static level.
+  double sigma0 = std::numeric_limits<double>::quiet_NaN();
+  {
+    const Eigen::Index first_slide = sliding.empty() ? n : sliding.front();
+    double sxy = 0, sxx = 0;
+    int used = 0;
+    for (Eigen::Index k = 1; k < first_slide; ++k) {
+      const double u = d.force[k], dx = d.position[k] - d.position[0];
+      if (std::abs(u) > 0.5 * st.Fs) break;
+      const double a = -(u > 0 ? 1.0 : -1.0) * st.Fs * std::log1p(-std::abs(u) / st.Fs);
+      sxy += a * dx;
+      sxx += dx * dx;
+      ++used;
+    }
+    constexpr int kMinPresliding = 10;
+    if (used >= kMinPresliding && sxx > 0 && sxy > 0) sigma0 = sxy / sxx;
+    r.diagnostics.numbers["presliding_samples"] = used;
+  }
+  if (!std::isfinite(sigma0)) {
+    // Typical bristle deflection at the static level: 10 um (steel contacts, Canudas de Wit 1995).
+    constexpr double kTypicalDeflection = 1e-5;  // m
+    sigma0 = st.Fs / kTypicalDeflection;
+    warn("no presliding before the first sliding (the record should start at rest under a force below Fs): sigma0 "
+         "starts from a 10 um deflection at Fs, " + format_number(sigma0) + " " + std::string(unit(Quantity::stiffness, o.axis)));
+  }
+  // A record that never moves further than a few bristle deflections Fs / sigma0 did not slide,
+  // whatever its velocity samples say (presliding creeps at um/s): its "sliding" samples cannot
+  // give the static part.
+  constexpr double kSlideDeflections = 10;
+  if (!given && range < kSlideDeflections * st.Fs / sigma0)
+    return fail(r, "no sliding: the position spans only " + format_number(range) + " " + punit + ", within " +
+                       format_number(kSlideDeflections) + " bristle deflections Fs / sigma0 = " +
+                       format_number(st.Fs / sigma0) + " " + punit +
+                       "; give the static law (--static MODEL.json) or a record that slides");
+  double sigma1 = 2 * std::sqrt(sigma0 * M);  // critical damping of the bristle-mass resonance
+
+  // (3) Output error.
+  Record rec;
+  rec.u = d.force.data();
+  rec.x = d.position.data();
+  rec.v = vel.data();
+  rec.dt = dt;
+  rec.substeps = o.substeps;
+  rec.M = M;
+  rec.delta = st.delta;
+  // Residuals relative to a micrometre-sized unit: Ceres's gradient tolerance is absolute, and
+  // presliding displacements are micrometres.
+  constexpr double kResidualUnit = 1e-6;  // m
+  rec.scale = kResidualUnit;
+  // Windows start at velocity peaks in steady sliding only: below a tenth of the top speed, or
+  // below a few Stribeck velocities, the bristles lag behind their steady state (presliding creep
+  // has velocity peaks too).
+  constexpr double kPeakFraction = 0.1, kPeakStribeck = 3.0;
+  const std::vector<Window> windows =
+      make_windows(vel, std::max(kPeakFraction * vmax, kPeakStribeck * st.vs), std::abs(vel[0]) <= threshold);
+
+  double dyn[kNd] = {std::log(sigma0), std::log(sigma1)};
+  double sta[kNs] = {st.sigma2, std::log(st.Fc), st.Fs - st.Fc, std::log(st.vs)};
+  r.diagnostics.groups["start"] = {{"sigma0", sigma0}, {"sigma1", sigma1}, {"sigma2", st.sigma2},
+                                   {"Fc", st.Fc},      {"Fs", st.Fs},       {"vs", st.vs}};
+
+  ceres::Problem problem;
+  std::vector<ceres::CostFunction*> costs;
+  for (const Window& w : windows) {
+    costs.push_back(new ceres::AutoDiffCostFunction<OutputError, ceres::DYNAMIC, kNd, kNs>(new OutputError{&rec, w}, w.residuals()));
+    problem.AddResidualBlock(costs.back(), nullptr, dyn, sta);
+  }
+  const double h = dt / o.substeps;
+  // The explicit velocity update is stable for sigma1 h / M < 2 and sqrt(sigma0 / M) h < 2; keep a
+  // factor 2 from both so that no trial step of the solver blows the simulation up.
+  problem.SetParameterUpperBound(dyn, kLogS0, std::log(M / (h * h)));
+  problem.SetParameterUpperBound(dyn, kLogS1, std::log(M / h));
+  problem.SetParameterLowerBound(sta, kS2, 0.0);
+  problem.SetParameterLowerBound(sta, kDF, 0.0);
+  // Keep the static levels within a decade of their starting values and vs within the speeds of
+  // the record: outside, the position no longer depends on them and the solver can wander off.
+  problem.SetParameterLowerBound(sta, kLogFc, std::log(0.1 * st.Fc));
+  problem.SetParameterUpperBound(sta, kLogFc, std::log(10 * st.Fc));
+  problem.SetParameterUpperBound(sta, kDF, 10 * st.Fc);
+  problem.SetParameterLowerBound(sta, kLogVs, std::log(1e-6 * vmax));
+  problem.SetParameterUpperBound(sta, kLogVs, std::log(vmax));
+  if (given) problem.SetParameterBlockConstant(sta);
+
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::DENSE_QR;
+  so.max_num_iterations = o.max_iterations;
+  so.function_tolerance = 1e-10;
+  so.parameter_tolerance = 1e-10;
+  so.gradient_tolerance = 1e-14;
+  so.logging_type = ceres::SILENT;
+  so.num_threads = 2;  // windows are independent residual blocks
+  std::unique_ptr<Progress> progress;
+  if (o.progress) {
+    progress = std::make_unique<Progress>(o.progress, kResidualUnit, t_start);
+    so.callbacks.push_back(progress.get());
+  }
+  ceres::Solver::Summary summary;
+  int iterations = 0;
+  if (!given) {
+    // Stage 1: the static part alone, the dynamic one held at its start. The static levels decide
+    // where the axis slides at all, and with them off, sigma0 and sigma1 would first be bent to
+    // explain sliding they have no say in (a local minimum the joint fit does not leave).
+    problem.SetParameterBlockConstant(dyn);
+    ceres::Solve(so, &problem, &summary);
+    iterations += static_cast<int>(summary.iterations.size()) - 1;
+    r.diagnostics.numbers["cost_initial"] = summary.initial_cost * kResidualUnit * kResidualUnit;
+    problem.SetParameterBlockVariable(dyn);
+  }
+  const double initial_cost = given ? 0.0 : summary.initial_cost;
+  ceres::Solve(so, &problem, &summary);
+  iterations += static_cast<int>(summary.iterations.size()) - 1;
+
+  // Jacobian at the solution: standard deviations s^2 (J'J)^-1 over the free parameters.
+  // Residuals (m) and Jacobian (m per internal unit) over all windows; sample 0 has none.
+  const Eigen::Index nr = n - 1;
+  Eigen::VectorXd e(nr);
+  Eigen::Matrix<double, Eigen::Dynamic, kNd + kNs> J(nr, kNd + kNs);
+  for (std::size_t i = 0; i < windows.size(); ++i) {
+    const Window& w = windows[i];
+    const int m = w.residuals();
+    Eigen::Matrix<double, Eigen::Dynamic, kNd, Eigen::RowMajor> Jd(m, kNd);
+    Eigen::Matrix<double, Eigen::Dynamic, kNs, Eigen::RowMajor> Js(m, kNs);
+    const double* params[2] = {dyn, sta};
+    double* jac[2] = {Jd.data(), Js.data()};
+    if (!costs[i]->Evaluate(params, e.data() + w.begin, jac)) return fail(r, "the simulation of the identified model failed");
+    J.block(w.begin, 0, m, kNd) = Jd;
+    J.block(w.begin, kNd, m, kNs) = Js;
+  }
+  e *= kResidualUnit;
+  J *= kResidualUnit;
+  const int p_free = given ? kNd : kNd + kNs;
+  const Eigen::MatrixXd Jf = J.leftCols(p_free);
+  const double dof = std::max<double>(1.0, static_cast<double>(nr - p_free));
+  const double s2 = e.squaredNorm() / dof;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jf, Eigen::ComputeThinV);
+  const auto& sv = svd.singularValues();
+  Eigen::MatrixXd cov_int = Eigen::MatrixXd::Zero(p_free, p_free);
+  bool singular = false;
+  for (int i = 0; i < p_free; ++i) {
+    if (!(sv[i] > 1e-12 * sv[0])) {
+      singular = true;
+      continue;
+    }
+    cov_int += svd.matrixV().col(i) * svd.matrixV().col(i).transpose() / (sv[i] * sv[i]);
+  }
+  cov_int *= s2;
+  r.diagnostics.condition_number = sv[p_free - 1] > 0 ? sv[0] / sv[p_free - 1] : std::numeric_limits<double>::infinity();
+  if (singular) warn("the position does not depend on every parameter (rank-deficient Jacobian): some std are understated");
+
+  // Physical values [sigma0, sigma1, sigma2, Fc, Fs, vs] and the Jacobian D of the map.
+  const double S0 = std::exp(dyn[kLogS0]), S1 = std::exp(dyn[kLogS1]);
+  const double S2 = sta[kS2], FC = std::exp(sta[kLogFc]), FS = FC + sta[kDF], VS = std::exp(sta[kLogVs]);
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(6, p_free);
+  D(0, kLogS0) = S0;
+  D(1, kLogS1) = S1;
+  if (!given) {
+    D(2, kNd + kS2) = 1;
+    D(3, kNd + kLogFc) = FC;
+    D(4, kNd + kLogFc) = FC;
+    D(4, kNd + kDF) = 1;
+    D(5, kNd + kLogVs) = VS;
+  }
+  const Eigen::VectorXd stdev = (D * cov_int * D.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
+
+  const auto add = [&](const std::string& name, double v, double s, Quantity q) { add_parameter(r, name, v, s, q, o.axis); };
+  add("sigma0", S0, stdev[0], Quantity::stiffness);
+  add("sigma1", S1, stdev[1], Quantity::viscous);
+  add("sigma2", S2, stdev[2], Quantity::viscous);
+  add("Fc", FC, stdev[3], Quantity::force);
+  add("Fs", FS, stdev[4], Quantity::force);
+  add("vs", VS, stdev[5], Quantity::velocity);
+  add("delta", st.delta, 0.0, Quantity::dimensionless);
+
+  Eigen::VectorXd x_sim = d.position;
+  x_sim.tail(nr) += e;
+  set_fit(r, d.position.array() - d.position[0], x_sim.array() - d.position[0]);
+
+  auto& num = r.diagnostics.numbers;
+  num["iterations"] = iterations;
+  num["cost_initial"] = (given ? summary.initial_cost : initial_cost) * kResidualUnit * kResidualUnit;
+  num["cost_final"] = summary.final_cost * kResidualUnit * kResidualUnit;
+  num["substeps"] = o.substeps;
+  num["windows"] = static_cast<double>(windows.size());
+  num["dt"] = dt;
+  num["inertia"] = M;
+  num["static_given"] = given ? 1.0 : 0.0;
+  if (summary.termination_type == ceres::NO_CONVERGENCE)
+    warn("the output-error fit stopped at its iteration limit (" + std::to_string(o.max_iterations) +
+         ") before converging: the estimates may be off");
+  else if (summary.termination_type == ceres::FAILURE)
+    warn("the output-error fit failed: " + summary.message);
+
+  LuGre lg;
+  lg.sigma0 = S0;
+  lg.sigma1 = S1;
+  lg.sigma2 = S2;
+  lg.Fc = FC;
+  lg.Fs = FS;
+  lg.vs = VS;
+  lg.delta = st.delta;
+  try {
+    r.law = FrictionLaw(lg).to_spec();
+    const Passivity pv = lg.passivity();
+    num["passive"] = pv.passive ? 1.0 : 0.0;
+    if (!pv.passive) warn(pv.message);
+  } catch (const std::invalid_argument& ex) {
+    warn(std::string("the estimates do not make a valid LuGre law: ") + ex.what());
+  }
+
+  r.series["time"].assign(d.time.data(), d.time.data() + n);
+  r.series["position"].assign(d.position.data(), d.position.data() + n);
+  r.series["position_sim"].assign(x_sim.data(), x_sim.data() + n);
+  r.series["force"].assign(d.force.data(), d.force.data() + n);
+  {
+    // The identified model run freely over the whole record (one window from the start): the
+    // stricter figure, since errors carry over from reversal to reversal.
+    const Window whole{0, static_cast<int>(n) - 1, windows.front().at_rest};
+    Eigen::VectorXd free_run = d.position;
+    simulate_residuals(dyn, sta, rec, whole, free_run.data() + 1);
+    free_run.tail(nr) = free_run.tail(nr) * kResidualUnit + d.position.tail(nr);
+    const Eigen::VectorXd dx = d.position.array() - d.position[0];
+    num["free_run_relative_error_percent"] = 100.0 * (free_run - d.position).norm() / dx.norm();
+    r.series["position_free_run"].assign(free_run.data(), free_run.data() + n);
+  }
+  num["fit_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  return r;
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,341 @@
+#include "frictionlab/io/report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+#include <sys/stat.h>
+
+#include "frictionlab/io/atomic_write.hpp"
+
+namespace frictionlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string esc(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string general(double x, int digits = 6) {
+  if (std::isnan(x)) return "n/a";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+  return buf;
+}
+
+// A value to the precision its standard deviation supports: the std to two significant digits
+// and the value to the same decimal place (95.10 +- 0.11). Plain 6 significant digits when the
+// std is unknown or zero; scientific notation for very large or small magnitudes.
+std::pair<std::string, std::string> value_and_std(double value, double sd) {
+  if (!std::isfinite(value)) return {general(value), general(sd, 2)};
+  if (!std::isfinite(sd) || sd <= 0) return {general(value), sd == 0 ? "0" : "n/a"};
+  const int decimals = 1 - static_cast<int>(std::floor(std::log10(sd)));
+  const double mag = std::max(std::abs(value), sd);
+  char v[48], s[48];
+  if (decimals >= 0 && decimals <= 8 && mag < 1e7) {
+    std::snprintf(v, sizeof v, "%.*f", decimals, value);
+    std::snprintf(s, sizeof s, "%.*f", decimals, sd);
+  } else {
+    const int exponent = static_cast<int>(std::floor(std::log10(mag)));
+    const int sig = std::clamp(exponent + decimals, 1, 15);  // digits after the point in d.ddd e+XX
+    std::snprintf(v, sizeof v, "%.*e", std::max(sig, 1), value);
+    std::snprintf(s, sizeof s, "%.1e", sd);
+  }
+  return {v, s};
+}
+
+// The force unit of a result, read off its parameters (rotary axes print "N m").
+std::string force_unit(const Result& r) {
+  for (const auto& p : r.parameters)
+    if (p.unit == "N m" || p.unit.rfind("N m ", 0) == 0 || p.unit == "kg m^2") return "N m";
+  return "N";
+}
+
+std::string now_utc() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[40];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S UTC", &tm);
+  return buf;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot read the figure back");
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// gnuplot's SVG as an inline element: the XML prolog and doctype are dropped.
+std::string inline_svg(const std::string& svg) {
+  const auto start = svg.find("<svg");
+  if (start == std::string::npos) throw std::runtime_error("figure is not SVG");
+  return svg.substr(start);
+}
+
+constexpr const char* kStyle = R"(
+body { font-family: "DejaVu Sans", "Liberation Sans", Arial, sans-serif; color: #1a1a1a; max-width: 1060px;
+       margin: 1.5em auto; padding: 0 1em; line-height: 1.45; }
+h1 { font-size: 1.6em; margin-bottom: 0.1em; }
+h2 { font-size: 1.25em; border-bottom: 1px solid #ccc; padding-bottom: 0.15em; margin-top: 1.6em; }
+h3 { font-size: 1.05em; margin-bottom: 0.3em; }
+.sub { color: #555; margin-top: 0; }
+table { border-collapse: collapse; margin: 0.4em 0 0.8em 0; }
+th, td { border: 1px solid #d0d0d0; padding: 0.25em 0.7em; text-align: left; vertical-align: top; }
+th { background: #f1f3f5; }
+td.num { text-align: right; font-variant-numeric: tabular-nums; font-family: "DejaVu Sans Mono", monospace; }
+code, .mono { font-family: "DejaVu Sans Mono", monospace; font-size: 0.92em; word-break: break-all; }
+.status-ok { color: #1b7a2f; font-weight: bold; }
+.status-error { color: #b00020; font-weight: bold; }
+.warnings li { color: #8a4b00; }
+.error { background: #fdecea; border: 1px solid #f5c2c0; padding: 0.6em 1em; }
+figure { margin: 1em 0 1.6em 0; }
+figure svg, figure img { max-width: 100%; height: auto; border: 1px solid #e0e0e0; }
+figcaption { color: #444; font-size: 0.95em; margin-top: 0.3em; }
+.note { color: #555; font-size: 0.9em; }
+)";
+
+void table_head(std::ostringstream& h, std::initializer_list<const char*> cols) {
+  h << "<table><thead><tr>";
+  for (const char* c : cols) h << "<th>" << c << "</th>";
+  h << "</tr></thead><tbody>\n";
+}
+
+void diagnostics_html(std::ostringstream& h, const Diagnostics& d) {
+  h << "<h2 id=\"diagnostics\">Diagnostics</h2>\n";
+  const bool any = std::isfinite(d.condition_number) || !d.numbers.empty() || !d.groups.empty() || !d.lists.empty();
+  if (!any) {
+    h << "<p class=\"note\">No diagnostics.</p>\n";
+    return;
+  }
+  if (std::isfinite(d.condition_number) || !d.numbers.empty()) {
+    table_head(h, {"figure", "value"});
+    if (std::isfinite(d.condition_number))
+      h << "<tr><td>condition number</td><td class=\"num\">" << general(d.condition_number, 4) << "</td></tr>\n";
+    for (const auto& [k, v] : d.numbers)
+      h << "<tr><td>" << esc(k) << "</td><td class=\"num\">" << general(v) << "</td></tr>\n";
+    h << "</tbody></table>\n";
+  }
+  for (const auto& [name, group] : d.groups) {
+    h << "<h3>" << esc(name) << "</h3>\n";
+    table_head(h, {"name", "value"});
+    for (const auto& [k, v] : group)
+      h << "<tr><td>" << esc(k) << "</td><td class=\"num\">" << general(v) << "</td></tr>\n";
+    h << "</tbody></table>\n";
+  }
+  // Lists can be long (one record per segment or cycle): the first rows are shown, the count said.
+  constexpr std::size_t kRows = 25;
+  for (const auto& [name, records] : d.lists) {
+    h << "<h3>" << esc(name) << " (" << records.size() << (records.size() == 1 ? " record" : " records") << ")</h3>\n";
+    if (records.empty()) continue;
+    std::vector<std::string> cols;
+    std::set<std::string> seen;
+    for (const auto& rec : records)
+      for (const auto& [k, v] : rec)
+        if (seen.insert(k).second) cols.push_back(k);
+    h << "<table><thead><tr><th>#</th>";
+    for (const auto& c : cols) h << "<th>" << esc(c) << "</th>";
+    h << "</tr></thead><tbody>\n";
+    for (std::size_t i = 0; i < std::min(records.size(), kRows); ++i) {
+      h << "<tr><td class=\"num\">" << i + 1 << "</td>";
+      for (const auto& c : cols) {
+        const auto it = records[i].find(c);
+        h << "<td class=\"num\">" << (it == records[i].end() ? "" : general(it->second)) << "</td>";
+      }
+      h << "</tr>\n";
+    }
+    h << "</tbody></table>\n";
+    if (records.size() > kRows)
+      h << "<p class=\"note\">" << records.size() - kRows << " more records are in the JSON result.</p>\n";
+  }
+}
+
+bool valid_name(const std::string& n) {
+  if (n.empty()) return false;
+  return std::all_of(n.begin(), n.end(), [](unsigned char c) { return std::isalnum(c) || c == '-' || c == '_'; });
+}
+
+}  // namespace
+
+void check_report_dir(const std::string& dir, bool overwrite) {
+  if (dir.empty()) throw std::invalid_argument("--report: expected a directory name");
+  std::error_code ec;
+  const fs::path p(dir);
+  if (!fs::exists(p, ec)) {
+    const fs::path parent = p.parent_path();
+    if (!parent.empty() && !fs::is_directory(parent, ec))
+      throw std::invalid_argument(dir + ": parent directory " + parent.string() + " does not exist");
+    return;
+  }
+  if (!fs::is_directory(p, ec)) throw std::invalid_argument(dir + " exists and is not a directory (--report)");
+  if (overwrite) return;
+  if (!fs::is_empty(p, ec)) throw std::invalid_argument(dir + " exists and is not empty; pass --overwrite to replace it");
+}
+
+std::string report_html(const Result& r, const std::vector<std::pair<std::string, std::string>>& figures,
+                        const ReportInfo& info) {
+  const std::string title = info.title.empty() ? "frictionlab " + r.method : info.title;
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+    << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+    << "<title>" << esc(title) << (r.data_file.empty() ? "" : ": " + esc(fs::path(r.data_file).filename().string()))
+    << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n";
+  h << "<h1>" << esc(title) << "</h1>\n<p class=\"sub\">Report written " << now_utc() << " by frictionlab "
+    << esc(info.version) << ". Status: "
+    << (r.ok() ? "<span class=\"status-ok\" id=\"status\">ok</span>" : "<span class=\"status-error\" id=\"status\">error</span>")
+    << "</p>\n";
+  if (!r.ok()) h << "<p class=\"error\" id=\"message\">" << esc(r.message) << "</p>\n";
+
+  // Data and method.
+  h << "<h2 id=\"data\">Data and method</h2>\n<table><tbody>\n";
+  h << "<tr><th>data file</th><td><code>" << esc(r.data_file) << "</code></td></tr>\n"
+    << "<tr><th>SHA-256</th><td><code>" << esc(r.data_sha256) << "</code></td></tr>\n";
+  if (r.validation)
+    h << "<tr><th>validation file</th><td><code>" << esc(r.validation->file) << "</code></td></tr>\n"
+      << "<tr><th>its SHA-256</th><td><code>" << esc(r.validation->sha256) << "</code></td></tr>\n";
+  h << "<tr><th>method</th><td>" << esc(r.method) << "</td></tr>\n"
+    << "<tr><th>model</th><td>" << esc(r.model) << "</td></tr>\n";
+  if (!info.command_line.empty())
+    h << "<tr><th>command</th><td><code>" << esc(info.command_line) << "</code></td></tr>\n";
+  h << "</tbody></table>\n";
+  // Parameters.
+  h << "<h2 id=\"parameters\">Parameters</h2>\n";
+  if (r.parameters.empty()) {
+    h << "<p class=\"note\">No parameters.</p>\n";
+  } else {
+    h << "<table id=\"parameter-table\"><thead><tr><th>parameter</th><th>value</th><th>&plusmn; std</th><th>unit</th>"
+      << "<th>relative std</th></tr></thead><tbody>\n";
+    for (const auto& p : r.parameters) {
+      const auto [v, s] = value_and_std(p.value, p.std);
+      const double rel = std::abs(p.value) > 0 ? 100.0 * p.std / std::abs(p.value) : NAN;
+      h << "<tr><td><b>" << esc(p.name) << "</b></td><td class=\"num\" title=\"" << general(p.value, 17) << "\">" << v
+        << "</td><td class=\"num\">" << s << "</td><td>" << esc(p.unit) << "</td><td class=\"num\">"
+        << (std::isfinite(rel) ? general(rel, 2) + " %" : "n/a") << "</td></tr>\n";
+    }
+    h << "</tbody></table>\n";
+  }
+
+  // Fit and validation figures.
+  const bool force_fit = r.method == "idim" || r.method == "sweep" || r.method == "breakaway" || r.method == "lugre";
+  std::string rmse_unit;
+  if (force_fit) rmse_unit.append(" ").append(force_unit(r));
+  else if (r.method == "decay") rmse_unit = " J";
+  h << "<h2 id=\"fit\">Fit</h2>\n";
+  table_head(h, {"data", "relative error", "rmse", "samples"});
+  h << "<tr><td>identification: <code>" << esc(fs::path(r.data_file).filename().string()) << "</code></td><td class=\"num\">"
+    << general(r.fit.relative_error_percent, 4) << " %</td><td class=\"num\">" << general(r.fit.rmse, 4) << rmse_unit
+    << "</td><td class=\"num\">" << r.fit.samples << "</td></tr>\n";
+  if (r.validation)
+    h << "<tr><td>cross-test: <code>" << esc(fs::path(r.validation->file).filename().string())
+      << "</code></td><td class=\"num\">" << general(r.validation->relative_error_percent, 4)
+      << " %</td><td class=\"num\">" << general(r.validation->rmse, 4) << rmse_unit << "</td><td class=\"num\">"
+      << r.validation->samples << "</td></tr>\n";
+  h << "</tbody></table>\n<p class=\"note\">Relative error = 100 &middot; ||y &minus; &#375;|| / ||y||; rmse in the "
+       "unit of the fitted signal"
+    << (r.method == "decay" ? " (energy lost per half cycle)" : "") << ".</p>\n";
+
+  // Warnings.
+  h << "<h2 id=\"warnings\">Warnings</h2>\n";
+  if (r.diagnostics.warnings.empty()) {
+    h << "<p class=\"note\">None.</p>\n";
+  } else {
+    h << "<ul class=\"warnings\">\n";
+    for (const auto& w : r.diagnostics.warnings) h << "<li>" << esc(w) << "</li>\n";
+    h << "</ul>\n";
+  }
+
+  // Figures.
+  h << "<h2 id=\"figures\">Figures</h2>\n";
+  if (figures.empty()) h << "<p class=\"note\">No figures.</p>\n";
+  for (std::size_t i = 0; i < figures.size(); ++i)
+    h << "<figure id=\"figure-" << i + 1 << "\">\n"
+      << figures[i].second << "\n<figcaption>Figure " << i + 1 << ". " << esc(figures[i].first)
+      << "</figcaption>\n</figure>\n";
+  if (!figures.empty())
+    h << "<p class=\"note\">Each figure's data (<code>NAME.svg.dat</code>) and gnuplot script (<code>NAME.svg.gp</code>) "
+         "are next to this page: edit the script and run <code>gnuplot NAME.svg.gp</code> in this directory to "
+         "restyle it.</p>\n";
+
+  if (!info.options.empty()) {
+    h << "<h2 id=\"options\">Options</h2>\n";
+    table_head(h, {"option", "value"});
+    for (const auto& [k, v] : info.options) h << "<tr><td><code>" << esc(k) << "</code></td><td>" << esc(v) << "</td></tr>\n";
+    h << "</tbody></table>\n";
+  }
+
+  diagnostics_html(h, r.diagnostics);
+  h << "</body>\n</html>\n";
+  return h.str();
+}
+
+std::string write_report(const Result& result, const std::vector<ReportFigure>& figures, const ReportInfo& info,
+                         const std::string& dir, bool overwrite) {
+  check_report_dir(dir, overwrite);
+  for (const auto& f : figures)
+    if (!valid_name(f.name) || f.name == "report")
+      throw std::invalid_argument("report figure name '" + f.name + "': expected letters, digits, '-' or '_'");
+  if (!figures.empty()) find_gnuplot();  // fail before anything is written
+
+  std::error_code ec;
+  const bool fresh = !fs::exists(dir, ec);
+  // A new directory is built under a temporary name and renamed into place at the end; an
+  // existing one (empty, or --overwrite) gets each file replaced atomically, and nothing else in
+  // it is touched.
+  std::string work = dir;
+  if (fresh) {
+    std::string tmpl = (fs::path(dir).lexically_normal().string());
+    while (tmpl.size() > 1 && tmpl.back() == '/') tmpl.pop_back();
+    tmpl += ".tmp-XXXXXX";
+    if (!::mkdtemp(tmpl.data()))
+      throw std::runtime_error(dir + ": cannot create a temporary directory next to it (is the parent writable?)");
+    work = tmpl;
+    const mode_t mask = ::umask(0);  // mkdtemp makes it 0700; give it the usual permissions
+    ::umask(mask);
+    ::chmod(work.c_str(), 0777 & ~mask);
+  }
+  try {
+    std::vector<std::pair<std::string, std::string>> inlined;
+    for (const auto& f : figures) {
+      const std::string path = (fs::path(work) / (f.name + ".svg")).string();
+      write_figure(f.figure, path, true);
+      inlined.emplace_back(f.caption, inline_svg(read_file(path)));
+    }
+    AtomicWriteOptions w;
+    w.overwrite = true;
+    write_file_atomic((fs::path(work) / "report.html").string(), report_html(result, inlined, info), w);
+    if (fresh) {
+      if (std::rename(work.c_str(), dir.c_str()) != 0)
+        throw std::runtime_error(dir + ": cannot rename the temporary directory into place (did it appear meanwhile?)");
+    }
+  } catch (...) {
+    if (fresh) fs::remove_all(work, ec);
+    throw;
+  }
+  return (fs::path(dir) / "report.html").string();
+}
+
+}  // namespace frictionlab

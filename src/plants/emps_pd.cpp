@@ -1,0 +1,79 @@
+// EMPS discrete PD loop: see include/frictionlab/plants/emps_pd.hpp.
+#include "frictionlab/plants/emps_pd.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace frictionlab {
+namespace {
+
+void require(bool ok, const char* name, double value, const char* rule) {
+  if (!ok) {
+    std::ostringstream s;
+    s.precision(10);
+    s << "controller (emps-pd): " << name << " = " << value << " must be " << rule;
+    throw std::invalid_argument(s.str());
+  }
+}
+
+// Offsets of the discrete states after the inner plant's.
+constexpr std::size_t kApplied = 0, kComputed = 1, kPrevQ = 2, kPrevQf = 3, kPrimed = 4;
+
+}  // namespace
+
+EmpsPdLoop::EmpsPdLoop(std::shared_ptr<const Plant> inner, EmpsPdParams p) : inner_(std::move(inner)), p_(std::move(p)) {
+  if (!inner_) throw std::invalid_argument("controller (emps-pd): no plant to control");
+  if (inner_->kinematic())
+    throw std::invalid_argument("controller (emps-pd): cannot close a loop around a " + inner_->type() +
+                                " (its velocity is imposed); use axis or dc-motor");
+  require(std::isfinite(p_.kp) && p_.kp >= 0, "kp", p_.kp, ">= 0 (1/s)");
+  require(std::isfinite(p_.kv) && p_.kv >= 0, "kv", p_.kv, ">= 0 (V/(m/s))");
+  require(std::isfinite(p_.gtau) && p_.gtau > 0, "gtau", p_.gtau, "> 0 (N/V)");
+  require(std::isfinite(p_.limit) && p_.limit > 0, "limit", p_.limit, "> 0 (V)");
+  require(std::isfinite(p_.dt) && p_.dt > 0, "dt", p_.dt, "> 0 (s)");
+  require(p_.delay == 0 || p_.delay == 1, "delay", p_.delay, "0 or 1 (samples)");
+  p_.pulses.validate("controller (emps-pd): pulses");
+  n_inner_ = inner_->num_states();
+}
+
+double EmpsPdLoop::applied(double t, std::span<const double> x, const InputValue&) const {
+  const std::size_t n = static_cast<std::size_t>(n_inner_);
+  return inner_->applied(t, x.first(n), InputValue{p_.gtau * x[n + kApplied], 0.0});
+}
+
+void EmpsPdLoop::derivatives(double t, std::span<const double> x, const InputValue&, double friction,
+                             std::span<double> dx) const {
+  const std::size_t n = static_cast<std::size_t>(n_inner_);
+  inner_->derivatives(t, x.first(n), InputValue{p_.gtau * x[n + kApplied], 0.0}, friction, dx.first(n));
+  for (std::size_t i = n; i < n + 5; ++i) dx[i] = 0.0;  // discrete states change only at samples
+}
+
+PlantSignals EmpsPdLoop::signals(double t, std::span<const double> x, const InputValue& r) const {
+  const std::size_t n = static_cast<std::size_t>(n_inner_);
+  PlantSignals s = inner_->signals(t, x.first(n), InputValue{p_.gtau * x[n + kApplied], 0.0});
+  s.voltage = x[n + kComputed];
+  s.reference = r.value;
+  return s;
+}
+
+void EmpsPdLoop::sample(double t, std::span<double> x, const InputValue& r) const {
+  const std::size_t n = static_cast<std::size_t>(n_inner_);
+  const double q = x[0];
+  if (x[n + kPrimed] == 0.0) {  // first sample: the memory starts at rest at the current position
+    x[n + kPrevQ] = q;
+    x[n + kPrevQf] = q;
+    x[n + kPrimed] = 1.0;
+  }
+  const double qf = 0.5 * q + 0.5 * x[n + kPrevQ];
+  const double qd_m = (qf - x[n + kPrevQf]) / p_.dt;
+  const double v = std::clamp(p_.kp * p_.kv * (r.value - q) - p_.kv * qd_m, -p_.limit, p_.limit) + p_.pulses.at(t).value;
+  // delay 1: the output computed at the previous sample goes to the drive now.
+  x[n + kApplied] = p_.delay == 1 ? x[n + kComputed] : v;
+  x[n + kComputed] = v;
+  x[n + kPrevQ] = q;
+  x[n + kPrevQf] = qf;
+}
+
+}  // namespace frictionlab
