@@ -91,7 +91,7 @@ std::string text_of(const Result& r, const std::string& scenario) {
 }
 
 int run(const ValidateArgs& a) {
-  check_output_path(a.output.json, a.output.overwrite, "--json");
+  check_outputs(a.output);
   const ModelFile mf = read_model(a.model);
   auto data = std::make_shared<const Dataset>(load_data(a.data, a.columns));
   ScenarioOptions so;
@@ -110,14 +110,7 @@ int run(const ValidateArgs& a) {
   Result r = validate_model(mf.model, sc, v, vo);
   r.data_file = mf.data_file;
   r.data_sha256 = mf.data_sha256;
-  std::ostream& text = a.output.json == "-" ? std::cerr : std::cout;
-  text << text_of(r, a.scenario);
-  if (a.output.json == "-") {
-    std::cout << to_json(r, -1) << "\n";
-  } else if (!a.output.json.empty()) {
-    write_file_atomic(a.output.json, to_json(r) + "\n", AtomicWriteOptions{a.output.overwrite});
-  }
-  return r.ok() ? 0 : 2;
+  return emit(r, a.output, text_of(r, a.scenario));
 }
 
 }  // namespace

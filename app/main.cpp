@@ -37,6 +37,11 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {
     std::cerr << "frictionlab: error: " << e.what() << "\n";
     return 2;
+  } catch (const std::runtime_error& e) {
+    // A failure outside the user's input: a simulation that did not converge, a missing
+    // program (gnuplot, chromium), an I/O error. The message says which and what to do.
+    std::cerr << "frictionlab: error: " << e.what() << "\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "frictionlab: internal error: " << e.what() << "\n";
     return 1;

@@ -287,11 +287,11 @@ std::string result_text(const Result& r) {
   return s.str();
 }
 
-int emit(const Result& r, const OutputOptions& o) {
+int emit(const Result& r, const OutputOptions& o, const std::string& text_override) {
   progress_stage("writing results");
   // Text goes to stderr when stdout carries the JSON, and always when the data gave no answer.
   std::ostream& text = (o.json == "-" || !r.ok()) ? std::cerr : std::cout;
-  text << result_text(r);
+  text << (text_override.empty() ? result_text(r) : text_override);
   if (o.json == "-") {
     std::cout << to_json(r, -1) << "\n";
   } else if (!o.json.empty()) {

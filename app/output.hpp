@@ -43,7 +43,7 @@ std::string result_text(const Result& r);
 /// Prints the text, writes the JSON, the figure and the report, and returns the exit status: 0
 /// when the result is ok, 2 when its status is error (the data could not give an answer; the
 /// JSON and the report still say why; no figure is drawn).
-int emit(const Result& r, const OutputOptions& o);
+int emit(const Result& r, const OutputOptions& o, const std::string& text_override = "");
 
 /// Refuses early (before any work) an output file that exists without --overwrite.
 void check_output_path(const std::string& path, bool overwrite, const std::string& option);

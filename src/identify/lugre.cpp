@@ -264,17 +264,17 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
       return fail(r, "no sliding: only " + std::to_string(sliding.size()) + " samples with |velocity| > " +
                          format_number(threshold) + " " + vunit + " (need " + std::to_string(kMinSliding) +
                          ") to identify Fc, Fs, vs and sigma2; give the static law (--static MODEL.json) or a record that slides");
-    Eigen::VectorXd vs_(static_cast<Eigen::Index>(sliding.size())), fs_(vs_.size());
+    Eigen::VectorXd v_slide(static_cast<Eigen::Index>(sliding.size())), f_slide(v_slide.size());
     for (std::size_t i = 0; i < sliding.size(); ++i) {
       const auto k = sliding[i];
-      vs_[static_cast<Eigen::Index>(i)] = vel[k];
-      fs_[static_cast<Eigen::Index>(i)] = d.force[k] - M * acc[k];
+      v_slide[static_cast<Eigen::Index>(i)] = vel[k];
+      f_slide[static_cast<Eigen::Index>(i)] = d.force[k] - M * acc[k];
     }
     StaticFitOptions so;
     so.model = StaticFitModel::stribeck;
     so.fixed_delta = o.delta;
     try {
-      const StaticFit sf = fit_static_law(vs_, fs_, so);
+      const StaticFit sf = fit_static_law(v_slide, f_slide, so);
       for (const auto& p : sf.parameters) {
         if (p.name == "Fc") st.Fc = p.value;
         if (p.name == "Fs") st.Fs = p.value;
@@ -365,6 +365,16 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   const std::vector<Window> windows =
       make_windows(vel, std::max(kPeakFraction * vmax, kPeakStribeck * st.vs), std::abs(vel[0]) <= threshold);
 
+  // Starts inside the stability bounds set below (a stiffer contact than the sample rate and
+  // substeps can follow: the warning says so).
+  {
+    const double h = dt / o.substeps;
+    if (sigma0 > 0.5 * M / (h * h) || sigma1 > 0.5 * M / h)
+      warn("the starting sigma0 = " + format_number(sigma0) + " or sigma1 = " + format_number(sigma1) +
+           " is beyond what the fit's simulation step resolves; raise --substeps or the sample rate");
+    sigma0 = std::min(sigma0, 0.5 * M / (h * h));
+    sigma1 = std::min(sigma1, 0.5 * M / h);
+  }
   double dyn[kNd] = {std::log(sigma0), std::log(sigma1)};
   double sta[kNs] = {st.sigma2, std::log(st.Fc), st.Fs - st.Fc, std::log(st.vs)};
   r.diagnostics.groups["start"] = {{"sigma0", sigma0}, {"sigma1", sigma1}, {"sigma2", st.sigma2},
@@ -381,16 +391,19 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   // factor 2 from both so that no trial step of the solver blows the simulation up.
   problem.SetParameterUpperBound(dyn, kLogS0, std::log(M / (h * h)));
   problem.SetParameterUpperBound(dyn, kLogS1, std::log(M / h));
-  problem.SetParameterLowerBound(sta, kS2, 0.0);
-  problem.SetParameterLowerBound(sta, kDF, 0.0);
-  // Keep the static levels within a decade of their starting values and vs within the speeds of
-  // the record: outside, the position no longer depends on them and the solver can wander off.
-  problem.SetParameterLowerBound(sta, kLogFc, std::log(0.1 * st.Fc));
-  problem.SetParameterUpperBound(sta, kLogFc, std::log(10 * st.Fc));
-  problem.SetParameterUpperBound(sta, kDF, 10 * st.Fc);
-  problem.SetParameterLowerBound(sta, kLogVs, std::log(1e-6 * vmax));
-  problem.SetParameterUpperBound(sta, kLogVs, std::log(vmax));
-  if (given) problem.SetParameterBlockConstant(sta);
+  if (given) {
+    problem.SetParameterBlockConstant(sta);
+  } else {
+    problem.SetParameterLowerBound(sta, kS2, 0.0);
+    problem.SetParameterLowerBound(sta, kDF, 0.0);
+    // Keep the static levels within a decade of their starting values and vs within the speeds of
+    // the record: outside, the position no longer depends on them and the solver can wander off.
+    problem.SetParameterLowerBound(sta, kLogFc, std::log(0.1 * st.Fc));
+    problem.SetParameterUpperBound(sta, kLogFc, std::log(10 * st.Fc));
+    problem.SetParameterUpperBound(sta, kDF, 10 * st.Fc);
+    problem.SetParameterLowerBound(sta, kLogVs, std::log(1e-6 * vmax));
+    problem.SetParameterUpperBound(sta, kLogVs, std::log(vmax));
+  }
 
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
