@@ -273,10 +273,17 @@ std::string result_text(const Result& r) {
       << std::setprecision(6) << p.value << "  +- " << std::left << std::setw(10) << std::setprecision(3) << p.std << " "
       << p.unit << "\n";
   }
-  s << std::setprecision(4) << "fit: relative error " << r.fit.relative_error_percent << " %, rmse " << r.fit.rmse << "\n";
+  // The fitted signal: force for most methods, the energy lost per half cycle for decay, the
+  // position for lugre's output error.
+  const Axis axis = result_axis(r);
+  const std::string fit_unit = r.method == "decay"   ? "J"
+                               : r.method == "lugre" ? std::string(unit(Quantity::displacement, axis))
+                                                     : std::string(unit(Quantity::force, axis));
+  s << std::setprecision(4) << "fit: relative error " << r.fit.relative_error_percent << " %, rmse " << r.fit.rmse << " "
+    << fit_unit << "\n";
   if (r.validation)
     s << "cross-test " << r.validation->file << ": relative error " << r.validation->relative_error_percent << " %, rmse "
-      << r.validation->rmse << "\n";
+      << r.validation->rmse << " " << fit_unit << "\n";
   if (std::isfinite(r.diagnostics.condition_number)) s << "condition number " << r.diagnostics.condition_number << "\n";
   for (const auto& [name, group] : r.diagnostics.groups) {
     s << name << ":";

@@ -1,3 +1,4 @@
+#include "frictionlab/models/parameter.hpp"
 #include "frictionlab/identify/idim.hpp"
 
 #include <Eigen/SVD>
@@ -24,12 +25,6 @@ Vec negative(const Vec& v) { return v.unaryExpr([](double x) { return x < 0 ? 1.
 
 std::string where(const IdimData& d) { return d.file.empty() ? std::string("idim: ") : d.file + ": "; }
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
 
 void check_signal(const IdimData& d, const Vec& v, const char* name, Eigen::Index n) {
   if (v.size() != n) {
@@ -38,7 +33,7 @@ void check_signal(const IdimData& d, const Vec& v, const char* name, Eigen::Inde
   }
   for (Eigen::Index k = 0; k < n; ++k) {
     if (!std::isfinite(v(k))) {
-      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": " + name + " = " + fmt(v(k)) +
+      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": " + name + " = " + detail::format_value(v(k), 6) +
                                   " is not a finite number");
     }
   }
@@ -52,8 +47,8 @@ double checked_step(const IdimData& d) {
   check_signal(d, t, "time", n);
   for (Eigen::Index k = 1; k < n; ++k) {
     if (!(t(k) > t(k - 1))) {
-      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time " + fmt(t(k)) +
-                                  " s is not greater than the previous " + fmt(t(k - 1)) +
+      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time " + detail::format_value(t(k), 6) +
+                                  " s is not greater than the previous " + detail::format_value(t(k - 1), 6) +
                                   " s; expected strictly increasing time");
     }
   }
@@ -68,7 +63,7 @@ double checked_step(const IdimData& d) {
   for (Eigen::Index k = 1; k < n; ++k) {
     if (std::abs(t(k) - t(k - 1) - median) > kRegularTol * median) {
       throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time step " +
-                                  fmt(t(k) - t(k - 1)) + " s differs from the median step " + fmt(median) +
+                                  detail::format_value(t(k) - t(k - 1), 6) + " s differs from the median step " + detail::format_value(median, 6) +
                                   " s by more than 1 %; IDIM needs regularly sampled data");
     }
   }
@@ -96,8 +91,8 @@ IdimTerm builtin(const std::string& name, const IdimOptions& o) {
   }
   if (name == "stribeck") {
     if (!(o.stribeck_vs > 0.0) || !(o.stribeck_delta > 0.0)) {
-      throw std::invalid_argument("idim: stribeck_vs = " + fmt(o.stribeck_vs) + " m/s and stribeck_delta = " +
-                                  fmt(o.stribeck_delta) + " must be positive for the 'stribeck' term");
+      throw std::invalid_argument("idim: stribeck_vs = " + detail::format_value(o.stribeck_vs, 6) + " m/s and stribeck_delta = " +
+                                  detail::format_value(o.stribeck_delta, 6) + " must be positive for the 'stribeck' term");
     }
     const double vs = o.stribeck_vs, delta = o.stribeck_delta;
     return {"Fs_minus_Fc", Quantity::force, [vs, delta](const IdimKinematics& k) {
@@ -253,6 +248,12 @@ void attach_law(Result& r, const IdimOptions& o, double vs) {
   } else {
     return;  // no friction terms: nothing to simulate with
   }
+  if (stribeck && dF < 0) {
+    r.diagnostics.warnings.push_back("Fs_minus_Fc = " + detail::format_value(dF, 6) + " " + std::string(unit(Quantity::force, o.axis)) +
+                                     " is negative: friction near zero speed is lower than Fc, so this is a regression "
+                                     "model, not a stribeck law that can be simulated");
+    return;
+  }
   try {
     FrictionLaw::from_spec(spec);
     r.law = spec;
@@ -316,8 +317,8 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
   // differentiated) are no motion at all.
   const double velocity_floor = 1e-9 * data.position.cwiseAbs().maxCoeff() / reg.dt;
   if (!(reg.max_speed > std::max(options.min_velocity, velocity_floor))) {
-    return error_result(r, where(data) + "no excitation: the velocity never exceeds " + fmt(options.min_velocity) +
-                               " (max |qd| = " + fmt(reg.max_speed) +
+    return error_result(r, where(data) + "no excitation: the velocity never exceeds " + detail::format_value(options.min_velocity, 6) +
+                               " (max |qd| = " + detail::format_value(reg.max_speed, 6) +
                                "); IDIM needs a trajectory that moves in both directions");
   }
   // A zero column (no motion in one direction, no acceleration) cannot be identified.
@@ -338,8 +339,8 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
   const double cond_scaled = svds.singularValues()(0) / svds.singularValues()(p - 1);
   r.diagnostics.numbers["condition_number_scaled"] = cond_scaled;
   if (!(cond_scaled <= options.max_condition)) {
-    return error_result(r, where(data) + "rank-deficient regressors: condition number " + fmt(cond_scaled) +
-                               " (columns normalised) exceeds " + fmt(options.max_condition) +
+    return error_result(r, where(data) + "rank-deficient regressors: condition number " + detail::format_value(cond_scaled, 6) +
+                               " (columns normalised) exceeds " + detail::format_value(options.max_condition, 6) +
                                "; the trajectory does not excite the terms independently");
   }
 
@@ -369,12 +370,12 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
   for (const auto& q : r.parameters) {
     constexpr double kPoorlyIdentified = 0.5;  // std above half the value: the estimate is not trustworthy
     if (std::abs(q.std) > kPoorlyIdentified * std::abs(q.value)) {
-      r.diagnostics.warnings.push_back(q.name + " = " + fmt(q.value) + " " + q.unit + " is poorly identified (std " +
-                                       fmt(q.std) + ")");
+      r.diagnostics.warnings.push_back(q.name + " = " + detail::format_value(q.value, 6) + " " + q.unit + " is poorly identified (std " +
+                                       detail::format_value(q.std, 6) + ")");
     }
     const bool must_be_positive = q.name == "M" || q.name.rfind("Fv", 0) == 0 || q.name.rfind("Fc", 0) == 0;
     if (must_be_positive && q.value < 0) {
-      r.diagnostics.warnings.push_back(q.name + " = " + fmt(q.value) + " " + q.unit + " is negative: not physical");
+      r.diagnostics.warnings.push_back(q.name + " = " + detail::format_value(q.value, 6) + " " + q.unit + " is negative: not physical");
     }
   }
   return r;

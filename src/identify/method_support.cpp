@@ -7,13 +7,6 @@
 
 namespace frictionlab::detail {
 
-std::string format_number(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
-
 Result make_result(const std::string& method, const std::string& model) {
   Result r;
   r.method = method;

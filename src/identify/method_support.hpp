@@ -11,7 +11,7 @@
 namespace frictionlab::detail {
 
 /// A number for messages: 6 significant digits, no trailing zeros.
-std::string format_number(double x);
+inline std::string format_number(double x) { return format_value(x, 6); }
 
 /// An empty ok Result of `method` fitting `model`, reporting units for `axis`.
 Result make_result(const std::string& method, const std::string& model);

@@ -1,4 +1,5 @@
 // Validation by simulation: see include/frictionlab/identify/validate.hpp.
+#include "frictionlab/models/parameter.hpp"
 #include "frictionlab/identify/validate.hpp"
 
 #include <algorithm>
@@ -20,12 +21,6 @@ using Vec = Eigen::VectorXd;
 
 std::string where(const ValidationData& d) { return d.file.empty() ? std::string("validate: ") : d.file + ": "; }
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
 
 void check_signal(const ValidationData& d, const Vec& v, const char* name, Eigen::Index n) {
   if (v.size() != n)
@@ -33,7 +28,7 @@ void check_signal(const ValidationData& d, const Vec& v, const char* name, Eigen
                                 std::to_string(n) + " like time");
   for (Eigen::Index k = 0; k < n; ++k)
     if (!std::isfinite(v(k)))
-      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": " + name + " = " + fmt(v(k)) +
+      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": " + name + " = " + detail::format_value(v(k), 6) +
                                   " is not a finite number");
 }
 
@@ -46,8 +41,8 @@ double checked_step(const ValidationData& d) {
   std::vector<double> steps(static_cast<std::size_t>(n - 1));
   for (Eigen::Index k = 1; k < n; ++k) {
     if (!(t(k) > t(k - 1)))
-      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time " + fmt(t(k)) +
-                                  " s is not greater than the previous " + fmt(t(k - 1)) + " s");
+      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time " + detail::format_value(t(k), 6) +
+                                  " s is not greater than the previous " + detail::format_value(t(k - 1), 6) + " s");
     steps[static_cast<std::size_t>(k - 1)] = t(k) - t(k - 1);
   }
   auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
@@ -55,8 +50,8 @@ double checked_step(const ValidationData& d) {
   constexpr double kRegularTol = 0.01;  // relative step jitter accepted (EMPS: 2.4e-5)
   for (Eigen::Index k = 1; k < n; ++k)
     if (std::abs(t(k) - t(k - 1) - *mid) > kRegularTol * *mid)
-      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time step " + fmt(t(k) - t(k - 1)) +
-                                  " s differs from the median step " + fmt(*mid) +
+      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time step " + detail::format_value(t(k) - t(k - 1), 6) +
+                                  " s differs from the median step " + detail::format_value(*mid, 6) +
                                   " s by more than 1 %; validation needs regularly sampled data");
   return (t(n - 1) - t(0)) / static_cast<double>(n - 1);
 }

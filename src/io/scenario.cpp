@@ -1,3 +1,4 @@
+#include "frictionlab/models/parameter.hpp"
 #include "frictionlab/io/scenario.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -33,12 +34,6 @@ std::string join(std::initializer_list<const char*> names) {
   return out;
 }
 
-std::string fmt(double x) {
-  std::ostringstream out;
-  out.precision(10);
-  out << x;
-  return out.str();
-}
 
 // A YAML mapping being read: knows its path for messages, the keys allowed, and reads values.
 class Section {
@@ -242,7 +237,7 @@ InputSignal read_input(const Section& s, DataSource& src) {
     const auto d = src.get(s.text("file", ""));
     if (!d) throw std::invalid_argument(s.path() + ": no data file: give 'file' here or a top-level 'data'");
     const double scale = s.number("scale", 1.0);
-    if (!std::isfinite(scale)) throw std::invalid_argument(s.at("scale") + ": " + fmt(scale) + " must be a finite number");
+    if (!std::isfinite(scale)) throw std::invalid_argument(s.at("scale") + ": " + detail::format_value(scale) + " must be a finite number");
     in = with_context(s.path(), [&] { return input_from_column(*d, s.text("time", "time"), column, scale, read_interpolation(s)); });
     src.data_step = in.times.size() > 1 ? in.times[1] - in.times[0] : 0.0;
     src.time_column = s.text("time", "time");
@@ -286,7 +281,7 @@ InputSignal read_input(const Section& s, DataSource& src) {
       throw std::invalid_argument(s.path() + ": give either 'omega' (rad/s) or 'frequency' (Hz), not both");
     if (s.has("frequency")) {
       const double f = s.number("frequency");
-      if (!(f > 0)) throw std::invalid_argument(s.at("frequency") + ": " + fmt(f) + " must be > 0 (Hz)");
+      if (!(f > 0)) throw std::invalid_argument(s.at("frequency") + ": " + detail::format_value(f) + " must be > 0 (Hz)");
       in.omega = 2.0 * std::numbers::pi * f;
     } else {
       in.omega = s.number("omega");
@@ -322,7 +317,7 @@ EmpsPdParams read_emps_pd(const Section& s, DataSource& src) {
     throw std::invalid_argument(s.path() + ": missing 'dt' (sample period, s); without it the controller takes the step of a data input");
   }
   const double delay = s.number("delay", 1.0);
-  if (delay != 0.0 && delay != 1.0) throw std::invalid_argument(s.at("delay") + ": " + fmt(delay) + " must be 0 or 1 (samples)");
+  if (delay != 0.0 && delay != 1.0) throw std::invalid_argument(s.at("delay") + ": " + detail::format_value(delay) + " must be 0 or 1 (samples)");
   p.delay = static_cast<int>(delay);
   if (s.has("pulses")) {
     std::string column;
@@ -373,7 +368,7 @@ ControllerParams read_controller(const Section& s) {
 
 double positive(const Section& s, const std::string& key, double fallback, const char* unit, bool required) {
   const double v = required ? s.number(key) : s.number(key, fallback);
-  if (!(std::isfinite(v) && v > 0)) throw std::invalid_argument(s.at(key) + ": " + fmt(v) + " must be > 0 (" + unit + ")");
+  if (!(std::isfinite(v) && v > 0)) throw std::invalid_argument(s.at(key) + ": " + detail::format_value(v) + " must be > 0 (" + unit + ")");
   return v;
 }
 
@@ -438,7 +433,7 @@ Scenario scenario_from_yaml(const YAML::Node& root, const std::string& where, co
       return fallback;
     }
     const double v = Section::to_number(root[key], top_key(key));
-    if (!(std::isfinite(v) && v > 0)) throw std::invalid_argument(top_key(key) + ": " + fmt(v) + " must be > 0 (" + unit + ")");
+    if (!(std::isfinite(v) && v > 0)) throw std::invalid_argument(top_key(key) + ": " + detail::format_value(v) + " must be > 0 (" + unit + ")");
     return v;
   };
   const bool data_input = src.data_step.has_value();
@@ -465,7 +460,7 @@ Scenario scenario_from_yaml(const YAML::Node& root, const std::string& where, co
     if (s.has("max_step")) {
       o.max_step = s.number("max_step");
       if (!(std::isfinite(o.max_step) && o.max_step >= 0))
-        throw std::invalid_argument(s.at("max_step") + ": " + fmt(o.max_step) + " must be >= 0 (s; 0 = no limit)");
+        throw std::invalid_argument(s.at("max_step") + ": " + detail::format_value(o.max_step) + " must be >= 0 (s; 0 = no limit)");
     }
     if (s.has("max_steps")) o.max_steps = static_cast<long>(positive(s, "max_steps", 0, "steps", true));
     with_context(s.at("mode"), [&] { return resolve_solver_mode(sc.law, o.mode); });

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "frictionlab/models/parameter.hpp"
 #include "frictionlab/plants/axis.hpp"
 #include "frictionlab/plants/closed_loop.hpp"
 #include "frictionlab/plants/dc_motor.hpp"
@@ -15,16 +16,10 @@
 namespace frictionlab {
 namespace {
 
-std::string fmt(double x) {
-  std::ostringstream out;
-  out.precision(10);
-  out << x;
-  return out.str();
-}
 
 // Throws "PLANT: NAME = VALUE must be RULE".
 void require(bool ok, const char* plant, const char* name, double value, const char* rule) {
-  if (!ok) throw std::invalid_argument(std::string(plant) + ": " + name + " = " + fmt(value) + " must be " + rule);
+  if (!ok) throw std::invalid_argument(std::string(plant) + ": " + name + " = " + detail::format_value(value) + " must be " + rule);
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+#include "frictionlab/models/parameter.hpp"
 #include "frictionlab/simulate/input.hpp"
 
 #include <algorithm>
@@ -9,15 +10,9 @@
 namespace frictionlab {
 namespace {
 
-std::string fmt(double x) {
-  std::ostringstream out;
-  out.precision(10);
-  out << x;
-  return out.str();
-}
 
 void require(bool ok, const std::string& where, const std::string& field, double value, const std::string& rule) {
-  if (!ok) throw std::invalid_argument(where + "." + field + ": " + fmt(value) + " must be " + rule);
+  if (!ok) throw std::invalid_argument(where + "." + field + ": " + detail::format_value(value) + " must be " + rule);
 }
 
 // Corner times of a trapezoid: start, end of rise, end of hold, end of fall.
@@ -63,7 +58,7 @@ void InputSignal::validate(const std::string& where) const {
       if (has_limit) {
         finite("limit", limit);
         require(rate == 0.0 || (limit - initial) * rate >= 0, where, "limit", limit,
-                "on the side the ramp moves to from initial = " + fmt(initial) + " at rate " + fmt(rate));
+                "on the side the ramp moves to from initial = " + detail::format_value(initial) + " at rate " + detail::format_value(rate));
       }
       break;
     case InputShape::trapezoid:
@@ -89,7 +84,7 @@ void InputSignal::validate(const std::string& where) const {
         require(std::isfinite(values[i]), where, "values[" + std::to_string(i) + "]", values[i], "a finite number");
         if (i > 0)
           require(times[i] > times[i - 1], where, "times[" + std::to_string(i) + "]", times[i],
-                  "> times[" + std::to_string(i - 1) + "] = " + fmt(times[i - 1]) + " (strictly increasing, s)");
+                  "> times[" + std::to_string(i - 1) + "] = " + detail::format_value(times[i - 1]) + " (strictly increasing, s)");
       }
       break;
   }

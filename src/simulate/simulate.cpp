@@ -1,3 +1,4 @@
+#include "frictionlab/models/parameter.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 #include <cvode/cvode.h>
@@ -28,12 +29,6 @@ const char* solver_mode_name(SolverMode mode) {
 
 namespace {
 
-std::string fmt(double x) {
-  std::ostringstream out;
-  out.precision(10);
-  out << x;
-  return out.str();
-}
 
 bool has_stiction(const FrictionLaw& law) {
   return !law.is_dynamic() && (law.breakaway_positive() > 0.0 || law.breakaway_negative() > 0.0);
@@ -42,24 +37,24 @@ bool has_stiction(const FrictionLaw& law) {
 void check_options(const SimulationOptions& o, SolverMode mode) {
   auto positive = [](const char* name, double v, const char* unit) {
     if (!(std::isfinite(v) && v > 0))
-      throw std::invalid_argument(std::string("simulation option ") + name + " = " + fmt(v) + " must be > 0 (" + unit + ")");
+      throw std::invalid_argument(std::string("simulation option ") + name + " = " + detail::format_value(v) + " must be > 0 (" + unit + ")");
   };
   positive("duration", o.duration, "s");
   positive("output_rate", o.output_rate, "Hz");
   if (!std::isfinite(o.initial_position) || !std::isfinite(o.initial_velocity))
     throw std::invalid_argument("simulation option initial position/velocity must be finite, got " +
-                                fmt(o.initial_position) + ", " + fmt(o.initial_velocity));
+                                detail::format_value(o.initial_position) + ", " + detail::format_value(o.initial_velocity));
   if (mode == SolverMode::fixed_step) {
     positive("dt", o.dt, "s");
     const double ratio = 1.0 / (o.output_rate * o.dt);
     if (ratio < 1.0 - 1e-9 || std::abs(ratio - std::round(ratio)) > 1e-6 * ratio)
-      throw std::invalid_argument("simulation option dt = " + fmt(o.dt) + " s must divide the output period 1/output_rate = " +
-                                  fmt(1.0 / o.output_rate) + " s a whole number of times");
+      throw std::invalid_argument("simulation option dt = " + detail::format_value(o.dt) + " s must divide the output period 1/output_rate = " +
+                                  detail::format_value(1.0 / o.output_rate) + " s a whole number of times");
   } else {
     positive("rtol", o.rtol, "relative");
     positive("atol", o.atol, "absolute, state units");
     if (!(std::isfinite(o.max_step) && o.max_step >= 0))
-      throw std::invalid_argument("simulation option max_step = " + fmt(o.max_step) + " must be >= 0 (s; 0 = no limit)");
+      throw std::invalid_argument("simulation option max_step = " + detail::format_value(o.max_step) + " must be >= 0 (s; 0 = no limit)");
   }
   if (o.max_steps <= 0)
     throw std::invalid_argument("simulation option max_steps = " + std::to_string(o.max_steps) + " must be > 0");
@@ -311,7 +306,7 @@ class Engine {
   }
 
   [[noreturn]] void fail(double t, const std::string& why) {
-    throw std::runtime_error("simulation failed at t = " + fmt(t) + " s: " + why);
+    throw std::runtime_error("simulation failed at t = " + detail::format_value(t) + " s: " + why);
   }
 
   void run_cvode(Trajectory& tr, std::size_t rows) {
@@ -507,8 +502,8 @@ class Engine {
       const double ratio = sample_period_ / dt;
       per_sample = std::lround(ratio);
       if (per_sample < 1 || std::abs(ratio - static_cast<double>(per_sample)) > 1e-6 * ratio)
-        throw std::invalid_argument("simulation option dt = " + fmt(dt) + " s must divide the controller's sample period " +
-                                    fmt(sample_period_) + " s a whole number of times");
+        throw std::invalid_argument("simulation option dt = " + detail::format_value(dt) + " s must divide the controller's sample period " +
+                                    detail::format_value(sample_period_) + " s a whole number of times");
       plant_.sample(0.0, x, input_.at(0.0));
     }
     long step = 0;
@@ -600,7 +595,7 @@ SolverMode resolve_solver_mode(const FrictionLaw& law, SolverMode requested) {
     case SolverMode::stiff:
       if (has_stiction(law))
         throw std::invalid_argument("solver.mode = stiff does not fit the law '" + law.name() +
-                                    "' (it has a breakaway level of " + fmt(law.breakaway_positive()) +
+                                    "' (it has a breakaway level of " + detail::format_value(law.breakaway_positive()) +
                                     "; stiction needs the hybrid engine); valid modes for it: auto, hybrid, fixed-step");
       return SolverMode::stiff;
     case SolverMode::fixed_step:

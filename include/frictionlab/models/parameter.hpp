@@ -34,10 +34,11 @@ std::string_view unit(Quantity q, Axis axis = Axis::linear);
 Axis parse_axis(std::string_view text);
 
 namespace detail {
-/// A value as validation messages print it (10 significant digits: 1e-05, not std::to_string's 0.000010).
-inline std::string format_value(double value) {
+/// A number as every frictionlab message prints it: `digits` significant digits, no trailing
+/// zeros (1e-05, not std::to_string's 0.000010). Default 10, enough to tell values apart.
+inline std::string format_value(double value, int digits = 10) {
   std::ostringstream out;
-  out.precision(10);
+  out.precision(digits);
   out << value;
   return out.str();
 }
