@@ -28,7 +28,7 @@ demo: build
 	@bash examples/demo.sh $(BUILD)
 
 sanitize: deps
-	@$(call CONFIGURE,$(BUILD)-sanitize,-DCMAKE_BUILD_TYPE=Debug -DFRICTIONLAB_SANITIZE=ON -DFRICTIONLAB_BUILD_PYTHON=OFF)
+	@$(call CONFIGURE,$(BUILD)-sanitize,-DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRICTIONLAB_SANITIZE=ON -DFRICTIONLAB_BUILD_PYTHON=OFF)
 	@cmake --build $(BUILD)-sanitize -j $(JOBS)
 	@cd $(BUILD)-sanitize && ctest --output-on-failure -j $(JOBS) -LE python
 

@@ -11,7 +11,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("frictionlab ") + frictionlab::kVersion);
   app.require_subcommand(1);
   app.footer(
-      "Exit status: 0 success, 2 bad input or data that cannot give an answer, 1 internal failure.\n"
+      "Exit status: 0 success, 2 bad input or data that cannot give an answer, 1 any other failure\n"
+      "(a simulation that did not converge, a missing program such as gnuplot, an internal error).\n"
       "Run `frictionlab COMMAND --help` for a command's options.");
 
   std::vector<std::pair<CLI::App*, frictionlab::cli::Handler>> handlers;

@@ -53,14 +53,15 @@ from .identify import (
     sweep_points,
 )
 from .simulate import simulate
+from .validate import identify_lugre, validate
 
 __all__ = [
     "BreakawayOptions", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
     "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
     "cross_test", "decay_envelope", "detect_stick_slip", "fit_static_law", "identify_breakaway", "identify_decay",
-    "identify_idim", "identify_sweep", "idim_reconstruction", "idim_regression", "law_names", "load", "load_law",
-    "sha256_file", "simulate", "sweep_points",
+    "identify_idim", "identify_lugre", "identify_sweep", "idim_reconstruction", "idim_regression", "law_names", "load", "load_law",
+    "sha256_file", "simulate", "sweep_points", "validate",
 ]
 
 

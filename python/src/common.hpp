@@ -40,5 +40,6 @@ void init_io(py::module_& m);
 void init_identify(py::module_& m);
 void init_simulate(py::module_& m);
 void init_analysis(py::module_& m);
+void init_validate(py::module_& m);
 
 }  // namespace frictionlab::python

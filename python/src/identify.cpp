@@ -128,6 +128,8 @@ void init_identify(py::module_& m) {
       .def_readonly("relative_error_percent", &ValidationFigures::relative_error_percent, "100 ||y - y_hat|| / ||y||, percent.")
       .def_readonly("rmse", &ValidationFigures::rmse, "Root mean square error, unit of y (N or N m).")
       .def_readonly("samples", &ValidationFigures::samples, "Samples compared.")
+      .def_readonly("signal_errors_percent", &ValidationFigures::signal_errors_percent,
+                    "validate(): relative error (percent) of each signal: position, velocity, acceleration, force.")
       .def("__repr__", [](const ValidationFigures& f) {
         return "ValidationFigures(file='" + f.file + "', relative_error_percent=" + num(f.relative_error_percent) +
                ", rmse=" + num(f.rmse) + ", samples=" + std::to_string(f.samples) + ")";

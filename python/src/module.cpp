@@ -66,4 +66,5 @@ PYBIND11_MODULE(_core, m) {
   fp::init_identify(m);
   fp::init_simulate(m);
   fp::init_analysis(m);
+  fp::init_validate(m);
 }
