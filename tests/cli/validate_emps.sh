@@ -15,7 +15,12 @@ cols=(--time t --position qm --input vir --gain gtau)
 "$exe" identify idim "$data/DATA_EMPS.mat" "${cols[@]}" --json "$tmp/model.json" > /dev/null
 
 # Identification file, JSON to a file; pulses file, JSON on stdout (text on stderr).
-"$exe" validate "$tmp/model.json" "$data/DATA_EMPS.mat" --scenario "$scenario" "${cols[@]}" --json "$tmp/val.json" > "$tmp/out.txt"
+"$exe" validate "$tmp/model.json" "$data/DATA_EMPS.mat" --scenario "$scenario" "${cols[@]}" --json "$tmp/val.json" \
+  --plot "$tmp/val.svg" --report "$tmp/report" > "$tmp/out.txt"
+# The figure (measured versus simulated position, velocity, force) and the report come out.
+grep -q "<svg" "$tmp/val.svg" && grep -q "position" "$tmp/val.svg" || { echo "FAIL: validate --plot"; exit 1; }
+grep -q "relative error" "$tmp/report/report.html" && grep -q "<svg" "$tmp/report/report.html" || {
+  echo "FAIL: validate --report"; exit 1; }
 grep -q "velocity" "$tmp/out.txt" || { echo "FAIL: text"; cat "$tmp/out.txt"; exit 1; }
 "$exe" validate "$tmp/model.json" "$data/DATA_EMPS_PULSES.mat" --scenario "$scenario" "${cols[@]}" --json - \
   2> "$tmp/err.txt" > "$tmp/val_pulses.json"
