@@ -44,7 +44,9 @@ class StribeckChunk final : public ceres::CostFunction {
       const double x = std::abs(v) / vs;
       const double lx = std::log(x);
       const double u = std::exp(delta * lx);
-      const double e = std::exp(-u);
+      // Far past vs the decay and its derivatives are below rounding (see stribeck_decay);
+      // skipping exp there also avoids its slow underflow path.
+      const double e = u > kNegligibleDecayExponent ? 0.0 : std::exp(-u);
       r[i] = s * (Fc + dF * e) + Fv * v - f_[i];
       if (jac && jac[0]) {
         double* J = jac[0] + i * kNp;
