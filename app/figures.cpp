@@ -47,7 +47,9 @@ FigurePanel time_panel(std::string y_label, bool zero_line = true) {
 std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 std::string title_for(const Result& r, const std::string& what) {
-  return what + (r.data_file.empty() ? "" : " - " + file_name(r.data_file));
+  // A validation is drawn against its own run, not the identification data the model came from.
+  const std::string& file = r.method == "validate" && r.validation ? r.validation->file : r.data_file;
+  return what + (file.empty() ? "" : " - " + file_name(file));
 }
 
 double parameter(const Result& r, const std::string& name) {
