@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "models/validation_cases.hpp"
 #include "frictionlab/models/dahl.hpp"
 #include "frictionlab/models/elastoplastic.hpp"
 #include "frictionlab/models/gms.hpp"
@@ -25,6 +26,10 @@
 
 namespace frictionlab {
 namespace {
+
+using testing::error_of;
+using testing::RuleCase;
+using testing::with;
 
 // Known values: the formula by hand, in another order of operations: a few ulps apart.
 constexpr double kRelTol = 1e-12;
@@ -75,14 +80,6 @@ void rk4(const Law& law, std::vector<double>& z, double t0, double h, long n, Ve
   }
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "<no std::invalid_argument>";
-}
 
 // The static map a dynamic law must reproduce when sliding steadily: Stribeck level + sigma2 v.
 template <class Law>
@@ -177,20 +174,7 @@ TEST(DynamicLaws, OddSymmetry) {
 // ---------------------------------------------------------------------------------------------
 // Validation: one case per rule.
 
-struct RuleCase {
-  std::string name;
-  std::function<void()> validate;
-  std::string message;
-};
 
-template <class Law, class Edit>
-std::function<void()> with(Edit edit) {
-  return [edit] {
-    Law law{};
-    edit(law);
-    law.validate();
-  };
-}
 
 class DynamicValidation : public ::testing::TestWithParam<RuleCase> {};
 

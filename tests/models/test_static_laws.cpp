@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "models/validation_cases.hpp"
 #include "frictionlab/models/asymmetric.hpp"
 #include "frictionlab/models/coulomb.hpp"
 #include "frictionlab/models/coulomb_viscous.hpp"
@@ -22,6 +23,10 @@
 
 namespace frictionlab {
 namespace {
+
+using testing::error_of;
+using testing::RuleCase;
+using testing::with;
 
 // The expected values below are the law's formula evaluated by hand in a different order of
 // operations (and with exp/tanh/atan of the same arguments): they agree to a few ulps.
@@ -247,29 +252,8 @@ TEST(Asymmetric, EqualSidesIsTheSymmetricLaw) {
 // ---------------------------------------------------------------------------------------------
 // Validation: one case per rule, with the exact message (law, parameter, value, rule).
 
-struct RuleCase {
-  std::string name;
-  std::function<void()> validate;
-  std::string message;
-};
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "<no std::invalid_argument>";
-}
 
-template <class Law, class Edit>
-std::function<void()> with(Edit edit) {
-  return [edit] {
-    Law law{};
-    edit(law);
-    law.validate();
-  };
-}
 
 class StaticValidation : public ::testing::TestWithParam<RuleCase> {};
 
