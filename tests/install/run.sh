@@ -15,4 +15,5 @@ if [[ "$out" != "$expected" ]]; then
   echo "install test: consumer printed '$out', expected '$expected'" >&2
   exit 1
 fi
-echo "install test: find_package(frictionlab) consumer built and ran: 1 passed, 0 failed"
+echo "install test: a consumer found frictionlab with find_package, built and ran"
+echo "install-test: 1 passed, 0 failed"
