@@ -226,11 +226,14 @@ void add_plot_option(CLI::App* cmd, std::string& plot) {
                   "written next to it for restyling");
 }
 
+namespace {
+// Refuses early (before any work) an output file that exists without --overwrite.
 void check_output_path(const std::string& path, bool overwrite, const std::string& option) {
   if (path.empty() || path == "-" || overwrite) return;
   if (std::filesystem::exists(path))
     throw std::invalid_argument(path + " exists (" + option + "); pass --overwrite to replace it");
 }
+}  // namespace
 
 void check_plot(const std::string& plot, bool overwrite) {
   if (plot.empty()) return;

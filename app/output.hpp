@@ -45,9 +45,6 @@ std::string result_text(const Result& r);
 /// JSON and the report still say why; no figure is drawn).
 int emit(const Result& r, const OutputOptions& o, const std::string& text_override = "");
 
-/// Refuses early (before any work) an output file that exists without --overwrite.
-void check_output_path(const std::string& path, bool overwrite, const std::string& option);
-
 /// A progress line on stderr for long runs, only when stderr is a terminal (and
 /// FRICTIONLAB_NO_PROGRESS is unset): "frictionlab identify idim: fitting ... 3.2 s", shown once
 /// a run has taken more than a second and cleared before any other output.

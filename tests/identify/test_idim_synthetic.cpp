@@ -9,11 +9,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "error_message.hpp"
 #include "frictionlab/identify/idim.hpp"
 
 namespace fl = frictionlab;
 
 namespace {
+
+using frictionlab::testing::error_of;
 
 // The recipe differentiates a filtered position numerically; on a 0.5-1.3 Hz trajectory at
 // 1 kHz the central-difference error is (w dt)^2 / 6 ~ 1e-5 and the 100 Hz Butterworth passes
@@ -62,14 +65,6 @@ void expect_rel(double got, double want, const std::string& what) {
   EXPECT_NEAR(got, want, kRecoveryRelTol * std::abs(want)) << what;
 }
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "<no std::invalid_argument thrown>";
-}
 
 }  // namespace
 
@@ -159,7 +154,7 @@ TEST(IdimErrors, BarelyMovingIsNoExcitation) {
 TEST(IdimErrors, NonIncreasingTimeNamesTheSample) {
   fl::IdimData d = simulate(false);
   d.time(100) = d.time(99);
-  const std::string msg = message_of([&] { fl::identify_idim(d); });
+  const std::string msg = error_of([&] { fl::identify_idim(d); });
   EXPECT_NE(msg.find("sample 101"), std::string::npos) << msg;
   EXPECT_NE(msg.find("strictly increasing"), std::string::npos) << msg;
 }
@@ -167,20 +162,20 @@ TEST(IdimErrors, NonIncreasingTimeNamesTheSample) {
 TEST(IdimErrors, NanAndLengthAndTermErrors) {
   fl::IdimData d = simulate(false);
   d.force(7) = std::nan("");
-  EXPECT_NE(message_of([&] { fl::identify_idim(d); }).find("sample 8: force"), std::string::npos);
+  EXPECT_NE(error_of([&] { fl::identify_idim(d); }).find("sample 8: force"), std::string::npos);
   d = simulate(false);
   d.force.conservativeResize(10);
-  EXPECT_NE(message_of([&] { fl::identify_idim(d); }).find("force has 10 samples"), std::string::npos);
+  EXPECT_NE(error_of([&] { fl::identify_idim(d); }).find("force has 10 samples"), std::string::npos);
   fl::IdimOptions o;
   o.terms = {"inertia", "friction"};
-  const std::string msg = message_of([&] { fl::identify_idim(simulate(false), o); });
+  const std::string msg = error_of([&] { fl::identify_idim(simulate(false), o); });
   EXPECT_NE(msg.find("unknown term 'friction'"), std::string::npos) << msg;
   EXPECT_NE(msg.find("coulomb"), std::string::npos) << msg;
   o.terms = {"viscous", "viscous"};
-  EXPECT_NE(message_of([&] { fl::identify_idim(simulate(false), o); }).find("twice"), std::string::npos);
+  EXPECT_NE(error_of([&] { fl::identify_idim(simulate(false), o); }).find("twice"), std::string::npos);
   o = {};
   o.cutoff_hz = 800;  // above the 500 Hz Nyquist frequency
-  EXPECT_NE(message_of([&] { fl::identify_idim(simulate(false), o); }).find("Nyquist"), std::string::npos);
+  EXPECT_NE(error_of([&] { fl::identify_idim(simulate(false), o); }).find("Nyquist"), std::string::npos);
 }
 
 TEST(IdimErrors, CollinearTermsAreRankDeficient) {

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "error_message.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/io/csv.hpp"
@@ -22,6 +23,8 @@ namespace fl = frictionlab;
 namespace fs = std::filesystem;
 
 namespace {
+
+using frictionlab::testing::error_of;
 
 const std::string kEmps = std::string(FRICTIONLAB_DATA_DIR) + "/emps/DATA_EMPS.mat";
 const std::string kPulses = std::string(FRICTIONLAB_DATA_DIR) + "/emps/DATA_EMPS_PULSES.mat";
@@ -47,14 +50,6 @@ class TempDir {
   fs::path path_;
 };
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "<no std::invalid_argument thrown>";
-}
 
 }  // namespace
 
@@ -87,7 +82,7 @@ TEST(Csv, ReadsColumnsAndLineNumbers) {
 TEST(Csv, NanAndEmptyCellsNameRowAndColumn) {
   TempDir d;
   const auto p = d.file("nan.csv", "time,force\n0,1\n0.001,NaN\n0.002,\n0.003,4\n");
-  const std::string msg = message_of([&] { fl::read_csv(p); });
+  const std::string msg = error_of([&] { fl::read_csv(p); });
   EXPECT_NE(msg.find(p), std::string::npos) << msg;
   EXPECT_NE(msg.find("line 3"), std::string::npos) << msg;
   EXPECT_NE(msg.find("column 2 'force'"), std::string::npos) << msg;
@@ -98,18 +93,18 @@ TEST(Csv, NanAndEmptyCellsNameRowAndColumn) {
   EXPECT_EQ(data.row_label(1), "line 5");
   // Text is always an error, even with drop_invalid.
   const auto q = d.file("text.csv", "time,force\n0,1\n0.001,abc\n");
-  const std::string text_msg = message_of([&] { fl::read_csv(q, o); });
+  const std::string text_msg = error_of([&] { fl::read_csv(q, o); });
   EXPECT_NE(text_msg.find("line 3, column 2 'force': expected a number, got 'abc'"), std::string::npos) << text_msg;
 }
 
 TEST(Csv, WrongCellCountAndHeaderProblems) {
   TempDir d;
-  EXPECT_NE(message_of([&] { fl::read_csv(d.file("n.csv", "a,b\n1,2\n3\n")); }).find("line 3: 1 cells; expected 2"),
+  EXPECT_NE(error_of([&] { fl::read_csv(d.file("n.csv", "a,b\n1,2\n3\n")); }).find("line 3: 1 cells; expected 2"),
             std::string::npos);
-  EXPECT_NE(message_of([&] { fl::read_csv(d.file("h.csv", "1,2\n3,4\n")); }).find("header"), std::string::npos);
-  EXPECT_NE(message_of([&] { fl::read_csv(d.file("dup.csv", "a,a\n1,2\n")); }).find("duplicate"), std::string::npos);
-  EXPECT_NE(message_of([&] { fl::read_csv(d.file("e.csv", "")); }).find("empty"), std::string::npos);
-  EXPECT_NE(message_of([&] { fl::read_csv("/nonexistent.csv"); }).find("/nonexistent.csv"), std::string::npos);
+  EXPECT_NE(error_of([&] { fl::read_csv(d.file("h.csv", "1,2\n3,4\n")); }).find("header"), std::string::npos);
+  EXPECT_NE(error_of([&] { fl::read_csv(d.file("dup.csv", "a,a\n1,2\n")); }).find("duplicate"), std::string::npos);
+  EXPECT_NE(error_of([&] { fl::read_csv(d.file("e.csv", "")); }).find("empty"), std::string::npos);
+  EXPECT_NE(error_of([&] { fl::read_csv("/nonexistent.csv"); }).find("/nonexistent.csv"), std::string::npos);
 }
 
 TEST(Mat, ReadsEmpsVariables) {
@@ -130,7 +125,7 @@ TEST(Mat, ReadsEmpsVariables) {
 TEST(Mat, CorruptFilesGiveAnErrorNamingTheFile) {
   TempDir d;
   const auto garbage = d.file("garbage.mat", std::string(4096, '\x5a') + "not a mat file");
-  const std::string msg = message_of([&] { fl::read_mat(garbage); });
+  const std::string msg = error_of([&] { fl::read_mat(garbage); });
   EXPECT_NE(msg.find(garbage), std::string::npos) << msg;
 
   // A real header with the data cut off.
@@ -138,13 +133,13 @@ TEST(Mat, CorruptFilesGiveAnErrorNamingTheFile) {
   std::string head(2000, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   const auto truncated = d.file("truncated.mat", head);
-  const std::string msg2 = message_of([&] { fl::read_mat(truncated); });
+  const std::string msg2 = error_of([&] { fl::read_mat(truncated); });
   EXPECT_NE(msg2.find("truncated"), std::string::npos) << msg2;
   EXPECT_NE(msg2.find(truncated), std::string::npos) << msg2;
 
   const auto empty = d.file("empty.mat", "");
-  EXPECT_NE(message_of([&] { fl::read_mat(empty); }).find(empty), std::string::npos);
-  EXPECT_NE(message_of([&] { fl::read_mat("/nonexistent.mat"); }).find("/nonexistent.mat"), std::string::npos);
+  EXPECT_NE(error_of([&] { fl::read_mat(empty); }).find(empty), std::string::npos);
+  EXPECT_NE(error_of([&] { fl::read_mat("/nonexistent.mat"); }).find("/nonexistent.mat"), std::string::npos);
 }
 
 TEST(Load, ChoosesByExtension) {
@@ -152,14 +147,14 @@ TEST(Load, ChoosesByExtension) {
   const auto p = d.file("UPPER.CSV", "t,x\n0,1\n1,2\n");
   EXPECT_EQ(fl::load_dataset(p).rows(), 2);
   const auto q = d.file("data.txt", "t,x\n");
-  const std::string msg = message_of([&] { fl::load_dataset(q); });
+  const std::string msg = error_of([&] { fl::load_dataset(q); });
   EXPECT_NE(msg.find(".csv"), std::string::npos) << msg;
   EXPECT_NE(msg.find(".mat"), std::string::npos) << msg;
 }
 
 TEST(Columns, MissingColumnListsTheAvailableOnes) {
   const fl::Dataset data = fl::read_mat(kEmps);
-  const std::string msg = message_of([&] { fl::select_column(data, "position", "--position"); });
+  const std::string msg = error_of([&] { fl::select_column(data, "position", "--position"); });
   EXPECT_NE(msg.find("no column 'position'"), std::string::npos) << msg;
   EXPECT_NE(msg.find("qm"), std::string::npos) << msg;
   EXPECT_NE(msg.find("vir"), std::string::npos) << msg;
@@ -171,7 +166,7 @@ TEST(Columns, ConstantsAsNumbersOrScalarNames) {
   const fl::Dataset data = fl::read_mat(kEmps);
   EXPECT_DOUBLE_EQ(fl::resolve_constant(data, "35.15", "--gain"), 35.15);
   EXPECT_DOUBLE_EQ(fl::resolve_constant(data, "gtau", "--gain"), data.scalars.at("gtau"));
-  const std::string msg = message_of([&] { fl::resolve_constant(data, "gain", "--gain"); });
+  const std::string msg = error_of([&] { fl::resolve_constant(data, "gain", "--gain"); });
   EXPECT_NE(msg.find("--gain"), std::string::npos) << msg;
   EXPECT_NE(msg.find("kv"), std::string::npos) << msg;
 }
@@ -182,7 +177,7 @@ TEST(Columns, ScaleFactors) {
   fl::apply_scales(data, {"x=1e-3"});
   EXPECT_DOUBLE_EQ(data.column("x")(1), 2.0);
   EXPECT_THROW(fl::apply_scales(data, {"x=abc"}), std::invalid_argument);
-  EXPECT_NE(message_of([&] { fl::apply_scales(data, {"y=2"}); }).find("columns: t, x"), std::string::npos);
+  EXPECT_NE(error_of([&] { fl::apply_scales(data, {"y=2"}); }).find("columns: t, x"), std::string::npos);
 }
 
 TEST(Columns, TimeMustIncreaseAndBeRegular) {
@@ -191,18 +186,18 @@ TEST(Columns, TimeMustIncreaseAndBeRegular) {
   constexpr double kStepTol = 1e-12;  // mean of exact-ish decimal steps
   EXPECT_NEAR(fl::check_time(ok, ok.column("t")), 0.1, kStepTol);
   const fl::Dataset back = fl::read_csv(d.file("back.csv", "t\n0\n0.1\n0.1\n0.3\n"));
-  const std::string msg = message_of([&] { fl::check_time(back, back.column("t")); });
+  const std::string msg = error_of([&] { fl::check_time(back, back.column("t")); });
   EXPECT_NE(msg.find("line 4"), std::string::npos) << msg;
   EXPECT_NE(msg.find("strictly increasing"), std::string::npos) << msg;
   const fl::Dataset gap = fl::read_csv(d.file("gap.csv", "t\n0\n0.1\n0.2\n0.5\n0.6\n"));
-  EXPECT_NE(message_of([&] { fl::check_time(gap, gap.column("t")); }).find("line 5"), std::string::npos);
+  EXPECT_NE(error_of([&] { fl::check_time(gap, gap.column("t")); }).find("line 5"), std::string::npos);
 }
 
 TEST(AtomicWrite, WritesAndRefusesToOverwrite) {
   TempDir d;
   const std::string p = (d.path() / "out.json").string();
   fl::write_file_atomic(p, "first");
-  const std::string msg = message_of([&] { fl::write_file_atomic(p, "second"); });
+  const std::string msg = error_of([&] { fl::write_file_atomic(p, "second"); });
   EXPECT_NE(msg.find(p), std::string::npos) << msg;
   EXPECT_NE(msg.find("--overwrite"), std::string::npos) << msg;
   std::ifstream in(p);

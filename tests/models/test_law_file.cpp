@@ -14,22 +14,16 @@
 
 #include <unistd.h>
 
+#include "error_message.hpp"
 #include "frictionlab/io/law_file.hpp"
 
 namespace frictionlab {
 namespace {
 
+using frictionlab::testing::error_of;
+
 using ::testing::HasSubstr;
 
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "<no std::invalid_argument>";
-}
 
 TEST(LawFromYaml, Stribeck) {
   const FrictionLaw law = law_from_yaml(YAML::Load("law: stribeck\nFc: 1.0\nFs: 1.5\nvs: 0.001\nFv: 0.4\n"), "test.yaml");

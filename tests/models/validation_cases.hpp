@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "error_message.hpp"
+
 namespace frictionlab::testing {
 
 /// A rule of a law: its name (for the test's name), a call that breaks it, the exact message.
@@ -13,16 +15,6 @@ struct RuleCase {
   std::function<void()> validate;
   std::string message;
 };
-
-/// The message of the std::invalid_argument `f` throws, or a marker when it throws none.
-inline std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "<no std::invalid_argument>";
-}
 
 /// A call that validates a default `Law` after `edit` changed it.
 template <class Law, class Edit>
