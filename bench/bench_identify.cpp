@@ -10,7 +10,7 @@
 
 #include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/static_fit.hpp"
-#include "frictionlab/io/columns.hpp"
+#include "frictionlab/io/idim_record.hpp"
 #include "frictionlab/io/mat.hpp"
 
 namespace {
@@ -18,14 +18,7 @@ namespace {
 namespace fl = frictionlab;
 
 fl::IdimData emps(const std::string& name) {
-  const fl::Dataset d = fl::read_mat(std::string(FRICTIONLAB_SOURCE_DIR) + "/data/emps/" + name);
-  fl::IdimData data;
-  data.time = fl::select_column(d, "t", "--time");
-  data.position = fl::select_column(d, "qm", "--position");
-  data.force = fl::resolve_constant(d, "gtau", "--gain") * fl::select_column(d, "vir", "--input");
-  data.file = d.file;
-  data.sha256 = d.sha256;
-  return data;
+  return fl::idim_record(fl::read_mat(std::string(FRICTIONLAB_SOURCE_DIR) + "/data/emps/" + name), {"t", "qm", "vir", "gtau"});
 }
 
 // read .mat + filter + differentiate + decimate + solve + cross-test on the second file.

@@ -13,15 +13,13 @@
 #include "frictionlab/signal/decimate.hpp"
 #include "frictionlab/signal/differentiate.hpp"
 #include "frictionlab/signal/filtfilt.hpp"
+#include "../signal/scratch.hpp"
 
 namespace frictionlab {
 namespace {
 
 using Vec = Eigen::VectorXd;
 
-Vec sign(const Vec& v) { return v.unaryExpr([](double x) { return double((x > 0) - (x < 0)); }); }
-Vec positive(const Vec& v) { return v.unaryExpr([](double x) { return x > 0 ? 1.0 : 0.0; }); }
-Vec negative(const Vec& v) { return v.unaryExpr([](double x) { return x < 0 ? 1.0 : 0.0; }); }
 
 std::string where(const IdimData& d) { return d.file.empty() ? std::string("idim: ") : d.file + ": "; }
 
@@ -53,13 +51,20 @@ double checked_step(const IdimData& d) {
     }
   }
   const double dt = (t(n - 1) - t(0)) / static_cast<double>(n - 1);
+  constexpr double kRegularTol = 0.01;  // relative step jitter accepted (EMPS: 2.4e-5)
+  // Quick pass: all steps within kRegularTol of the smallest are within it of the median too.
+  double smallest = t(1) - t(0), largest = smallest;
+  for (Eigen::Index k = 2; k < n; ++k) {
+    smallest = std::min(smallest, t(k) - t(k - 1));
+    largest = std::max(largest, t(k) - t(k - 1));
+  }
+  if (largest - smallest <= kRegularTol * smallest) return dt;
   // Steps are compared with the median step, so a gap is reported where it is.
   std::vector<double> steps(static_cast<std::size_t>(n - 1));
   for (Eigen::Index k = 1; k < n; ++k) steps[static_cast<std::size_t>(k - 1)] = t(k) - t(k - 1);
   auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
   std::nth_element(steps.begin(), mid, steps.end());
   const double median = *mid;
-  constexpr double kRegularTol = 0.01;  // relative step jitter accepted (EMPS: 2.4e-5)
   for (Eigen::Index k = 1; k < n; ++k) {
     if (std::abs(t(k) - t(k - 1) - median) > kRegularTol * median) {
       throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time step " +
@@ -70,36 +75,41 @@ double checked_step(const IdimData& d) {
   return dt;
 }
 
+// A built-in term from its value at one sample, f(qd, qdd), in both forms: written into a
+// buffer (what the pipeline uses) and returned as a new column.
+template <class F>
+IdimTerm sample_term(const char* parameter, Quantity quantity, F f) {
+  auto fill = [f](const IdimKinematics& k, Eigen::Ref<Vec> out) {
+    for (Eigen::Index i = 0; i < out.size(); ++i) out(i) = f(k.qd(i), k.qdd(i));
+  };
+  auto column = [fill](const IdimKinematics& k) {
+    Vec v(k.qd.size());
+    fill(k, v);
+    return v;
+  };
+  return {parameter, quantity, column, fill};
+}
+
+double sign_of(double v) { return double((v > 0) - (v < 0)); }
+
 IdimTerm builtin(const std::string& name, const IdimOptions& o) {
-  if (name == "inertia") return {"M", Quantity::inertia, [](const IdimKinematics& k) { return k.qdd; }};
-  if (name == "viscous") return {"Fv", Quantity::viscous, [](const IdimKinematics& k) { return k.qd; }};
-  if (name == "coulomb") return {"Fc", Quantity::force, [](const IdimKinematics& k) { return sign(k.qd); }};
-  if (name == "offset") {
-    return {"offset", Quantity::force, [](const IdimKinematics& k) { return Vec::Ones(k.qd.size()).eval(); }};
-  }
-  if (name == "viscous_pos") {
-    return {"Fv_pos", Quantity::viscous,
-            [](const IdimKinematics& k) { return k.qd.cwiseProduct(positive(k.qd)).eval(); }};
-  }
-  if (name == "coulomb_pos") return {"Fc_pos", Quantity::force, [](const IdimKinematics& k) { return positive(k.qd); }};
-  if (name == "viscous_neg") {
-    return {"Fv_neg", Quantity::viscous,
-            [](const IdimKinematics& k) { return k.qd.cwiseProduct(negative(k.qd)).eval(); }};
-  }
-  if (name == "coulomb_neg") {
-    return {"Fc_neg", Quantity::force, [](const IdimKinematics& k) { return (-negative(k.qd)).eval(); }};
-  }
+  if (name == "inertia") return sample_term("M", Quantity::inertia, [](double, double qdd) { return qdd; });
+  if (name == "viscous") return sample_term("Fv", Quantity::viscous, [](double qd, double) { return qd; });
+  if (name == "coulomb") return sample_term("Fc", Quantity::force, [](double qd, double) { return sign_of(qd); });
+  if (name == "offset") return sample_term("offset", Quantity::force, [](double, double) { return 1.0; });
+  if (name == "viscous_pos") return sample_term("Fv_pos", Quantity::viscous, [](double qd, double) { return qd > 0 ? qd : 0.0; });
+  if (name == "coulomb_pos") return sample_term("Fc_pos", Quantity::force, [](double qd, double) { return qd > 0 ? 1.0 : 0.0; });
+  if (name == "viscous_neg") return sample_term("Fv_neg", Quantity::viscous, [](double qd, double) { return qd < 0 ? qd : 0.0; });
+  if (name == "coulomb_neg") return sample_term("Fc_neg", Quantity::force, [](double qd, double) { return qd < 0 ? -1.0 : 0.0; });
   if (name == "stribeck") {
     if (!(o.stribeck_vs > 0.0) || !(o.stribeck_delta > 0.0)) {
       throw std::invalid_argument("idim: stribeck_vs = " + detail::format_value(o.stribeck_vs, 6) + " m/s and stribeck_delta = " +
                                   detail::format_value(o.stribeck_delta, 6) + " must be positive for the 'stribeck' term");
     }
     const double vs = o.stribeck_vs, delta = o.stribeck_delta;
-    return {"Fs_minus_Fc", Quantity::force, [vs, delta](const IdimKinematics& k) {
-              return k.qd.unaryExpr([vs, delta](double v) {
-                return double((v > 0) - (v < 0)) * std::exp(-std::pow(std::abs(v / vs), delta));
-              }).eval();
-            }};
+    return sample_term("Fs_minus_Fc", Quantity::force, [vs, delta](double qd, double) {
+      return sign_of(qd) * std::exp(-std::pow(std::abs(qd / vs), delta));
+    });
   }
   throw std::invalid_argument("idim: unknown term '" + name +
                               "'; known terms: inertia, viscous, coulomb, offset, asymmetric, viscous_pos, "
@@ -170,47 +180,76 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options)
                                 " and decimation = " + std::to_string(options.decimation));
   }
 
-  // 1-2: zero-phase low-pass and central differences.
+  // 1-2: zero-phase low-pass and central differences, in this thread's work buffers.
   const TransferFunction lp = butter(options.filter_order, normalized_cutoff(options.cutoff_hz, reg.dt));
-  const FiltfiltOptions ff{options.padlen};
-  IdimKinematics k;
+  const Vec* measured = nullptr;
   if (data.position.size() > 0) {
     check_signal(data, data.position, "position", n);
-    k.q = filtfilt(lp, data.position, ff);
-    k.qd = gradient(k.q, reg.dt);
+    measured = &data.position;
   } else if (data.velocity.size() > 0) {
     check_signal(data, data.velocity, "velocity", n);
-    k.qd = filtfilt(lp, data.velocity, ff);
+    measured = &data.velocity;
   } else {
     throw std::invalid_argument(where(data) + "neither position nor velocity given; IDIM needs one of them");
   }
-  k.qdd = gradient(k.qd, reg.dt);
+  const Eigen::Index pad = filtfilt_padlen(lp, FiltfiltOptions{options.padlen}, n);
+  auto padded = detail::scratch(detail::filtfilt_padded, n + 2 * pad);
+  padded.segment(pad, n) = *measured;
+  filtfilt_in_place(lp, padded, pad);
+  const auto filtered = padded.segment(pad, n);
+  auto qd = detail::scratch(detail::idim_qd, n);
+  auto qdd = detail::scratch(detail::idim_qdd, n);
+  const bool from_position = measured == &data.position;
+  if (from_position) gradient(filtered, reg.dt, qd);
+  else qd = filtered;
+  gradient(qd, reg.dt, qdd);
+  using View = IdimKinematics::View;
+  const IdimKinematics k{from_position ? View(filtered.data(), n) : View(nullptr, 0), View(qd.data(), n),
+                         View(qdd.data(), n)};
 
   // 3-4: columns, drop the start, decimate.
   const Eigen::Index used = n - options.skip - options.skip_end;
   reg.max_speed = k.qd.segment(options.skip, used).cwiseAbs().maxCoeff();
-  const auto reduce = [&](const Vec& full, const std::string& what) -> Vec {
-    if (full.size() != n) {
-      throw std::invalid_argument("idim: term '" + what + "' gave " + std::to_string(full.size()) +
-                                  " samples; expected " + std::to_string(n));
-    }
-    const Vec tail = full.segment(options.skip, used);
-    return options.decimation == 1 ? tail : decimate(tail, options.decimation);
-  };
   if (options.input_delay < 0 || options.input_delay >= n)
     throw std::invalid_argument("idim: input_delay = " + std::to_string(options.input_delay) + " samples must be >= 0 and below " +
                                 std::to_string(n));
-  Vec force = data.force;
+  // Column 0 the force, then one column per term; all decimated together, read in place.
+  const Eigen::Index p = static_cast<Eigen::Index>(reg.terms.size());
+  std::vector<Vec> columns;  // the terms' columns (and the delayed force), kept alive for the views
+  columns.reserve(static_cast<std::size_t>(p + 1));
+  ColumnViews views;
   if (options.input_delay > 0) {  // y(k) = force(k - delay); the first samples hold force(0)
-    const Eigen::Index d = options.input_delay;
-    force.tail(n - d) = data.force.head(n - d).eval();
-    force.head(d).setConstant(data.force[0]);
+    Vec& f = columns.emplace_back(used);
+    for (Eigen::Index i = 0; i < used; ++i) f(i) = data.force[std::max<Eigen::Index>(options.skip + i - options.input_delay, 0)];
+    views.emplace_back(f.data(), used);
+  } else {
+    views.emplace_back(data.force.data() + options.skip, used);
   }
-  reg.y = reduce(force, "force");
-  reg.X.resize(reg.y.size(), static_cast<Eigen::Index>(reg.terms.size()));
-  for (std::size_t j = 0; j < reg.terms.size(); ++j) {
-    reg.X.col(static_cast<Eigen::Index>(j)) = reduce(reg.terms[j].column(k), reg.terms[j].parameter);
+  for (Eigen::Index j = 0; j < p; ++j) {
+    const auto& term = reg.terms[static_cast<std::size_t>(j)];
+    if (term.fill) {
+      auto column = detail::scratch(detail::idim_columns + static_cast<int>(j), n);
+      term.fill(k, column);
+      views.emplace_back(column.data() + options.skip, used);
+      continue;
+    }
+    const Vec& column = columns.emplace_back(term.column(k));
+    if (column.size() != n) {
+      throw std::invalid_argument("idim: term '" + term.parameter + "' gave " + std::to_string(column.size()) +
+                                  " samples; expected " + std::to_string(n));
+    }
+    views.emplace_back(column.data() + options.skip, used);
   }
+  Eigen::MatrixXd reduced;
+  if (options.decimation == 1) {
+    reduced.resize(used, p + 1);
+    for (Eigen::Index j = 0; j <= p; ++j) reduced.col(j) = views[static_cast<std::size_t>(j)];
+  } else {
+    reduced = decimate_columns(views, options.decimation);
+  }
+  reg.y = reduced.col(0);
+  reg.X = reduced.rightCols(p);
+  detail::trim_scratch();
   return reg;
 }
 

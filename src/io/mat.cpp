@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -69,35 +68,44 @@ bool numeric_values(const matvar_t& v, Eigen::VectorXd& out) {
 // an 8-byte tag (type, byte count; small elements pack both into 8 bytes). An element reaching
 // past the end of the file means the file is truncated. v7.3 (HDF5) files are left to HDF5.
 std::string v5_structure_problem(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), {});
-  if (bytes.size() < 128) return "shorter than the 128-byte MAT-file header";
-  const unsigned char* b = reinterpret_cast<const unsigned char*>(bytes.data());
+  // Only the header and the element tags are read (seeking past each element's data).
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return "cannot be opened for reading";
+  const std::size_t size = static_cast<std::size_t>(in.tellg());
+  if (size < 128) return "shorter than the 128-byte MAT-file header";
+  unsigned char header[128];
+  in.seekg(0);
+  in.read(reinterpret_cast<char*>(header), 128);
+  const unsigned char* b = header;
   const bool big_endian_file = b[126] == 'M' && b[127] == 'I';
   const bool little_endian_file = b[126] == 'I' && b[127] == 'M';
   if (!big_endian_file && !little_endian_file) return "no MAT-file endian indicator";
-  const auto u32 = [&](std::size_t at) {
-    return little_endian_file ? std::uint32_t(b[at]) | std::uint32_t(b[at + 1]) << 8 | std::uint32_t(b[at + 2]) << 16 |
-                                    std::uint32_t(b[at + 3]) << 24
-                              : std::uint32_t(b[at + 3]) | std::uint32_t(b[at + 2]) << 8 |
-                                    std::uint32_t(b[at + 1]) << 16 | std::uint32_t(b[at]) << 24;
+  const auto u32 = [&](const unsigned char* p) {
+    return little_endian_file ? std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
+                                    std::uint32_t(p[3]) << 24
+                              : std::uint32_t(p[3]) | std::uint32_t(p[2]) << 8 | std::uint32_t(p[1]) << 16 |
+                                    std::uint32_t(p[0]) << 24;
   };
   const std::uint32_t version = little_endian_file ? (std::uint32_t(b[125]) << 8 | b[124]) : (std::uint32_t(b[124]) << 8 | b[125]);
   if (version != 0x0100) return "";  // v7.3: HDF5 checks its own structure
   constexpr std::uint32_t kMiCompressed = 15;
   std::size_t at = 128;
-  while (at < bytes.size()) {
-    if (at + 8 > bytes.size()) return "truncated: a data element tag at byte " + std::to_string(at) + " is cut off";
-    const std::uint32_t type = u32(at);
+  unsigned char tag[8];
+  while (at < size) {
+    if (at + 8 > size) return "truncated: a data element tag at byte " + std::to_string(at) + " is cut off";
+    in.seekg(static_cast<std::streamoff>(at));
+    if (!in.read(reinterpret_cast<char*>(tag), 8)) return "read error at byte " + std::to_string(at);
+    const std::uint32_t type = u32(tag);
     if ((type >> 16) != 0) {  // small data element: 4 bytes of tag, up to 4 of data
       at += 8;
       continue;
     }
-    std::size_t n = u32(at + 4);
+    const std::uint32_t bytes = u32(tag + 4);
+    std::size_t n = bytes;
     if (type != kMiCompressed && n % 8 != 0) n += 8 - n % 8;
-    if (at + 8 + u32(at + 4) > bytes.size()) {
-      return "truncated: the data element at byte " + std::to_string(at) + " needs " + std::to_string(u32(at + 4)) +
-             " bytes but the file has " + std::to_string(bytes.size()) + " in all";
+    if (at + 8 + bytes > size) {
+      return "truncated: the data element at byte " + std::to_string(at) + " needs " + std::to_string(bytes) +
+             " bytes but the file has " + std::to_string(size) + " in all";
     }
     at += 8 + n;
   }
@@ -131,19 +139,20 @@ Dataset read_mat(const std::string& path) {
   MatPtr mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
   if (!mat) fail("not a MATLAB MAT file (v5 or v7.3) or corrupt; expected a file saved by MATLAB's save");
 
-  // Names first (headers only), then each variable in full.
+  // One pass over the variables, each read in full.
   std::vector<std::string> names;
-  while (true) {
-    VarPtr info(Mat_VarReadNextInfo(mat.get()));
-    if (!info) break;
-    if (info->name != nullptr) names.emplace_back(info->name);
-  }
   std::vector<std::pair<std::string, Eigen::VectorXd>> vectors;
   std::vector<std::string> skipped;
   Eigen::Index longest = 0;
-  for (const auto& name : names) {
-    VarPtr var(Mat_VarRead(mat.get(), name.c_str()));
-    if (!var) fail("cannot read variable '" + name + "' (corrupt or truncated file)");
+  while (true) {
+    g_matio_log.clear();
+    VarPtr var(Mat_VarReadNext(mat.get()));
+    if (!var) {
+      if (!g_matio_log.empty()) fail("cannot read the variable after '" + (names.empty() ? std::string("(start)") : names.back()) + "' (corrupt or truncated file)");
+      break;
+    }
+    const std::string name = var->name != nullptr ? var->name : "";
+    names.push_back(name);
     Eigen::VectorXd values;
     if (!numeric_values(*var, values) || values.size() == 0) {
       skipped.push_back(name);
@@ -164,6 +173,10 @@ Dataset read_mat(const std::string& path) {
     else skipped.push_back(name);
   }
   if (data.rows() == 0) {
+    // matio (1.5.23) opens a v7.3 file whose HDF5 part HDF5 cannot open (truncated, corrupt) and
+    // then reports no variables and no error: say so rather than "no numeric vector".
+    if (names.empty() && Mat_GetVersion(mat.get()) == MAT_FT_MAT73)
+      fail("cannot read the MAT v7.3 (HDF5) file: no variable could be read (corrupt, truncated or empty file)");
     std::string listed;
     for (const auto& n : names) listed += (listed.empty() ? "" : ", ") + n;
     fail("no real numeric vector variable (expected time series saved as 1xN or Nx1 arrays); variables: " +

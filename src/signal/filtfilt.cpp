@@ -1,10 +1,13 @@
 #include "frictionlab/signal/filtfilt.hpp"
 
+#include "scratch.hpp"
+
 #include <Eigen/LU>
 #include <algorithm>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace frictionlab {
 namespace {
@@ -24,30 +27,108 @@ TransferFunction normalized(const TransferFunction& tf) {
   return out;
 }
 
-// Direct form II transposed on normalised coefficients, in scipy's order of operations.
-Eigen::VectorXd lfilter_normalized(const TransferFunction& tf, const Eigen::VectorXd& x, Eigen::VectorXd z) {
+// Direct form II transposed on normalised coefficients, in scipy's order of operations, in place
+// over `count` samples from x with the given step (+1 forward, -1 backward). z: the k states.
+void lfilter_in_place(const TransferFunction& tf, double* z, double* x, Eigen::Index count, int step) {
   const Eigen::Index k = tf.a.size() - 1;
-  Eigen::VectorXd y(x.size());
-  for (Eigen::Index n = 0; n < x.size(); ++n) {
-    const double xn = x(n);
-    const double yn = (k > 0 ? z(0) : 0.0) + tf.b(0) * xn;
-    for (Eigen::Index i = 0; i + 1 < k; ++i) z(i) = z(i + 1) + xn * tf.b(i + 1) - yn * tf.a(i + 1);
-    if (k > 0) z(k - 1) = xn * tf.b(k) - yn * tf.a(k);
-    y(n) = yn;
+  const double* b = tf.b.data();
+  const double* a = tf.a.data();
+  for (Eigen::Index n = 0; n < count; ++n, x += step) {
+    const double xn = *x;
+    const double yn = (k > 0 ? z[0] : 0.0) + b[0] * xn;
+    for (Eigen::Index i = 0; i + 1 < k; ++i) z[i] = z[i + 1] + xn * b[i + 1] - yn * a[i + 1];
+    if (k > 0) z[k - 1] = xn * b[k] - yn * a[k];
+    *x = yn;
   }
+}
+
+Eigen::VectorXd lfilter_normalized(const TransferFunction& tf, const Eigen::VectorXd& x, Eigen::VectorXd z) {
+  Eigen::VectorXd y = x;
+  lfilter_in_place(tf, z.data(), y.data(), y.size(), 1);
   return y;
 }
 
-// scipy.signal._arraytools.odd_ext: 2 x(0) - x(padlen..1) before, 2 x(N-1) - x(N-2..N-1-padlen) after.
-Eigen::VectorXd odd_extend(const Eigen::VectorXd& x, Eigen::Index padlen) {
-  const Eigen::Index n = x.size();
-  Eigen::VectorXd ext(n + 2 * padlen);
-  for (Eigen::Index i = 0; i < padlen; ++i) {
-    ext(i) = 2.0 * x(0) - x(padlen - i);
-    ext(padlen + n + i) = 2.0 * x(n - 1) - x(n - 2 - i);
+// Second-order sections divided by a0, row-major (b0 b1 b2 a0 a1 a2 per section).
+using SectionCoefficients = Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>;
+
+SectionCoefficients normalized_sections(const SecondOrderSections& sos, const char* who) {
+  SectionCoefficients s = sos;
+  for (Eigen::Index r = 0; r < s.rows(); ++r) {
+    if (s(r, 3) == 0.0) throw std::invalid_argument(std::string(who) + ": section " + std::to_string(r) + " has a0 = 0");
+    s.row(r) /= s(r, 3);
   }
-  ext.segment(padlen, n) = x;
-  return ext;
+  return s;
+}
+
+// Columns filtered side by side: the recursion of one channel is a chain of dependent
+// multiply-adds, so W independent channels in lock-step fill the pipeline (and SIMD lanes)
+// that one channel leaves idle. Four suits SSE2/AVX registers and IDIM's few regressors.
+constexpr Eigen::Index kLanes = 4;
+constexpr int kDecimationSections = 4;  // scipy's order-8 decimation filter
+
+// The section cascade over `count` samples of W interleaved channels (x[n * W + c]), in place,
+// in scipy's sosfilt order of operations per channel. z holds 2 states per section and lane
+// (z[(2 r + j) * W + c]); step is +1 forward or -1 backward (x then points at the last sample).
+// NS > 0 fixes the number of sections at compile time (decimate's filter has 4), so the loop
+// over sections unrolls and the states can stay in registers.
+template <int W, int NS = 0>
+void cascade(const SectionCoefficients& s, double* z, double* x, Eigen::Index count, int step) {
+  using Lanes = Eigen::Array<double, W, 1>;  // one SIMD-friendly value per channel
+  const Eigen::Index ns = NS > 0 ? NS : s.rows();
+  for (Eigen::Index n = 0; n < count; ++n, x += step * W) {
+    Eigen::Map<Lanes> sample(x);
+    Lanes cur = sample;
+    for (Eigen::Index r = 0; r < ns; ++r) {
+      Eigen::Map<Lanes> z0(z + 2 * r * W), z1(z + (2 * r + 1) * W);
+      const Lanes out = s(r, 0) * cur + z0;
+      z0 = s(r, 1) * cur - s(r, 4) * out + z1;
+      z1 = s(r, 2) * cur - s(r, 5) * out;
+      cur = out;
+    }
+    sample = cur;
+  }
+}
+
+// sosfiltfilt of columns c0 .. c0 + W - 1 of x (fewer at the right edge) into the same columns
+// of out, keeping samples 0, q, 2q, ...: odd extension, forward pass from the steady state of
+// the first sample, backward pass from the steady state of the last output.
+template <int W>
+void filtfilt_block(const SectionCoefficients& s, const Eigen::MatrixX2d& zi, const ColumnViews& x,
+                    Eigen::Index c0, Eigen::Index padlen, Eigen::Index q, Eigen::MatrixXd& out) {
+  const Eigen::Index n = x.front().size(), m = n + 2 * padlen, ns = s.rows();
+  const int used = static_cast<int>(std::min<Eigen::Index>(W, static_cast<Eigen::Index>(x.size()) - c0));
+  double* const data = detail::scratch(detail::decimation_block, m * W).data();
+  for (int c = used; c < W; ++c) {
+    for (Eigen::Index i = 0; i < m; ++i) data[i * W + c] = 0.0;  // an idle lane
+  }
+  for (int c = 0; c < used; ++c) {
+    const auto& col = x[static_cast<std::size_t>(c0 + c)];
+    double* b = data + c;
+    for (Eigen::Index i = 0; i < padlen; ++i) {
+      b[i * W] = 2.0 * col(0) - col(padlen - i);
+      b[(padlen + n + i) * W] = 2.0 * col(n - 1) - col(n - 2 - i);
+    }
+    for (Eigen::Index i = 0; i < n; ++i) b[(padlen + i) * W] = col(i);
+  }
+  std::vector<double> z(static_cast<std::size_t>(2 * ns * W));
+  const auto start = [&](const double* sample) {
+    for (Eigen::Index r = 0; r < ns; ++r) {
+      for (int c = 0; c < W; ++c) {
+        z[static_cast<std::size_t>((2 * r) * W + c)] = zi(r, 0) * sample[c];
+        z[static_cast<std::size_t>((2 * r + 1) * W + c)] = zi(r, 1) * sample[c];
+      }
+    }
+  };
+  const auto run = [&](double* from, int step) {
+    start(from);
+    if (ns == kDecimationSections) cascade<W, kDecimationSections>(s, z.data(), from, m, step);
+    else cascade<W>(s, z.data(), from, m, step);
+  };
+  run(data, 1);
+  run(data + (m - 1) * W, -1);
+  for (int c = 0; c < used; ++c) {
+    for (Eigen::Index i = 0; i < out.rows(); ++i) out(i, c0 + c) = data[(padlen + i * q) * W + c];
+  }
 }
 
 Eigen::Index checked_padlen(std::optional<Eigen::Index> requested, Eigen::Index fallback, Eigen::Index n,
@@ -92,15 +173,30 @@ Eigen::VectorXd lfilter_zi(const TransferFunction& tf) {
   return i_minus_a.partialPivLu().solve(rhs);
 }
 
-Eigen::VectorXd filtfilt(const TransferFunction& tf, const Eigen::VectorXd& x, const FiltfiltOptions& options) {
+Eigen::Index filtfilt_padlen(const TransferFunction& tf, const FiltfiltOptions& options, Eigen::Index n) {
+  return checked_padlen(options.padlen, 3 * std::max(tf.a.size(), tf.b.size()), n, "filtfilt");
+}
+
+void filtfilt_in_place(const TransferFunction& tf, Eigen::Ref<Eigen::VectorXd> x, Eigen::Index padlen) {
   const TransferFunction n = normalized(tf);
-  const Eigen::Index padlen =
-      checked_padlen(options.padlen, 3 * std::max(tf.a.size(), tf.b.size()), x.size(), "filtfilt");
-  const Eigen::VectorXd ext = odd_extend(x, padlen);
+  const Eigen::Index len = x.size() - 2 * padlen;
+  checked_padlen(padlen, padlen, len, "filtfilt");
+  for (Eigen::Index i = 0; i < padlen; ++i) {  // odd reflection about the first and last samples
+    x(i) = 2.0 * x(padlen) - x(2 * padlen - i);
+    x(padlen + len + i) = 2.0 * x(padlen + len - 1) - x(padlen + len - 2 - i);
+  }
   const Eigen::VectorXd zi = lfilter_zi(n);
-  Eigen::VectorXd y = lfilter_normalized(n, ext, zi * ext(0));
-  const double y0 = y(y.size() - 1);
-  y = lfilter_normalized(n, y.reverse().eval(), zi * y0).reverse();
+  Eigen::VectorXd z = zi * x(0);
+  lfilter_in_place(n, z.data(), x.data(), x.size(), 1);
+  z = zi * x(x.size() - 1);
+  lfilter_in_place(n, z.data(), x.data() + x.size() - 1, x.size(), -1);
+}
+
+Eigen::VectorXd filtfilt(const TransferFunction& tf, const Eigen::VectorXd& x, const FiltfiltOptions& options) {
+  const Eigen::Index padlen = filtfilt_padlen(tf, options, x.size());
+  Eigen::VectorXd y(x.size() + 2 * padlen);
+  y.segment(padlen, x.size()) = x;
+  filtfilt_in_place(tf, y, padlen);
   return y.segment(padlen, x.size());
 }
 
@@ -110,23 +206,15 @@ Eigen::VectorXd sosfilt(const SecondOrderSections& sos, const Eigen::VectorXd& x
     throw std::invalid_argument("sosfilt: initial state zi has " + std::to_string(zi.rows()) +
                                 " rows; expected one per section (" + std::to_string(ns) + ")");
   }
-  Eigen::MatrixX2d z = zi.size() == 0 ? Eigen::MatrixX2d::Zero(ns, 2) : zi;
-  SecondOrderSections s = sos;
+  const Eigen::MatrixX2d z0 = zi.size() == 0 ? Eigen::MatrixX2d::Zero(ns, 2) : zi;
+  const SectionCoefficients s = normalized_sections(sos, "sosfilt");
+  std::vector<double> z(static_cast<std::size_t>(2 * ns));
   for (Eigen::Index r = 0; r < ns; ++r) {
-    if (s(r, 3) == 0.0) throw std::invalid_argument("sosfilt: section " + std::to_string(r) + " has a0 = 0");
-    s.row(r) /= s(r, 3);
+    z[static_cast<std::size_t>(2 * r)] = z0(r, 0);
+    z[static_cast<std::size_t>(2 * r + 1)] = z0(r, 1);
   }
-  Eigen::VectorXd y(x.size());
-  for (Eigen::Index n = 0; n < x.size(); ++n) {
-    double cur = x(n);
-    for (Eigen::Index r = 0; r < ns; ++r) {
-      const double out = s(r, 0) * cur + z(r, 0);
-      z(r, 0) = s(r, 1) * cur - s(r, 4) * out + z(r, 1);
-      z(r, 1) = s(r, 2) * cur - s(r, 5) * out;
-      cur = out;
-    }
-    y(n) = cur;
-  }
+  Eigen::VectorXd y = x;
+  cascade<1>(s, z.data(), y.data(), y.size(), 1);
   return y;
 }
 
@@ -142,17 +230,61 @@ Eigen::MatrixX2d sosfilt_zi(const SecondOrderSections& sos) {
 }
 
 Eigen::VectorXd sosfiltfilt(const SecondOrderSections& sos, const Eigen::VectorXd& x, const FiltfiltOptions& options) {
+  return sosfiltfilt_columns(sos, x, options).col(0);
+}
+
+Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Eigen::MatrixXd& x,
+                                    const FiltfiltOptions& options, Eigen::Index keep_every) {
+  ColumnViews views;
+  for (Eigen::Index c = 0; c < x.cols(); ++c) views.emplace_back(x.col(c).data(), x.rows());
+  return sosfiltfilt_columns(sos, views, options, keep_every);
+}
+
+Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const ColumnViews& x, const FiltfiltOptions& options,
+                                    Eigen::Index keep_every) {
+  if (keep_every < 1) {
+    throw std::invalid_argument("sosfiltfilt: keep_every = " + std::to_string(keep_every) + " must be >= 1");
+  }
+  const Eigen::Index n = x.empty() ? 0 : x.front().size();
+  for (std::size_t c = 0; c < x.size(); ++c) {
+    if (x[c].size() != n) {
+      throw std::invalid_argument("sosfiltfilt: column " + std::to_string(c) + " has " + std::to_string(x[c].size()) +
+                                  " samples; expected " + std::to_string(n) + " like column 0");
+    }
+  }
   // scipy's default: 3 * (2 * sections + 1 - min(#(b2 == 0), #(a2 == 0))).
   const Eigen::Index zeros_b = (sos.col(2).array() == 0.0).count();
   const Eigen::Index zeros_a = (sos.col(5).array() == 0.0).count();
   const Eigen::Index ntaps = 2 * sos.rows() + 1 - std::min(zeros_b, zeros_a);
-  const Eigen::Index padlen = checked_padlen(options.padlen, 3 * ntaps, x.size(), "sosfiltfilt");
-  const Eigen::VectorXd ext = odd_extend(x, padlen);
+  const Eigen::Index padlen = checked_padlen(options.padlen, 3 * ntaps, n, "sosfiltfilt");
+  const SectionCoefficients s = normalized_sections(sos, "sosfiltfilt");
   const Eigen::MatrixX2d zi = sosfilt_zi(sos);
-  Eigen::VectorXd y = sosfilt(sos, ext, zi * ext(0));
-  const double y0 = y(y.size() - 1);
-  y = sosfilt(sos, y.reverse().eval(), zi * y0).reverse();
-  return y.segment(padlen, x.size());
+  const Eigen::Index cols = static_cast<Eigen::Index>(x.size());
+  Eigen::MatrixXd out((n + keep_every - 1) / keep_every, cols);
+  // A constant column (IDIM's offset) starts and stays in the steady state of both passes: it
+  // comes out times the squared DC gain, so it needs no filtering.
+  double dc_gain = 1.0;
+  for (Eigen::Index r = 0; r < s.rows(); ++r) dc_gain *= (s(r, 0) + s(r, 1) + s(r, 2)) / (1.0 + s(r, 4) + s(r, 5));
+  ColumnViews varying;
+  std::vector<Eigen::Index> where;
+  for (Eigen::Index c = 0; c < cols; ++c) {
+    const auto& col = x[static_cast<std::size_t>(c)];
+    if ((col.array() == col(0)).all()) {
+      out.col(c).setConstant(col(0) * dc_gain * dc_gain);
+    } else {
+      varying.push_back(col);
+      where.push_back(c);
+    }
+  }
+  Eigen::MatrixXd filtered(out.rows(), static_cast<Eigen::Index>(varying.size()));
+  for (Eigen::Index c = 0; c < filtered.cols(); c += kLanes) {
+    const Eigen::Index lanes = std::min<Eigen::Index>(kLanes, filtered.cols() - c);
+    if (lanes == 1) filtfilt_block<1>(s, zi, varying, c, padlen, keep_every, filtered);
+    else if (lanes == 2) filtfilt_block<2>(s, zi, varying, c, padlen, keep_every, filtered);
+    else filtfilt_block<kLanes>(s, zi, varying, c, padlen, keep_every, filtered);  // 3 columns: one idle lane
+  }
+  for (std::size_t j = 0; j < where.size(); ++j) out.col(where[j]) = filtered.col(static_cast<Eigen::Index>(j));
+  return out;
 }
 
 }  // namespace frictionlab

@@ -5,10 +5,11 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 
 #include "frictionlab/identify/idim.hpp"
-#include "frictionlab/io/columns.hpp"
+#include "frictionlab/io/idim_record.hpp"
 #include "frictionlab/io/mat.hpp"
 
 namespace fl = frictionlab;
@@ -27,15 +28,7 @@ constexpr double kPublishedErrorPoints = 0.1;
 constexpr double kScipyRelTol = 1e-9;
 
 fl::IdimData load(const std::string& name) {
-  const std::string path = std::string(FRICTIONLAB_DATA_DIR) + "/emps/" + name;
-  const fl::Dataset d = fl::read_mat(path);
-  fl::IdimData data;
-  data.time = fl::select_column(d, "t", "--time");
-  data.position = fl::select_column(d, "qm", "--position");
-  data.force = fl::resolve_constant(d, "gtau", "--gain") * fl::select_column(d, "vir", "--input");
-  data.file = d.file;
-  data.sha256 = d.sha256;
-  return data;
+  return fl::idim_record(fl::read_mat(std::string(FRICTIONLAB_DATA_DIR) + "/emps/" + name), {"t", "qm", "vir", "gtau"});
 }
 
 void expect_rel(double got, double want, double rel_tol, const std::string& what) {
@@ -91,6 +84,34 @@ TEST(IdimEmps, CrossTestOnPulses) {
   EXPECT_NEAR(v.relative_error_percent, 6.016, 0.5e-3);                       // README scipy, printed digits
   expect_rel(v.relative_error_percent, 6.01646924401, kScipyRelTol, "cross-test (scipy)");
   EXPECT_EQ(v.sha256, "0eab75bb1f6b16228ee78791343a88bf9bfd9a51036ac9807d7b5fc11c0e1704");
+}
+
+// The pipeline keeps its work buffers between calls: a repeat, and a repeat after a record of
+// another length, must give the same numbers to the last bit.
+TEST(IdimEmps, RepeatedIdentificationIsIdentical) {
+  const fl::IdimData ident = load("DATA_EMPS.mat"), pulses = load("DATA_EMPS_PULSES.mat");
+  const fl::Result first = fl::identify_idim(ident);
+  fl::IdimData shorter = pulses;
+  for (Eigen::VectorXd* v : {&shorter.time, &shorter.position, &shorter.force}) *v = v->head(v->size() / 2).eval();
+  ASSERT_TRUE(fl::identify_idim(shorter).ok());
+  const fl::Result again = fl::identify_idim(ident);
+  ASSERT_EQ(first.parameters.size(), again.parameters.size());
+  for (std::size_t i = 0; i < first.parameters.size(); ++i) {
+    EXPECT_EQ(first.parameters[i].value, again.parameters[i].value) << first.parameters[i].name;
+    EXPECT_EQ(first.parameters[i].std, again.parameters[i].std) << first.parameters[i].name;
+  }
+}
+
+TEST(IdimEmps, RecordNamesAMissingVariable) {
+  const fl::Dataset d = fl::read_mat(std::string(FRICTIONLAB_DATA_DIR) + "/emps/DATA_EMPS.mat");
+  try {
+    fl::idim_record(d, {"t", "qm", "tau", "gtau"});
+    FAIL() << "expected invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("'tau'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("vir"), std::string::npos) << msg;  // lists what the file has
+  }
 }
 
 TEST(IdimEmps, AsymmetricModel) {

@@ -168,11 +168,56 @@ TEST(Decimate, MatchesScipyDecimate) {
   EXPECT_THROW(fl::decimate(x, 0), std::invalid_argument);
 }
 
+// The multi-column forms run the same operations per column in SIMD lanes, so they must equal
+// the one-column forms exactly, for every block width (1, 2, 3 with an idle lane, 4, 4 + 1).
+TEST(Decimate, ColumnsEqualOneColumnAtATime) {
+  const fl::Dataset ref = fl::read_csv(ref_path("ref_filtfilt.csv"));
+  const Eigen::VectorXd& x = ref.column("x");
+  for (Eigen::Index cols = 1; cols <= 5; ++cols) {
+    Eigen::MatrixXd m(x.size(), cols);
+    for (Eigen::Index c = 0; c < cols; ++c) m.col(c) = x * (1.0 + static_cast<double>(c)) + x.reverse() * static_cast<double>(c);
+    const Eigen::MatrixXd d = fl::decimate_columns(m, 10);
+    const Eigen::MatrixXd f = fl::sosfiltfilt_columns(fl::cheby1_sos(8, 0.05, 0.08), m);
+    for (Eigen::Index c = 0; c < cols; ++c) {
+      EXPECT_EQ(d.col(c), fl::decimate(m.col(c), 10)) << cols << " columns, column " << c;
+      EXPECT_EQ(f.col(c), fl::sosfiltfilt(fl::cheby1_sos(8, 0.05, 0.08), m.col(c))) << cols << " columns, column " << c;
+    }
+  }
+}
+
+TEST(Decimate, ColumnViewsMustHaveEqualLengths) {
+  const Eigen::VectorXd a = Eigen::VectorXd::Ones(100), b = Eigen::VectorXd::Ones(90);
+  const fl::ColumnViews views{{a.data(), a.size()}, {b.data(), b.size()}};
+  try {
+    fl::decimate_columns(views, 10);
+    FAIL() << "expected invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "sosfiltfilt: column 1 has 90 samples; expected 100 like column 0");
+  }
+}
+
+TEST(Filtfilt, InPlaceEqualsFiltfilt) {
+  const fl::Dataset ref = fl::read_csv(ref_path("ref_filtfilt.csv"));
+  const Eigen::VectorXd& x = ref.column("x");
+  const auto b4 = fl::butter(4, 0.2);
+  const Eigen::Index pad = fl::filtfilt_padlen(b4, {12}, x.size());
+  EXPECT_EQ(pad, 12);
+  Eigen::VectorXd buffer = Eigen::VectorXd::Constant(x.size() + 2 * pad, 1e300);  // padding overwritten
+  buffer.segment(pad, x.size()) = x;
+  fl::filtfilt_in_place(b4, buffer, pad);
+  EXPECT_EQ(Eigen::VectorXd(buffer.segment(pad, x.size())), fl::filtfilt(b4, x, {12}));
+}
+
 TEST(Gradient, MatchesNumpyGradient) {
   const fl::Dataset ref = fl::read_csv(ref_path("ref_filtfilt.csv"));
   expect_close(fl::gradient(ref.column("x"), 0.001), ref.column("gradient_dt0p001"), kSeriesRelTol, "gradient");
   EXPECT_THROW(fl::gradient(Eigen::VectorXd::Ones(1), 0.001), std::invalid_argument);
   EXPECT_THROW(fl::gradient(Eigen::VectorXd::Ones(5), 0.0), std::invalid_argument);
+  Eigen::VectorXd out(ref.column("x").size());
+  fl::gradient(ref.column("x"), 0.001, out);
+  EXPECT_EQ(out, fl::gradient(ref.column("x"), 0.001));
+  Eigen::VectorXd short_out(3);
+  EXPECT_THROW(fl::gradient(ref.column("x"), 0.001, short_out), std::invalid_argument);
 }
 
 TEST(Gradient, ExactOnAQuadraticInside) {

@@ -10,7 +10,7 @@
 
 #include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/validate.hpp"
-#include "frictionlab/io/columns.hpp"
+#include "frictionlab/io/idim_record.hpp"
 #include "frictionlab/io/mat.hpp"
 #include "frictionlab/io/scenario.hpp"
 #include "frictionlab/plants/emps_pd.hpp"
@@ -36,15 +36,7 @@ std::shared_ptr<const fl::Dataset> load(const std::string& name) {
   return std::make_shared<const fl::Dataset>(fl::read_mat(std::string(FRICTIONLAB_DATA_DIR) + "/emps/" + name));
 }
 
-fl::IdimData idim_data(const fl::Dataset& d) {
-  fl::IdimData x;
-  x.time = fl::select_column(d, "t", "--time");
-  x.position = fl::select_column(d, "qm", "--position");
-  x.force = fl::resolve_constant(d, "gtau", "--gain") * fl::select_column(d, "vir", "--input");
-  x.file = d.file;
-  x.sha256 = d.sha256;
-  return x;
-}
+fl::IdimData idim_data(const fl::Dataset& d) { return fl::idim_record(d, {"t", "qm", "vir", "gtau"}); }
 
 fl::Result run(const fl::IdentifiedModel& model, const std::shared_ptr<const fl::Dataset>& d) {
   fl::ScenarioOptions so;

@@ -31,10 +31,12 @@ struct IdimData {
 };
 
 /// Filtered motion the regressor columns are built from (before dropping and decimating).
+/// The vectors are views of the pipeline's work buffers, valid while the columns are built.
 struct IdimKinematics {
-  Eigen::VectorXd q;    ///< filtered position, m or rad (empty when velocity was given)
-  Eigen::VectorXd qd;   ///< velocity, m/s or rad/s
-  Eigen::VectorXd qdd;  ///< acceleration, m/s^2 or rad/s^2
+  using View = Eigen::Map<const Eigen::VectorXd>;
+  View q{nullptr, 0};    ///< filtered position, m or rad (empty when velocity was given)
+  View qd{nullptr, 0};   ///< velocity, m/s or rad/s
+  View qdd{nullptr, 0};  ///< acceleration, m/s^2 or rad/s^2
 };
 
 /// One regressor column and the parameter multiplying it: force = sum(parameter * column).
@@ -43,6 +45,9 @@ struct IdimTerm {
   std::string parameter;   ///< parameter name in the result ("M", "Fv", ...)
   Quantity quantity;       ///< gives the unit printed
   std::function<Eigen::VectorXd(const IdimKinematics&)> column;  ///< length N, from the kinematics
+  /// Optional: the same column written into `out` (length N) instead of returned; the
+  /// built-in terms use it so that a repeated identification allocates no new columns.
+  std::function<void(const IdimKinematics&, Eigen::Ref<Eigen::VectorXd> out)> fill = {};
 };
 
 /// Options of identify_idim; defaults are the EMPS recipe.

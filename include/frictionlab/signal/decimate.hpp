@@ -3,6 +3,8 @@
 
 #include <Eigen/Core>
 
+#include "frictionlab/signal/filtfilt.hpp"
+
 namespace frictionlab {
 
 /// Low-pass with an order-8 Chebyshev type I filter (0.05 dB ripple, cut-off 0.8 / q of the
@@ -11,5 +13,13 @@ namespace frictionlab {
 /// Shapes: x of length N > 27; returns ceil(N / q) samples.
 /// \throws std::invalid_argument when q < 1 or x is too short (naming q or the length).
 Eigen::VectorXd decimate(const Eigen::VectorXd& x, int q);
+
+/// decimate of every column of x (the same numbers as column by column, filtered several
+/// columns at a time). Shapes: x is N x C with N > 27; returns ceil(N / q) x C.
+/// \throws std::invalid_argument when q < 1 or x is too short.
+Eigen::MatrixXd decimate_columns(const Eigen::MatrixXd& x, int q);
+
+/// The same for columns held elsewhere, all of the same length (no copy into a matrix first).
+Eigen::MatrixXd decimate_columns(const ColumnViews& x, int q);
 
 }  // namespace frictionlab

@@ -11,4 +11,8 @@ namespace frictionlab {
 /// \throws std::invalid_argument when N < 2 or dt is not a positive finite number.
 Eigen::VectorXd gradient(const Eigen::VectorXd& x, double dt);
 
+/// The same into out (length N, not aliasing x), for pipelines that reuse their buffers.
+/// \throws std::invalid_argument as above, or when out's length differs from N.
+void gradient(const Eigen::Ref<const Eigen::VectorXd>& x, double dt, Eigen::Ref<Eigen::VectorXd> out);
+
 }  // namespace frictionlab

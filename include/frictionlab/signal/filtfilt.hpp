@@ -5,10 +5,14 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <vector>
 
 #include "frictionlab/signal/transfer_function.hpp"
 
 namespace frictionlab {
+
+/// Columns of equal length that live elsewhere (filtered without first copying them into a matrix).
+using ColumnViews = std::vector<Eigen::Map<const Eigen::VectorXd>>;
 
 /// Options of filtfilt / sosfiltfilt.
 struct FiltfiltOptions {
@@ -32,6 +36,16 @@ Eigen::VectorXd lfilter_zi(const TransferFunction& tf);
 /// \throws std::invalid_argument when N <= padlen (message gives both), or a(0) == 0.
 Eigen::VectorXd filtfilt(const TransferFunction& tf, const Eigen::VectorXd& x, const FiltfiltOptions& options = {});
 
+/// The padding filtfilt uses for a signal of n samples: options.padlen, or scipy's default.
+/// \throws std::invalid_argument when n <= padlen (message gives both) or padlen < 0.
+Eigen::Index filtfilt_padlen(const TransferFunction& tf, const FiltfiltOptions& options, Eigen::Index n);
+
+/// filtfilt without allocating the result: x holds the signal at [padlen, padlen + N) on entry;
+/// the padding on both sides is filled here (odd reflection) and the whole buffer filtered
+/// forward and backward, so the filtered signal is x.segment(padlen, N) on return.
+/// Shapes: x of length N + 2 padlen. \throws std::invalid_argument when N <= padlen or a(0) == 0.
+void filtfilt_in_place(const TransferFunction& tf, Eigen::Ref<Eigen::VectorXd> x, Eigen::Index padlen);
+
 /// Cascade filtering through second-order sections, scipy.signal.sosfilt(sos, x, zi=zi).
 /// zi: sections x 2 (empty: zero state). Returns length N.
 /// \throws std::invalid_argument if zi has the wrong shape or a section has a0 == 0.
@@ -46,5 +60,18 @@ Eigen::MatrixX2d sosfilt_zi(const SecondOrderSections& sos);
 /// \throws std::invalid_argument when N <= padlen.
 Eigen::VectorXd sosfiltfilt(const SecondOrderSections& sos, const Eigen::VectorXd& x,
                             const FiltfiltOptions& options = {});
+
+/// sosfiltfilt of every column of x, each on its own (the same numbers as calling sosfiltfilt
+/// column by column, computed several columns at a time), keeping rows 0, keep_every,
+/// 2 keep_every, ... (decimate keeps every q-th without storing the rest).
+/// Shapes: x is N x C with N > padlen; returns ceil(N / keep_every) x C.
+/// \throws std::invalid_argument when N <= padlen, keep_every < 1 or a section has a0 == 0.
+Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Eigen::MatrixXd& x,
+                                    const FiltfiltOptions& options = {}, Eigen::Index keep_every = 1);
+
+/// The same for columns held elsewhere; they must all have the same length N (else
+/// std::invalid_argument naming the column).
+Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const ColumnViews& x,
+                                    const FiltfiltOptions& options = {}, Eigen::Index keep_every = 1);
 
 }  // namespace frictionlab
