@@ -5,7 +5,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -26,50 +25,150 @@ namespace {
 // Parameter vector of the one-sided Stribeck fit: [Fc, dF = Fs - Fc, vs, delta, Fv], so that
 // the physical rule Fs >= Fc becomes the box bound dF >= 0 that Ceres supports.
 constexpr int kFc = 0, kDF = 1, kVs = 2, kDelta = 3, kFv = 4, kNp = 5;
+// log of kNegligibleDecayExponent, rounded up so that the test on the exponent's log keeps every
+// point the test u > kNegligibleDecayExponent keeps.
+const double kLogNegligibleDecayExponent = std::log(kNegligibleDecayExponent) * (1 + 1e-12);
 
-// Residuals F_model(v_i) - F_i for a contiguous chunk of points, with the analytic Jacobian
-// (cheaper than Jets by a factor of about 3 on 1e5 points).
-class StribeckChunk final : public ceres::CostFunction {
- public:
-  StribeckChunk(const double* v, const double* f, int n) : v_(v), f_(f), n_(n) {
-    set_num_residuals(n);
-    mutable_parameter_block_sizes()->push_back(kNp);
+// The points of one Stribeck fit, folded to positive velocity: a = |v|, g = F sign(v), and
+// log a once per fit rather than once per point and evaluation. Folding flips the sign of a
+// point's residual and Jacobian row together, which leaves r'r, J'J and J'r (all the solver
+// uses) unchanged.
+struct FoldedPoints {
+  Eigen::ArrayXd a, log_a, g;
+  // log_a is only allocated here: the start uses it as scratch space first (fresh allocations of
+  // 1e5 doubles cost page faults comparable to a pass over the points).
+  FoldedPoints(const Eigen::VectorXd& v, const Eigen::VectorXd& f)
+      : a(v.array().abs()), log_a(v.size()), g(f.array() * v.array().sign()) {}
+};
+
+// One pass over points [b, e) at parameters p: the 6x6 Gram matrix G = [J r]'[J r] of the
+// residuals r_i = Fc + dF exp(-(a_i/vs)^delta) + Fv a_i - g_i and their analytic Jacobian, or,
+// without G, only the sum of squares r'r. Hand-written because Ceres has no reduction of many
+// residuals to their normal equations; the work per point is vectorised with Eigen arrays
+// (exp included) over blocks of kBlock points.
+double stribeck_pass(const double* p, const FoldedPoints& d, Eigen::Index b, Eigen::Index e,
+                     Eigen::Matrix<double, 6, 6>* G) {
+  constexpr Eigen::Index kBlock = 256;
+  using BlockArray = Eigen::Array<double, Eigen::Dynamic, 1, 0, kBlock, 1>;  // no heap
+  const double Fc = p[kFc], dF = p[kDF], vs = p[kVs], delta = p[kDelta], Fv = p[kFv];
+  const double log_vs = std::log(vs);
+  Eigen::Matrix<double, kBlock, 6> J;  // columns: d r / d(Fc, dF, vs, delta, Fv), then r
+  double ssr = 0;
+  if (G) G->setZero();
+  for (Eigen::Index s = b; s < e; s += kBlock) {
+    const Eigen::Index m = std::min(kBlock, e - s);
+    const BlockArray lx = d.log_a.segment(s, m) - log_vs;
+    // u = (a/vs)^delta and the decay exp(-u). Far past vs (u > kNegligibleDecayExponent) the
+    // decay and its derivatives are below rounding (see stribeck_decay), so both exps are taken
+    // only of the points before the cut-off, gathered without branches, in vectorised form.
+    BlockArray u = BlockArray::Zero(m), ex = BlockArray::Zero(m);
+    Eigen::Array<Eigen::Index, kBlock, 1> near;
+    BlockArray t(m);
+    Eigen::Index k = 0;
+    for (Eigen::Index i = 0; i < m; ++i) {
+      t[k] = delta * lx[i];
+      near[k] = i;
+      k += t[k] <= kLogNegligibleDecayExponent ? 1 : 0;
+    }
+    const BlockArray uk = t.head(k).exp();
+    const BlockArray ek = (-uk).exp();
+    for (Eigen::Index j = 0; j < k; ++j) {
+      u[near[j]] = uk[j];
+      ex[near[j]] = uk[j] > kNegligibleDecayExponent ? 0.0 : ek[j];  // Eigen's exp clamps, never 0
+    }
+    const BlockArray r = Fc + dF * ex + Fv * d.a.segment(s, m) - d.g.segment(s, m);
+    if (!G) {
+      ssr += r.square().sum();
+      continue;
+    }
+    auto Jm = J.topRows(m);
+    Jm.col(kFc).setOnes();
+    Jm.col(kDF) = ex.matrix();
+    Jm.col(kVs) = ((dF * delta / vs) * ex * u).matrix();
+    Jm.col(kDelta) = (-dF * ex * u * lx).matrix();
+    Jm.col(kFv) = d.a.segment(s, m).matrix();
+    Jm.col(kNp) = r.matrix();
+    // The 21 distinct entries as column dot products: for 6 columns these beat Eigen's
+    // rank-update kernel, whose packing dominates at this size.
+    for (int j = 0; j <= kNp; ++j)
+      for (int i = j; i <= kNp; ++i) (*G)(i, j) += Jm.col(i).dot(Jm.col(j));
   }
+  if (G) {
+    *G = G->template selfadjointView<Eigen::Lower>();
+    ssr = (*G)(kNp, kNp);
+  }
+  return ssr;
+}
+
+// A chunk of points reduced to 6 residuals for Ceres: with any R such that R'R = G = [J r]'[J r],
+// the residuals R.col(5) with Jacobian R.leftCols(5) have the chunk's r'r, J'J and J'r exactly,
+// so Ceres's Levenberg-Marquardt steps, cost decrease, scaling and convergence tests are those of
+// the 1e5-residual problem while it stores and multiplies a 6x5 Jacobian per chunk.
+class StribeckGramChunk final : public ceres::SizedCostFunction<kNp + 1, kNp> {
+ public:
+  using Vec6 = Eigen::Matrix<double, kNp + 1, 1>;
+  using Mat6 = Eigen::Matrix<double, kNp + 1, kNp + 1>;
+  StribeckGramChunk(const FoldedPoints& d, Eigen::Index b, Eigen::Index e) : d_(d), b_(b), e_(e) {}
+  // Ceres evaluates each parameter vector up to three times (the projected line search that
+  // bounds switch on, the trial cost, the accepted step); the last pass is kept and reused
+  // when the parameters are bitwise the same. Safe: Ceres never evaluates one residual block
+  // on two threads at once.
   bool Evaluate(double const* const* params, double* r, double** jac) const override {
     const double* p = params[0];
-    const double Fc = p[kFc], dF = p[kDF], vs = p[kVs], delta = p[kDelta], Fv = p[kFv];
-    for (int i = 0; i < n_; ++i) {
-      const double v = v_[i];
-      const double s = v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0);
-      const double x = std::abs(v) / vs;
-      const double lx = std::log(x);
-      const double u = std::exp(delta * lx);
-      // Far past vs the decay and its derivatives are below rounding (see stribeck_decay);
-      // skipping exp there also avoids its slow underflow path.
-      const double e = u > kNegligibleDecayExponent ? 0.0 : std::exp(-u);
-      r[i] = s * (Fc + dF * e) + Fv * v - f_[i];
-      if (jac && jac[0]) {
-        double* J = jac[0] + i * kNp;
-        J[kFc] = s;
-        J[kDF] = s * e;
-        J[kVs] = s * dF * e * delta * u / vs;
-        J[kDelta] = -s * dF * e * u * lx;
-        J[kFv] = v;
-      }
+    const bool want_jacobian = jac != nullptr && jac[0] != nullptr;
+    const bool hit = cached_ && std::equal(p, p + kNp, cached_p_) && (cached_has_G_ || !want_jacobian);
+    if (!hit) {
+      std::copy(p, p + kNp, cached_p_);
+      cached_ = true;
+      cached_has_G_ = want_jacobian;
+      cached_ssr_ = stribeck_pass(p, d_, b_, e_, want_jacobian ? &cached_G_ : nullptr);
+      if (want_jacobian) square_root(cached_G_, cached_R_);
     }
+    if (!std::isfinite(cached_ssr_) || (want_jacobian && !cached_R_.allFinite())) return false;
+    Eigen::Map<Vec6> res(r);
+    if (!want_jacobian) {  // cost only (a trial step): any vector of norm sqrt(r'r)
+      res.setZero();
+      res[0] = std::sqrt(cached_ssr_);
+      return true;
+    }
+    res = cached_R_.col(kNp);
+    Eigen::Map<Eigen::Matrix<double, kNp + 1, kNp, Eigen::RowMajor>> jacobian(jac[0]);
+    jacobian = cached_R_.leftCols(kNp);
     return true;
   }
 
+  /// The Gram matrix of the last pass if it was at `p` with the Jacobian, else nullptr.
+  const Mat6* gram_at(const double* p) const {
+    return cached_ && cached_has_G_ && std::equal(p, p + kNp, cached_p_) ? &cached_G_ : nullptr;
+  }
+
  private:
-  const double* v_;
-  const double* f_;
-  int n_;
+  // R with R'R = G: R = sqrt(D) L' P S from the pivoted LDLT of the diagonally scaled G, stable
+  // also when G is singular (a chunk with every point far past vs, or dF = 0, has zero decay
+  // columns).
+  static void square_root(const Mat6& G, Mat6& R) {
+    Vec6 scale = G.diagonal().cwiseSqrt();
+    for (auto& x : scale) x = x > 0 ? x : 1.0;
+    const Mat6 Gs = scale.cwiseInverse().asDiagonal() * G * scale.cwiseInverse().asDiagonal();
+    const Eigen::LDLT<Mat6> ldlt(Gs);
+    const Mat6 P = ldlt.transpositionsP() * Mat6::Identity();  // Gs = P' L D L' P
+    R = ldlt.vectorD().cwiseMax(0.0).cwiseSqrt().asDiagonal() * Mat6(ldlt.matrixU()) * P * scale.asDiagonal();
+  }
+
+  const FoldedPoints& d_;
+  Eigen::Index b_, e_;
+  mutable bool cached_ = false, cached_has_G_ = false;
+  mutable double cached_p_[kNp] = {};
+  mutable double cached_ssr_ = 0;
+  mutable Mat6 cached_G_, cached_R_;
 };
 
 struct OneSided {
   double p[kNp];
   Eigen::Matrix<double, kNp, kNp> cov;  // covariance of p
-  double ssr = 0;
+  double ssr = 0;        // 2 x Ceres's final cost
+  double point_ssr = 0;  // sum of squared residuals over the points at p, from G
+  Eigen::Matrix<double, kNp + 1, kNp + 1> G = Eigen::Matrix<double, kNp + 1, kNp + 1>::Zero();  // [J r]'[J r] at p
   int iterations = 0;
   bool converged = false;
 };
@@ -90,39 +189,56 @@ void linear_coulomb_viscous(const Eigen::VectorXd& v, const Eigen::VectorXd& f, 
   }
 }
 
-// Starting values from the data of one direction (v > 0 after folding).
-void initial_guess(const Eigen::VectorXd& v, const Eigen::VectorXd& f, double fixed_delta, double* p) {
-  std::vector<Eigen::Index> order(static_cast<std::size_t>(v.size()));
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return v[a] < v[b]; });
-  const std::size_t n = order.size();
-  // High-speed half: Coulomb + viscous by linear least squares.
-  const std::size_t h = n / 2;
-  Eigen::VectorXd vh(static_cast<Eigen::Index>(n - h)), fh(static_cast<Eigen::Index>(n - h));
-  for (std::size_t k = h; k < n; ++k) {
-    vh[static_cast<Eigen::Index>(k - h)] = v[order[k]];
-    fh[static_cast<Eigen::Index>(k - h)] = f[order[k]];
+// Starting values from the folded points (a = |v| > 0, g = F sign(v)). The rules need only
+// order statistics (the faster half, the slowest tenth, the slowest point below a level), so two
+// nth_element calls on a copy of the speeds replace a full sort of 1e5 points; ties at a
+// boundary speed are taken in index order (a sort would take them in an arbitrary one).
+// `scratch` (n doubles) is overwritten.
+void initial_guess(const Eigen::ArrayXd& a, const Eigen::ArrayXd& g, double fixed_delta, double* p,
+                   Eigen::ArrayXd& scratch) {
+  const Eigen::Index n = a.size();
+  const Eigen::Index h = n / 2, m = std::max<Eigen::Index>(1, n / 10);
+  scratch = a;
+  double* sorted = scratch.data();
+  std::nth_element(sorted, sorted + h, sorted + n);
+  const double a_median = sorted[h];  // the slowest of the faster half
+  std::nth_element(sorted, sorted + (m - 1), sorted + std::max(h, m));
+  const double a_tenth = sorted[m - 1];  // the fastest of the slowest tenth
+  // Membership weights (1 or 0) of the faster half (n - h points from a_median up) and of the
+  // slowest tenth (m points up to a_tenth), ties at the edge taken in index order; the sums
+  // below are then vectorised Eigen reductions instead of branches on random data.
+  Eigen::ArrayXd& w = scratch;
+  const auto weigh = [&](bool upper, double edge, Eigen::Index count) {
+    if (upper) w = (a > edge).cast<double>();
+    else w = (a < edge).cast<double>();
+    Eigen::Index ties = count - static_cast<Eigen::Index>(w.sum());
+    for (Eigen::Index i = 0; i < n && ties > 0; ++i)
+      if (a[i] == edge) {
+        w[i] = 1.0;
+        --ties;
+      }
+  };
+  // High-speed half: Coulomb + viscous by linear least squares, the line g = Fc + Fv a in
+  // centred form.
+  weigh(true, a_median, n - h);
+  const double nf = static_cast<double>(n - h);
+  const double am = (w * a).sum() / nf, gm = (w * g).sum() / nf;
+  const double saa = (w * (a - am).square()).sum(), sag = (w * (a - am) * (g - gm)).sum();
+  double Fc = gm, Fv = 0;
+  if (n - h >= 2 && a.maxCoeff() > a_median) {  // the faster half is not a single speed
+    Fv = sag / saa;
+    Fc = gm - Fv * am;
   }
-  double Fc = 0, Fv = 0;
-  if (vh.size() >= 2 && vh.maxCoeff() > vh.minCoeff()) linear_coulomb_viscous(vh, fh, Fc, Fv);
-  else Fc = fh.mean();
   Fv = std::max(Fv, 0.0);
   Fc = std::max(Fc, 0.0);
   // Slowest tenth: the static level.
-  const std::size_t m = std::max<std::size_t>(1, n / 10);
-  double Fs = 0;
-  for (std::size_t k = 0; k < m; ++k) Fs += f[order[k]] - Fv * v[order[k]];
-  Fs /= static_cast<double>(m);
+  weigh(false, a_tenth, m);
+  const double Fs = (w * (g - Fv * a)).sum() / static_cast<double>(m);
   const double dF = std::max(Fs - Fc, 1e-3 * std::max(Fc, 1e-12));
-  // vs: first speed where the excess over Fc + Fv v falls below dF / e.
-  double vs = v[order[n / 2]];
-  for (std::size_t k = 0; k < n; ++k) {
-    const auto i = order[k];
-    if (f[i] - Fc - Fv * v[i] < dF / std::exp(1.0)) {
-      vs = std::max(v[i], 1e-12);
-      break;
-    }
-  }
+  // vs: first speed where the excess over Fc + Fv v falls below dF / e (the median speed if none).
+  const double inf = std::numeric_limits<double>::infinity();
+  double vs = (g - Fc - Fv * a < dF / std::exp(1.0)).select(a, inf).minCoeff();
+  vs = std::isfinite(vs) ? std::max(vs, 1e-12) : a_median;
   p[kFc] = Fc;
   p[kDF] = dF;
   p[kVs] = vs;
@@ -135,12 +251,15 @@ OneSided fit_one_sided(const Eigen::VectorXd& v, const Eigen::VectorXd& f, const
   best.ssr = std::numeric_limits<double>::infinity();
   double start[kNp];
   // The guess works on the folded map (|v|, F sign(v)): both directions give the same levels.
-  const Eigen::VectorXd sign = v.unaryExpr([](double x) { return x > 0 ? 1.0 : -1.0; });
-  initial_guess(v.cwiseAbs(), f.cwiseProduct(sign), o.fixed_delta, start);
+  FoldedPoints d(v, f);
+  initial_guess(d.a, d.g, o.fixed_delta, start, d.log_a);
+  d.log_a = d.a.log();
   // Two exponent starts guard against the wrong minimum a single start can land in.
   std::vector<double> delta_starts = o.fixed_delta > 0 ? std::vector<double>{o.fixed_delta} : std::vector<double>{2.0, 1.0};
-  const int n = static_cast<int>(v.size());
-  const int chunks = std::max(1, std::min(n / 2000, 4 * std::max(1, o.num_threads)));
+  const Eigen::Index n = v.size();
+  // A few chunks per thread: Ceres evaluates residual blocks in parallel.
+  const Eigen::Index chunks = std::max<Eigen::Index>(1, std::min<Eigen::Index>(n / 2000, 4 * std::max(1, o.num_threads)));
+  const double vmax = d.a.maxCoeff();
   for (double d0 : delta_starts) {
     // The second exponent start is only needed when the first ends badly: not converged, or
     // with the exponent pinned at a bound (a sign of the wrong basin).
@@ -152,13 +271,13 @@ OneSided fit_one_sided(const Eigen::VectorXd& v, const Eigen::VectorXd& f, const
     cur.p[kDelta] = d0;
     ceres::Problem::Options popts;
     ceres::Problem problem(popts);
-    for (int c = 0; c < chunks; ++c) {
-      const int b = static_cast<int>(static_cast<long>(n) * c / chunks), e = static_cast<int>(static_cast<long>(n) * (c + 1) / chunks);
-      problem.AddResidualBlock(new StribeckChunk(v.data() + b, f.data() + b, e - b), nullptr, cur.p);
+    std::vector<StribeckGramChunk*> parts;  // owned by the problem
+    for (Eigen::Index c = 0; c < chunks; ++c) {
+      parts.push_back(new StribeckGramChunk(d, n * c / chunks, n * (c + 1) / chunks));
+      problem.AddResidualBlock(parts.back(), nullptr, cur.p);
     }
     problem.SetParameterLowerBound(cur.p, kFc, 0.0);
     problem.SetParameterLowerBound(cur.p, kDF, 0.0);
-    const double vmax = v.cwiseAbs().maxCoeff();
     problem.SetParameterLowerBound(cur.p, kVs, 1e-6 * vmax);
     problem.SetParameterUpperBound(cur.p, kVs, 10 * vmax);
     problem.SetParameterLowerBound(cur.p, kFv, 0.0);
@@ -181,19 +300,24 @@ OneSided fit_one_sided(const Eigen::VectorXd& v, const Eigen::VectorXd& f, const
     cur.ssr = 2 * summary.final_cost;
     cur.iterations = static_cast<int>(summary.iterations.size());
     cur.converged = summary.termination_type == ceres::CONVERGENCE;
-    if (cur.ssr < best.ssr) best = cur;
+    if (!(cur.ssr < best.ssr)) continue;
+    // G at the solution: Ceres's last evaluation is usually there (the accepted final step), so
+    // the chunks still hold it; otherwise one more pass.
+    cur.G.setZero();
+    for (const auto* part : parts) {
+      if (const auto* g = part->gram_at(cur.p)) {
+        cur.G += *g;
+      } else {
+        stribeck_pass(cur.p, d, 0, n, &cur.G);
+        break;
+      }
+    }
+    best = cur;
   }
-  // Covariance s^2 (J'J)^-1 at the solution; a held exponent has zero variance.
-  Eigen::Matrix<double, kNp, kNp> JtJ = Eigen::Matrix<double, kNp, kNp>::Zero();
-  {
-    StribeckChunk all(v.data(), f.data(), n);
-    std::vector<double> r(static_cast<std::size_t>(n)), J(static_cast<std::size_t>(n) * kNp);
-    const double* params[] = {best.p};
-    double* jacs[] = {J.data()};
-    all.Evaluate(params, r.data(), jacs);
-    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, kNp, Eigen::RowMajor>> Jm(J.data(), n, kNp);
-    JtJ = Jm.transpose() * Jm;
-  }
+  // Covariance s^2 (J'J)^-1 at the solution; a held exponent has zero variance. J'J is the
+  // Jacobian's Gram matrix over all points, accumulated without storing J.
+  best.point_ssr = best.G(kNp, kNp);
+  const Eigen::Matrix<double, kNp, kNp> JtJ = best.G.topLeftCorner<kNp, kNp>();
   std::vector<int> free_idx;
   for (int k = 0; k < kNp; ++k)
     if (!(k == kDelta && o.fixed_delta > 0)) free_idx.push_back(k);
@@ -201,7 +325,7 @@ OneSided fit_one_sided(const Eigen::VectorXd& v, const Eigen::VectorXd& f, const
   Eigen::MatrixXd A(nf, nf);
   for (int a = 0; a < nf; ++a)
     for (int b = 0; b < nf; ++b) A(a, b) = JtJ(free_idx[a], free_idx[b]);
-  const double s2 = best.ssr / std::max(1, n - nf);
+  const double s2 = best.ssr / std::max<double>(1, static_cast<double>(n - nf));
   const Eigen::MatrixXd Ainv = A.completeOrthogonalDecomposition().pseudoInverse();
   best.cov.setZero();
   for (int a = 0; a < nf; ++a)
@@ -245,11 +369,16 @@ void split(const Eigen::VectorXd& v, const Eigen::VectorXd& f, Eigen::VectorXd& 
   fn = Eigen::Map<Eigen::VectorXd>(d.data(), static_cast<Eigen::Index>(d.size()));
 }
 
-void finish(StaticFit& fit, const Eigen::VectorXd& v, const Eigen::VectorXd& f) {
-  double ssr = 0;
-  for (Eigen::Index i = 0; i < v.size(); ++i) {
-    const double r = fit.law.sliding(v[i]) - f[i];
-    ssr += r * r;
+// Fit figures from the law's residuals, or from `known_ssr` (the sum of squared residuals at
+// the solution, when the fit already has it) to save a pass over the points.
+void finish(StaticFit& fit, const Eigen::VectorXd& v, const Eigen::VectorXd& f, double known_ssr = -1) {
+  double ssr = known_ssr;
+  if (ssr < 0) {
+    ssr = 0;
+    for (Eigen::Index i = 0; i < v.size(); ++i) {
+      const double r = fit.law.sliding(v[i]) - f[i];
+      ssr += r * r;
+    }
   }
   fit.samples = static_cast<std::size_t>(v.size());
   fit.rmse = std::sqrt(ssr / static_cast<double>(v.size()));
@@ -282,6 +411,7 @@ void stribeck_warnings(const OneSided& s, const std::string& side, std::vector<s
 
 StaticFit fit_static_law(const Eigen::VectorXd& velocity, const Eigen::VectorXd& force, const StaticFitOptions& o) {
   StaticFit fit;
+  double known_ssr = -1;  // set by fits that end with the residuals' sum of squares
   switch (o.model) {
     case StaticFitModel::coulomb_viscous: {
       check_input(velocity, force, 3);
@@ -328,6 +458,7 @@ StaticFit fit_static_law(const Eigen::VectorXd& velocity, const Eigen::VectorXd&
       fit.iterations = s.iterations;
       fit.converged = s.converged;
       stribeck_warnings(s, "", fit.warnings);
+      known_ssr = s.point_ssr;
       break;
     }
     case StaticFitModel::stribeck_asymmetric: {
@@ -350,10 +481,11 @@ StaticFit fit_static_law(const Eigen::VectorXd& velocity, const Eigen::VectorXd&
       fit.converged = p.converged && n.converged;
       stribeck_warnings(p, " (positive direction)", fit.warnings);
       stribeck_warnings(n, " (negative direction)", fit.warnings);
+      known_ssr = p.point_ssr + n.point_ssr;
       break;
     }
   }
-  finish(fit, velocity, force);
+  finish(fit, velocity, force, known_ssr);
   return fit;
 }
 

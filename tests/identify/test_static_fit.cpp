@@ -2,7 +2,10 @@
 // uncertainty on noisy data, and the error messages.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <tuple>
+#include <vector>
 
 #include "frictionlab/identify/static_fit.hpp"
 
@@ -140,4 +143,42 @@ TEST(StaticFit, ErrorsNameTheProblem) {
     EXPECT_NE(std::string(e.what()).find("point 2 has velocity 0"), std::string::npos) << e.what();
   }
   EXPECT_THROW(fl::parse_static_fit_model("lugre"), std::invalid_argument);
+}
+
+// The large-data path reduces chunks of points to their normal equations; on data sorted by
+// speed whole chunks lie far past vs, where the decay columns of the Jacobian vanish (a singular
+// chunk). The fit must not depend on the order of the points.
+TEST(StaticFit, StribeckDoesNotDependOnPointOrder) {
+  const fl::Stribeck truth{0.02, 0.035, 0.8, 1.6, 1.5e-4};
+  constexpr int kPoints = 40000;  // enough for several chunks
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> exponent(-3.0, 0.0);
+  std::normal_distribution<double> noise(0.0, 2e-4);
+  std::vector<std::pair<double, double>> points(kPoints);
+  for (int i = 0; i < kPoints; ++i) {
+    const double v = 300.0 * std::pow(10.0, exponent(rng)) * (i % 2 ? -1.0 : 1.0);
+    points[static_cast<std::size_t>(i)] = {v, truth.sliding(v) + noise(rng)};
+  }
+  const auto fit_of = [](const std::vector<std::pair<double, double>>& pts) {
+    Eigen::VectorXd v(static_cast<Eigen::Index>(pts.size())), f(v.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) std::tie(v[static_cast<Eigen::Index>(i)], f[static_cast<Eigen::Index>(i)]) = pts[i];
+    return fl::fit_static_law(v, f);
+  };
+  const auto shuffled = fit_of(points);
+  std::sort(points.begin(), points.end(), [](const auto& x, const auto& y) { return std::abs(x.first) < std::abs(y.first); });
+  const auto sorted = fit_of(points);
+  // Reordering changes only the rounding of sums over 4e4 points; the solver stops within its
+  // function tolerance (1e-12) of the same minimum.
+  constexpr double kOrderRelTol = 1e-8;
+  constexpr double kStdRelTol = 1e-6;  // a standard deviation means two digits at most
+  ASSERT_EQ(sorted.parameters.size(), shuffled.parameters.size());
+  for (std::size_t k = 0; k < sorted.parameters.size(); ++k) {
+    const auto& a = sorted.parameters[k];
+    const auto& b = shuffled.parameters[k];
+    EXPECT_NEAR(a.value, b.value, kOrderRelTol * std::abs(b.value)) << a.name;
+    EXPECT_NEAR(a.std, b.std, kStdRelTol * b.std) << a.name;
+    EXPECT_GT(a.std, 0.0) << a.name;
+  }
+  EXPECT_TRUE(sorted.converged);
+  EXPECT_NEAR(sorted.rmse, shuffled.rmse, kOrderRelTol * shuffled.rmse);
 }
