@@ -34,6 +34,11 @@ PlantSignals Plant::signals(double, std::span<const double>, const InputValue& u
 
 void Plant::sample(double, std::span<double>, const InputValue&) const {}
 
+bool Plant::jacobian(double, std::span<const double>, const InputValue&, double, std::span<double>,
+                     std::span<double>) const {
+  return false;
+}
+
 // ---- rigid axis -------------------------------------------------------------------------------
 
 RigidAxis::RigidAxis(AxisParams p) : p_(p) {
@@ -47,6 +52,17 @@ void RigidAxis::derivatives(double t, std::span<const double> x, const InputValu
                             std::span<double> dx) const {
   dx[0] = x[1];
   dx[1] = (applied(t, x, u) - friction) / p_.M;
+}
+
+bool RigidAxis::jacobian(double, std::span<const double>, const InputValue&, double, std::span<double> dfdx,
+                         std::span<double> dfdF) const {
+  dfdx[0] = 0.0;  // dx0 = v
+  dfdx[1] = 1.0;
+  dfdx[2] = 0.0;  // dv = (u + offset - F) / M
+  dfdx[3] = 0.0;
+  dfdF[0] = 0.0;
+  dfdF[1] = -1.0 / p_.M;
+  return true;
 }
 
 // ---- pendulum ---------------------------------------------------------------------------------
@@ -91,6 +107,17 @@ void SpringBase::derivatives(double t, std::span<const double> x, const InputVal
                              std::span<double> dx) const {
   dx[0] = x[1];
   dx[1] = (applied(t, x, u) - friction) / p_.m;
+}
+
+bool SpringBase::jacobian(double, std::span<const double>, const InputValue&, double, std::span<double> dfdx,
+                          std::span<double> dfdF) const {
+  dfdx[0] = 0.0;  // dx0 = v
+  dfdx[1] = 1.0;
+  dfdx[2] = -p_.k / p_.m;  // dv = (u - k (x - xb) - c (v - V0) - F) / m
+  dfdx[3] = -p_.c / p_.m;
+  dfdF[0] = 0.0;
+  dfdF[1] = -1.0 / p_.m;
+  return true;
 }
 
 PlantSignals SpringBase::signals(double t, std::span<const double>, const InputValue&) const {

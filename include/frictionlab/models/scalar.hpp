@@ -2,6 +2,7 @@
 // Scalar helpers shared by every friction law. They accept double and ceres::Jet alike,
 // so one formula serves simulation (double) and fitting (automatic differentiation).
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 
@@ -48,16 +49,24 @@ T stribeck_decay(const T& v, const S& vs, const E& delta) {
     if (delta == 2.0) {
       const T x = v / vs;
       const double xx = value_of(x) * value_of(x);
-      return xx > kNegligibleDecayExponent ? T(0) : exp(-x * x);
+      if constexpr (std::is_same_v<T, double>) {  // no branch on xx (see below)
+        const double e = std::exp(-std::min(xx, kNegligibleDecayExponent));
+        return xx > kNegligibleDecayExponent ? 0.0 : e;
+      } else {
+        return xx > kNegligibleDecayExponent ? T(0) : exp(-x * x);
+      }
     }
   }
   if constexpr (std::is_same_v<T, double> && std::is_arithmetic_v<S> && std::is_arithmetic_v<E>) {
     // |x|^delta as exp(delta log|x|): log and exp together cost half of pow, for a relative
     // error of about |delta log|x|| ulps in the exponent (well below the data's resolution).
+    // exp is always called (on a clamped argument) and the cut-off selected afterwards: a branch
+    // on u is taken at random as v moves through the dip, and each miss costs more than exp.
     const double x = std::abs(v / vs);
     if (x == 0.0) return 1.0;
     const double u = delta == 1.0 ? x : std::exp(delta * std::log(x));
-    return u > kNegligibleDecayExponent ? 0.0 : std::exp(-u);
+    const double e = std::exp(-std::min(u, kNegligibleDecayExponent));
+    return u > kNegligibleDecayExponent ? 0.0 : e;
   } else {
     const T u = abs_pow_ratio(v, vs, delta);
     return value_of(u) > kNegligibleDecayExponent ? T(0) : exp(-u);

@@ -25,6 +25,8 @@ class RigidAxis : public Plant {
   double applied(double t, std::span<const double> x, const InputValue& u) const override;
   void derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
                    std::span<double> dx) const override;
+  bool jacobian(double t, std::span<const double> x, const InputValue& u, double friction, std::span<double> dfdx,
+                std::span<double> dfdF) const override;
   const AxisParams& params() const { return p_; }
 
  private:

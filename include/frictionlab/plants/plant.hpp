@@ -49,6 +49,14 @@ class Plant {
   virtual void derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
                            std::span<double> dx) const = 0;
 
+  /// Partial derivatives of derivatives() at (t, x, u, friction), for the stiff integrator's
+  /// Newton matrix: dfdx (num_states()^2 entries, row-major: dfdx[i * n + j] = d dx[i] / d x[j])
+  /// and dfdF (num_states() entries: d dx[i] / d friction). Returns false, writing nothing, when
+  /// the plant has no analytic form (default): the engine then uses difference quotients.
+  /// No allocation.
+  virtual bool jacobian(double t, std::span<const double> x, const InputValue& u, double friction,
+                        std::span<double> dfdx, std::span<double> dfdF) const;
+
   /// Current, voltage and reference at (t, x, u).
   virtual PlantSignals signals(double t, std::span<const double> x, const InputValue& u) const;
 

@@ -27,6 +27,8 @@ class SpringBase : public Plant {
   double applied(double t, std::span<const double> x, const InputValue& u) const override;
   void derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
                    std::span<double> dx) const override;
+  bool jacobian(double t, std::span<const double> x, const InputValue& u, double friction, std::span<double> dfdx,
+                std::span<double> dfdF) const override;
   PlantSignals signals(double t, std::span<const double> x, const InputValue& u) const override;
   const SpringBaseParams& params() const { return p_; }
 
