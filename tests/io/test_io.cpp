@@ -12,6 +12,7 @@
 #include <string>
 
 #include "error_message.hpp"
+#include "temp_dir.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/io/csv.hpp"
@@ -25,30 +26,11 @@ namespace fs = std::filesystem;
 namespace {
 
 using frictionlab::testing::error_of;
+using frictionlab::testing::TempDir;
 
 const std::string kEmps = std::string(FRICTIONLAB_DATA_DIR) + "/emps/DATA_EMPS.mat";
 const std::string kPulses = std::string(FRICTIONLAB_DATA_DIR) + "/emps/DATA_EMPS_PULSES.mat";
 
-// A fresh scratch directory per test, removed afterwards.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() / ("frictionlab_io_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  std::string file(const std::string& name, const std::string& content) const {
-    const std::string p = (path_ / name).string();
-    std::ofstream(p, std::ios::binary) << content;
-    return p;
-  }
-  fs::path path() const { return path_; }
-
- private:
-  fs::path path_;
-};
 
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "error_message.hpp"
+#include "temp_dir.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/io/mat.hpp"
 
@@ -20,24 +21,8 @@ namespace fs = std::filesystem;
 namespace {
 
 using frictionlab::testing::error_of;
+using frictionlab::testing::TempDir;
 
-// A scratch directory per test, removed afterwards.
-class ScratchDir {
- public:
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() / ("frictionlab_mat73_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() { fs::remove_all(path_); }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  fs::path path_;
-};
 
 struct Variable {
   std::string name;
@@ -88,7 +73,7 @@ std::vector<Variable> rig_variables() {
 }  // namespace
 
 TEST(MatV73, ReadsColumnsAndScalarsWrittenByMatio) {
-  ScratchDir d;
+  TempDir d;
   const std::string p = d.file("rig_v73.mat");
   ASSERT_TRUE(write_mat73(p, rig_variables())) << "matio cannot write MAT v7.3 (built without HDF5?)";
   // The MATLAB header says 7.3 and HDF5's signature follows at byte 512: a real v7.3 file.
@@ -122,7 +107,7 @@ TEST(MatV73, ReadsColumnsAndScalarsWrittenByMatio) {
 }
 
 TEST(MatV73, CorruptFilesGiveAnErrorNamingTheFile) {
-  ScratchDir d;
+  TempDir d;
   const std::string good = d.file("good_v73.mat");
   ASSERT_TRUE(write_mat73(good, rig_variables()));
   const std::string bytes = read_bytes(good);

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "error_message.hpp"
+#include "temp_dir.hpp"
 #include "frictionlab/io/law_file.hpp"
 
 namespace frictionlab {
@@ -155,8 +156,8 @@ TEST(LawToJson, RoundTripForEveryLaw) {
 }
 
 TEST(LoadLaw, FilesAndScenarioFrictionBlock) {
-  const auto dir = std::filesystem::temp_directory_path() / ("frictionlab_test_law_file_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const frictionlab::testing::TempDir tmp;
+  const auto& dir = tmp.path();
   {
     std::ofstream(dir / "law.yaml") << "friction:\n  law: coulomb\n  Fc: 2.5\n";
     std::ofstream(dir / "law.json") << R"({"law": "viscous", "Fv": 0.25})";
@@ -167,7 +168,6 @@ TEST(LoadLaw, FilesAndScenarioFrictionBlock) {
   EXPECT_THAT(error_of([&] { load_law((dir / "bad.json").string()); }), HasSubstr("bad.json: not valid JSON"));
   EXPECT_THAT(error_of([&] { load_law((dir / "missing.yaml").string()); }),
               HasSubstr("missing.yaml: cannot open the friction law file"));
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "frictionlab/io/scenario.hpp"
 #include "frictionlab/plants/emps_pd.hpp"
 #include "frictionlab/simulate/simulate.hpp"
+#include "temp_dir.hpp"
 
 namespace fl = frictionlab;
 
@@ -63,8 +64,8 @@ TEST(SampledLoop, VoltageFollowsTheControlLaw) {
 }
 
 TEST(DataInput, ReadsAColumnOnARegularGrid) {
-  const auto dir = std::filesystem::temp_directory_path() / "frictionlab_data_input_test";
-  std::filesystem::create_directories(dir);
+  const frictionlab::testing::TempDir tmp;
+  const auto& dir = tmp.path();
   {
     std::ofstream f(dir / "in.csv");
     f << "time,u\n1.0,0\n1.5,2\n2.0,4\n";
@@ -85,5 +86,4 @@ TEST(DataInput, ReadsAColumnOnARegularGrid) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("no column 'qg'"), std::string::npos) << e.what();
   }
-  std::filesystem::remove_all(dir);
 }
