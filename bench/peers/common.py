@@ -145,3 +145,42 @@ def stribeck_accuracy(params):
     """Largest relative error of the fitted (Fc, Fs, vs, delta, Fv) against the truth, and each."""
     errs = {k: abs(params[k] - STRIBECK_TRUTH[k]) / abs(STRIBECK_TRUTH[k]) for k in STRIBECK_TRUTH}
     return {"max_param_rel_err_vs_truth": max(errs.values()), "param_rel_err_vs_truth": errs}
+
+
+# ---- LuGre output-error fit (tests/identify/test_lugre.cpp) ----------------------------------
+# Canudas de Wit 1995 Table I on a unit mass; the static part is given to both sides, the fit is
+# of sigma0 and sigma1 only.
+LUGRE = dict(s0=1e5, s1=np.sqrt(1e5), s2=0.4, Fc=1.0, Fs=1.5, vs=0.001, delta=2.0, M=1.0, T=10.0, rate=1000.0)
+
+
+def lugre_input_table():
+    """Corners (s, N) of the applied force, linear in between: a ramp to 0.95 Fs and back (0..4 s,
+    presliding), then a sine of amplitude 2 Fs at 0.5 Hz with corners every 20 ms (4..10 s)."""
+    Fs = LUGRE["Fs"]
+    times, values = [0.0, 2.0, 4.0], [0.0, 0.95 * Fs, 0.0]
+    for i in range(1, 301):
+        t = 4.0 + 0.02 * i
+        times.append(round(t, 6))
+        values.append(2 * Fs * np.sin(np.pi * (t - 4.0)))
+    return np.array(times), np.array(values)
+
+
+def lugre_scenario_yaml(path):
+    """The experiment as a frictionlab scenario file (for `frictionlab simulate`)."""
+    L = LUGRE
+    times, values = lugre_input_table()
+    with open(path, "w") as f:
+        f.write("description: Canudas de Wit 1995 Table I, presliding then sliding (bench lugre_fit)\n")
+        f.write(f"plant:\n  type: axis\n  M: {L['M']!r}\n")
+        f.write(f"friction:\n  law: lugre\n  sigma0: {L['s0']!r}\n  sigma1: {float(L['s1'])!r}\n  sigma2: {L['s2']!r}\n"
+                f"  Fc: {L['Fc']!r}\n  Fs: {L['Fs']!r}\n  vs: {L['vs']!r}\n")
+        f.write("input:\n  type: table\n  times: [%s]\n  values: [%s]\n" %
+                (", ".join(repr(float(t)) for t in times), ", ".join(repr(float(v)) for v in values)))
+        f.write(f"duration: {L['T']!r}\noutput_rate: {L['rate']!r}\n")
+
+
+def lugre_accuracy(params):
+    """Relative errors of the fitted sigma0, sigma1 against Table I, and the larger."""
+    errs = {"sigma0": float(abs(params["sigma0"] - LUGRE["s0"]) / LUGRE["s0"]),
+            "sigma1": float(abs(params["sigma1"] - LUGRE["s1"]) / LUGRE["s1"])}
+    return {"max_param_rel_err_vs_truth": max(errs.values()), "param_rel_err_vs_truth": errs}

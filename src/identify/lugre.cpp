@@ -49,28 +49,36 @@ struct Window {
   int residuals() const { return end - begin; }
 };
 
-// Bristle state after tau (s) at constant velocity v, from z: the exact solution of
-// dz/dt = v - rate z, rate = sigma0 |v| / g(v), as LuGreT::step. Also gives dz/dt at the end.
+// Bristle state over one substep h at constant velocity v, from z: the exact solution of
+// dz/dt = v - rate z, rate = sigma0 |v| / g(v), as LuGreT::step, at h/2 (for the corrector's
+// force) and at h (the new state), with dz/dt at both. One g(v) and one exponential serve both:
+// exp(-rate h) = exp(-rate h / 2)^2.
 template <class T>
 struct Relaxed {
   T z, zdot;
 };
 template <class T>
-Relaxed<T> relax(const T& z, const T& v, double tau, const T& s0, const T& Fc, const T& dF, const T& vs, double delta) {
+struct RelaxedStep {
+  Relaxed<T> mid, end;
+};
+template <class T, class S>
+RelaxedStep<T> relax(const T& z, const T& v, double h, const T& s0, const S& Fc, const S& dF, const S& vs, double delta) {
   using std::abs;
   using std::exp;
   const double vv = value_of(v);
-  if (vv == 0.0) return {z, v};
+  if (vv == 0.0) return {{z, v}, {z, v}};
   const T g = Fc + dF * stribeck_decay(v, vs, delta);
   const T rate = s0 * abs(v) / g;
   const T zss = (vv > 0 ? g : -g) / s0;
-  const T zn = zss + (z - zss) * exp(-rate * tau);
-  return {zn, v - rate * zn};
+  const T e_half = exp(-rate * (0.5 * h));
+  const T z_mid = zss + (z - zss) * e_half;
+  const T z_end = zss + (z - zss) * (e_half * e_half);
+  return {{z_mid, v - rate * z_mid}, {z_end, v - rate * z_end}};
 }
 
 // dz/dt = v - sigma0 |v| z / g(v) (m/s).
-template <class T>
-T state_rate(const T& z, const T& v, const T& s0, const T& Fc, const T& dF, const T& vs, double delta) {
+template <class T, class S>
+T state_rate(const T& z, const T& v, const T& s0, const S& Fc, const S& dF, const S& vs, double delta) {
   using std::abs;
   if (value_of(v) == 0.0) return v;
   return v - s0 * abs(v) * z / (Fc + dF * stribeck_decay(v, vs, delta));
@@ -88,11 +96,13 @@ T state_rate(const T& z, const T& v, const T& s0, const T& Fc, const T& dF, cons
 // non-smooth function of the parameters, and Ceres needs its derivative. A first-order version
 // (explicit v, exact z) was 70 um off CVODE per 1 s window of Table I sliding at 8 substeps,
 // enough to bias sigma1 by far more than 5 %.
-template <class T>
-void simulate_residuals(const T* dyn, const T* sta, const Record& r, const Window& w, T* out) {
+// S is T when the static part is fitted, double when it is given (then the Jets carry only the
+// two dynamic derivatives, not six).
+template <class T, class S>
+void simulate_residuals(const T* dyn, const S* sta, const Record& r, const Window& w, T* out) {
   using std::exp;
   const T s0 = exp(dyn[kLogS0]), s1 = exp(dyn[kLogS1]);
-  const T s2 = sta[kS2], Fc = exp(sta[kLogFc]), dF = sta[kDF], vs = exp(sta[kLogVs]);
+  const S s2 = sta[kS2], Fc = exp(sta[kLogFc]), dF = sta[kDF], vs = exp(sta[kLogVs]);
   const double h = r.dt / r.substeps;
   const double inv_m = 1.0 / r.M;
   const double v0 = w.at_rest ? 0.0 : r.v[w.begin];
@@ -107,13 +117,12 @@ void simulate_residuals(const T* dyn, const T* sta, const Record& r, const Windo
       const T F0 = s0 * z + s1 * zdot + s2 * v;
       const T vp = v + h * inv_m * (ua - F0);
       const T vm = 0.5 * (v + vp);
-      const Relaxed<T> mid = relax(z, vm, 0.5 * h, s0, Fc, dF, vs, r.delta);
-      const T Fm = s0 * mid.z + s1 * mid.zdot + s2 * vm;
+      const RelaxedStep<T> zr = relax(z, vm, h, s0, Fc, dF, vs, r.delta);
+      const T Fm = s0 * zr.mid.z + s1 * zr.mid.zdot + s2 * vm;
       const T vn = v + h * inv_m * (um - Fm);
-      const Relaxed<T> end = relax(z, vm, h, s0, Fc, dF, vs, r.delta);
       x += (0.5 * h) * (v + vn);
       v = vn;
-      z = end.z;
+      z = zr.end.z;
       zdot = state_rate(z, v, s0, Fc, dF, vs, r.delta);
     }
     out[k - w.begin] = (x - r.x[k + 1]) / r.scale;
@@ -125,6 +134,18 @@ struct OutputError {
   Window w;
   template <class T>
   bool operator()(const T* dyn, const T* sta, T* residuals) const {
+    simulate_residuals(dyn, sta, *r, w, residuals);
+    return true;
+  }
+};
+
+// The same with the static part given: only [log sigma0, log sigma1] are parameters.
+struct OutputErrorStaticGiven {
+  const Record* r;
+  Window w;
+  const double* sta;  // [sigma2, log Fc, dF, log vs], fixed
+  template <class T>
+  bool operator()(const T* dyn, T* residuals) const {
     simulate_residuals(dyn, sta, *r, w, residuals);
     return true;
   }
@@ -383,17 +404,21 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   ceres::Problem problem;
   std::vector<ceres::CostFunction*> costs;
   for (const Window& w : windows) {
-    costs.push_back(new ceres::AutoDiffCostFunction<OutputError, ceres::DYNAMIC, kNd, kNs>(new OutputError{&rec, w}, w.residuals()));
-    problem.AddResidualBlock(costs.back(), nullptr, dyn, sta);
+    if (given) {
+      costs.push_back(new ceres::AutoDiffCostFunction<OutputErrorStaticGiven, ceres::DYNAMIC, kNd>(
+          new OutputErrorStaticGiven{&rec, w, sta}, w.residuals()));
+      problem.AddResidualBlock(costs.back(), nullptr, dyn);
+    } else {
+      costs.push_back(new ceres::AutoDiffCostFunction<OutputError, ceres::DYNAMIC, kNd, kNs>(new OutputError{&rec, w}, w.residuals()));
+      problem.AddResidualBlock(costs.back(), nullptr, dyn, sta);
+    }
   }
   const double h = dt / o.substeps;
   // The explicit velocity update is stable for sigma1 h / M < 2 and sqrt(sigma0 / M) h < 2; keep a
   // factor 2 from both so that no trial step of the solver blows the simulation up.
   problem.SetParameterUpperBound(dyn, kLogS0, std::log(M / (h * h)));
   problem.SetParameterUpperBound(dyn, kLogS1, std::log(M / h));
-  if (given) {
-    problem.SetParameterBlockConstant(sta);
-  } else {
+  if (!given) {
     problem.SetParameterLowerBound(sta, kS2, 0.0);
     problem.SetParameterLowerBound(sta, kDF, 0.0);
     // Keep the static levels within a decade of their starting values and vs within the speeds of
@@ -443,8 +468,8 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
     const Window& w = windows[i];
     const int m = w.residuals();
     Eigen::Matrix<double, Eigen::Dynamic, kNd, Eigen::RowMajor> Jd(m, kNd);
-    Eigen::Matrix<double, Eigen::Dynamic, kNs, Eigen::RowMajor> Js(m, kNs);
-    const double* params[2] = {dyn, sta};
+    Eigen::Matrix<double, Eigen::Dynamic, kNs, Eigen::RowMajor> Js = Eigen::MatrixXd::Zero(m, kNs);
+    const double* params[2] = {dyn, sta};  // the given-static cost reads only the first
     double* jac[2] = {Jd.data(), Js.data()};
     if (!costs[i]->Evaluate(params, e.data() + w.begin, jac)) return fail(r, "the simulation of the identified model failed");
     J.block(w.begin, 0, m, kNd) = Jd;

@@ -12,6 +12,7 @@
 #include "frictionlab/identify/lugre.hpp"
 #include "frictionlab/plants/axis.hpp"
 #include "frictionlab/simulate/simulate.hpp"
+#include "lugre_record.hpp"
 
 namespace frictionlab {
 namespace {
@@ -27,38 +28,9 @@ constexpr double kVsTol = 0.10;
 
 const LuGre kTruth{};  // Table I: sigma0 = 1e5, sigma1 = sqrt(1e5), sigma2 = 0.4, Fc = 1, Fs = 1.5, vs = 1e-3
 
-// The experiment: a slow ramp to 0.95 Fs and back (presliding, 0..4 s), then a force sine of
-// amplitude 2 Fs at 0.5 Hz (sliding both ways, 4..10 s). The table's corners sit on sample times,
-// so linear interpolation between the recorded samples reproduces the input exactly.
-InputSignal experiment() {
-  InputSignal in;
-  in.shape = InputShape::table;
-  const double Fs = kTruth.Fs;
-  in.times = {0.0, 2.0, 4.0};
-  in.values = {0.0, 0.95 * Fs, 0.0};
-  constexpr double kCorner = 0.02;  // s between table corners of the sine (50 Hz)
-  for (int i = 1; 4.0 + i * kCorner <= 10.0 + 1e-9; ++i) {
-    const double t = 4.0 + i * kCorner;
-    in.times.push_back(t);
-    in.values.push_back(2 * Fs * std::sin(std::numbers::pi * (t - 4.0)));
-  }
-  return in;
-}
-
+// The record: Table I on a unit mass under a force ramp (presliding) and a sine (sliding).
 const LugreData& canudas_record() {
-  static const LugreData data = [] {
-    SimulationOptions o;
-    o.duration = 10;
-    o.output_rate = 1000;
-    o.mode = SolverMode::stiff;
-    const Trajectory tr = simulate(RigidAxis(AxisParams{1.0, 0.0}), FrictionLaw(kTruth), experiment(), o);
-    LugreData d;
-    const auto n = static_cast<Eigen::Index>(tr.rows());
-    d.time = Eigen::Map<const Eigen::VectorXd>(tr.time.data(), n);
-    d.force = Eigen::Map<const Eigen::VectorXd>(tr.applied.data(), n);
-    d.position = Eigen::Map<const Eigen::VectorXd>(tr.position.data(), n);
-    return d;
-  }();
+  static const LugreData data = frictionlab::testing::lugre_record();
   return data;
 }
 
