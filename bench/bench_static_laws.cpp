@@ -83,6 +83,8 @@ BENCHMARK_CAPTURE(BM_StaticLaw, karnopp, Karnopp{});
 BENCHMARK_CAPTURE(BM_StaticLaw, table_8_points, table());
 BENCHMARK_CAPTURE(BM_StaticLaw, smooth_tanh, Smooth{1.0, 1.5, 1e-3, 2.0, 0.4, 1e-3, SmoothShape::tanh});
 BENCHMARK_CAPTURE(BM_StaticLaw, smooth_atan, Smooth{1.0, 1.5, 1e-3, 2.0, 0.4, 1e-3, SmoothShape::atan});
+BENCHMARK_CAPTURE(BM_StaticLaw, smooth_tanh_no_dip, Smooth{});  // the default: Fs = Fc, one expm1
+BENCHMARK_CAPTURE(BM_StaticLaw, stribeck_delta_1, Stribeck{1.0, 1.5, 1e-3, 1.0, 0.4});  // exponential shape: one exp
 BENCHMARK_CAPTURE(BM_StaticLaw, coulomb_asymmetric, Asymmetric<Coulomb>{Coulomb{1.0}, Coulomb{0.8}});
 BENCHMARK_CAPTURE(BM_StaticLaw, viscous_asymmetric, Asymmetric<Viscous>{Viscous{0.1}, Viscous{0.2}});
 BENCHMARK_CAPTURE(BM_StaticLaw, coulomb_viscous_asymmetric, Asymmetric<CoulombViscous>{});
