@@ -5,6 +5,7 @@
 //   a = 0 for |z| <= zba or sign(z) != sign(v); 1 for |z| >= zmax = g(v)/sigma0;
 //   a = (1 + sin(pi (|z| - (zmax + zba)/2) / (zmax - zba))) / 2 in between.
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <span>
@@ -116,29 +117,35 @@ struct ElastoPlasticT {
   void steady_state(double v, std::span<double> z) const { z[0] = sgn(v) * level(v) / sigma0; }
 
  private:
-  // Solves w1 = w + h (1 - a(w1) w1 / zmax) for w1 in [w, zmax]; phi(w1) is increasing there.
+  // Solves w1 = w + h (1 - a(w1) w1 / zmax) for w1 in [w, zmax] by Newton's method kept inside
+  // a bracket. phi(y) = y - w - h (1 - a(y) y / zmax) is increasing there (a, a' >= 0), with
+  // phi'(y) = 1 + h (a'(y) y + a(y)) / zmax; a rises as half a sine from zba to zmax.
   double implicit_transition(double w, double h, double zmax) const {
-    auto a_of = [&](double y) {
-      if (y <= zba) return 0.0;
-      if (y >= zmax) return 1.0;
-      return 0.5 * std::sin(std::numbers::pi * (y - (zmax + zba) / 2) / (zmax - zba)) + 0.5;
-    };
-    auto phi = [&](double y) { return y - w - h * (1.0 - a_of(y) * y / zmax); };
-    double lo = w, hi = zmax;
-    if (phi(lo) >= 0) return lo;
-    double y = std::min(w + h, zmax);
-    for (int it = 0; it < 60 && hi - lo > 1e-15 * zmax; ++it) {
-      const double f = phi(y);
-      (f > 0 ? hi : lo) = y;
-      const double eps = 1e-9 * zmax;
-      const double df = (phi(y + eps) - f) / eps;
-      double next = df > 0 ? y - f / df : 0.5 * (lo + hi);
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      if (std::abs(next - y) < 1e-14 * zmax) {
-        y = next;
-        break;
+    const double k = std::numbers::pi / (zmax - zba), mid = (zmax + zba) / 2;
+    const auto phi_and_slope = [&](double y, double& slope) {
+      double a = y >= zmax ? 1.0 : 0.0, da = 0.0;
+      if (y > zba && y < zmax) {
+        a = 0.5 * std::sin(k * (y - mid)) + 0.5;
+        da = 0.5 * k * std::cos(k * (y - mid));
       }
-      y = next;
+      slope = 1.0 + h * (da * y + a) / zmax;
+      return y - w - h * (1.0 - a * y / zmax);
+    };
+    double slope = 0.0;
+    double lo = w, hi = zmax;
+    if (phi_and_slope(lo, slope) >= 0) return lo;
+    double y = std::min(w + h, zmax);
+    constexpr int kMaxIterations = 60;      // bisection alone would need ~50 at double precision
+    constexpr double kStepTolerance = 1e-14;  // relative to zmax: a few ulps of the state
+    for (int it = 0; it < kMaxIterations && hi - lo > 1e-15 * zmax; ++it) {
+      const double f = phi_and_slope(y, slope);
+      (f > 0 ? hi : lo) = y;
+      const double newton = y - f / slope;
+      // A Newton step below the tolerance ends the search, checked before the bracket: at the
+      // root that step is rounding-sized and may land on the bracket's end, where a bisection
+      // would otherwise take over and halve its way down for another 40 iterations.
+      if (std::abs(newton - y) < kStepTolerance * zmax) return std::clamp(newton, lo, hi);
+      y = newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
     }
     return y;
   }
