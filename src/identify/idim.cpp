@@ -4,6 +4,7 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -146,7 +147,9 @@ std::vector<IdimTerm> idim_terms(const IdimOptions& options) {
     }
   }
   for (const auto& t : options.extra_terms) {
-    if (!t.column) throw std::invalid_argument("idim: extra term '" + t.parameter + "' has no column function");
+    if (!t.column && !t.fill) {
+      throw std::invalid_argument("idim: extra term '" + t.parameter + "' has neither a column nor a fill function");
+    }
     out.push_back(t);
   }
   std::set<std::string> seen;
@@ -159,7 +162,34 @@ std::vector<IdimTerm> idim_terms(const IdimOptions& options) {
   return out;
 }
 
+namespace {
+
+// IDIM's work buffers: this thread's scratch, or buffers of its own when a user's column
+// function has called IDIM again inside an outer regression (whose buffers are in use).
+class IdimBuffers {
+ public:
+  IdimBuffers() : nested_(active_++ > 0) {}
+  ~IdimBuffers() { --active_; }
+  IdimBuffers(const IdimBuffers&) = delete;
+  IdimBuffers& operator=(const IdimBuffers&) = delete;
+  Eigen::Map<Vec> get(int slot, Eigen::Index size) {
+    if (!nested_) return detail::scratch(slot, size);
+    Vec& v = own_.emplace_back(size);
+    return {v.data(), size};
+  }
+
+ private:
+  static thread_local int active_;
+  detail::ScratchScope scope_;
+  bool nested_;
+  std::deque<Vec> own_;  // a deque: growing it never moves the vectors handed out
+};
+thread_local int IdimBuffers::active_ = 0;
+
+}  // namespace
+
 IdimRegression idim_regression(const IdimData& data, const IdimOptions& options) {
+  IdimBuffers buffers;
   IdimRegression reg;
   reg.terms = idim_terms(options);
   const Eigen::Index n = data.time.size();
@@ -193,12 +223,12 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options)
     throw std::invalid_argument(where(data) + "neither position nor velocity given; IDIM needs one of them");
   }
   const Eigen::Index pad = filtfilt_padlen(lp, FiltfiltOptions{options.padlen}, n);
-  auto padded = detail::scratch(detail::filtfilt_padded, n + 2 * pad);
+  auto padded = buffers.get(detail::filtfilt_padded, n + 2 * pad);
   padded.segment(pad, n) = *measured;
   filtfilt_in_place(lp, padded, pad);
   const auto filtered = padded.segment(pad, n);
-  auto qd = detail::scratch(detail::idim_qd, n);
-  auto qdd = detail::scratch(detail::idim_qdd, n);
+  auto qd = buffers.get(detail::idim_qd, n);
+  auto qdd = buffers.get(detail::idim_qdd, n);
   const bool from_position = measured == &data.position;
   if (from_position) gradient(filtered, reg.dt, qd);
   else qd = filtered;
@@ -228,7 +258,7 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options)
   for (Eigen::Index j = 0; j < p; ++j) {
     const auto& term = reg.terms[static_cast<std::size_t>(j)];
     if (term.fill) {
-      auto column = detail::scratch(detail::idim_columns + static_cast<int>(j), n);
+      auto column = buffers.get(detail::idim_columns + static_cast<int>(j), n);
       term.fill(k, column);
       views.emplace_back(column.data() + options.skip, used);
       continue;
@@ -249,7 +279,6 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options)
   }
   reg.y = reduced.col(0);
   reg.X = reduced.rightCols(p);
-  detail::trim_scratch();
   return reg;
 }
 
@@ -307,6 +336,7 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options);
 }  // namespace
 
 Result identify_idim(const IdimData& data, const IdimOptions& options) {
+  const detail::ScratchScope scope;  // the regressions of a vs search share the buffers
   const auto terms = idim_terms(options);
   const bool has_stribeck = std::any_of(terms.begin(), terms.end(), [](const IdimTerm& t) { return t.parameter == "Fs_minus_Fc"; });
   IdimOptions o = options;

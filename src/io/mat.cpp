@@ -19,8 +19,10 @@ namespace {
 // are collected here instead, so the error we throw can quote them. (Thread-local: readers on
 // different threads keep their own messages.)
 thread_local std::string g_matio_log;
+thread_local bool g_matio_error = false;  // an error or critical message since the last clear
 
-void matio_log(int /*level*/, char* message) {
+void matio_log(int level, char* message) {
+  if (level == MATIO_LOG_LEVEL_ERROR || level == MATIO_LOG_LEVEL_CRITICAL) g_matio_error = true;
   if (message != nullptr && g_matio_log.size() < 2000) {
     if (!g_matio_log.empty()) g_matio_log += "; ";
     g_matio_log += message;
@@ -146,9 +148,12 @@ Dataset read_mat(const std::string& path) {
   Eigen::Index longest = 0;
   while (true) {
     g_matio_log.clear();
+    g_matio_error = false;
     VarPtr var(Mat_VarReadNext(mat.get()));
     if (!var) {
-      if (!g_matio_log.empty()) fail("cannot read the variable after '" + (names.empty() ? std::string("(start)") : names.back()) + "' (corrupt or truncated file)");
+      // NULL ends the file; with an error logged on the way it is a damaged variable instead
+      // (warnings, e.g. about a class matio skips, are not).
+      if (g_matio_error) fail("cannot read the variable after '" + (names.empty() ? std::string("(start)") : names.back()) + "' (corrupt or truncated file)");
       break;
     }
     const std::string name = var->name != nullptr ? var->name : "";

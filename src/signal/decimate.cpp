@@ -21,7 +21,9 @@ SecondOrderSections decimation_filter(int q) {
 
 }  // namespace
 
-Eigen::VectorXd decimate(const Eigen::VectorXd& x, int q) { return decimate_columns(x, q).col(0); }
+Eigen::VectorXd decimate(const Eigen::VectorXd& x, int q) {
+  return decimate_columns(ColumnViews{{x.data(), x.size()}}, q).col(0);
+}
 
 Eigen::MatrixXd decimate_columns(const Eigen::MatrixXd& x, int q) {
   return sosfiltfilt_columns(decimation_filter(q), x, {}, q);

@@ -33,12 +33,13 @@ void lfilter_in_place(const TransferFunction& tf, double* z, double* x, Eigen::I
   const Eigen::Index k = tf.a.size() - 1;
   const double* b = tf.b.data();
   const double* a = tf.a.data();
-  for (Eigen::Index n = 0; n < count; ++n, x += step) {
-    const double xn = *x;
+  for (Eigen::Index n = 0; n < count; ++n) {
+    double* const at = x + n * step;  // never formed one past either end
+    const double xn = *at;
     const double yn = (k > 0 ? z[0] : 0.0) + b[0] * xn;
     for (Eigen::Index i = 0; i + 1 < k; ++i) z[i] = z[i + 1] + xn * b[i + 1] - yn * a[i + 1];
     if (k > 0) z[k - 1] = xn * b[k] - yn * a[k];
-    *x = yn;
+    *at = yn;
   }
 }
 
@@ -75,8 +76,8 @@ template <int W, int NS = 0>
 void cascade(const SectionCoefficients& s, double* z, double* x, Eigen::Index count, int step) {
   using Lanes = Eigen::Array<double, W, 1>;  // one SIMD-friendly value per channel
   const Eigen::Index ns = NS > 0 ? NS : s.rows();
-  for (Eigen::Index n = 0; n < count; ++n, x += step * W) {
-    Eigen::Map<Lanes> sample(x);
+  for (Eigen::Index n = 0; n < count; ++n) {
+    Eigen::Map<Lanes> sample(x + n * step * W);  // never formed one past either end
     Lanes cur = sample;
     for (Eigen::Index r = 0; r < ns; ++r) {
       Eigen::Map<Lanes> z0(z + 2 * r * W), z1(z + (2 * r + 1) * W);
@@ -230,11 +231,12 @@ Eigen::MatrixX2d sosfilt_zi(const SecondOrderSections& sos) {
 }
 
 Eigen::VectorXd sosfiltfilt(const SecondOrderSections& sos, const Eigen::VectorXd& x, const FiltfiltOptions& options) {
-  return sosfiltfilt_columns(sos, x, options).col(0);
+  return sosfiltfilt_columns(sos, ColumnViews{{x.data(), x.size()}}, options).col(0);
 }
 
 Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Eigen::MatrixXd& x,
                                     const FiltfiltOptions& options, Eigen::Index keep_every) {
+  if (x.cols() == 0 && keep_every >= 1) return Eigen::MatrixXd((x.rows() + keep_every - 1) / keep_every, 0);
   ColumnViews views;
   for (Eigen::Index c = 0; c < x.cols(); ++c) views.emplace_back(x.col(c).data(), x.rows());
   return sosfiltfilt_columns(sos, views, options, keep_every);
@@ -261,6 +263,7 @@ Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Column
   const Eigen::MatrixX2d zi = sosfilt_zi(sos);
   const Eigen::Index cols = static_cast<Eigen::Index>(x.size());
   Eigen::MatrixXd out((n + keep_every - 1) / keep_every, cols);
+  const detail::ScratchScope scope;  // frees a very long record's block buffer when outermost
   // A constant column (IDIM's offset) starts and stays in the steady state of both passes: it
   // comes out times the squared DC gain, so it needs no filtering.
   double dc_gain = 1.0;

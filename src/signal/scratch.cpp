@@ -20,7 +20,14 @@ Eigen::Map<Eigen::VectorXd> scratch(int slot, Eigen::Index size) {
   return {b.data(), size};
 }
 
-void trim_scratch() {
+namespace {
+thread_local int g_scope_depth = 0;
+}  // namespace
+
+ScratchScope::ScratchScope() { ++g_scope_depth; }
+
+ScratchScope::~ScratchScope() {
+  if (--g_scope_depth > 0) return;
   auto& all = buffers();
   Eigen::Index total = 0;
   for (const auto& b : all) total += b.size();

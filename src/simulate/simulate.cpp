@@ -14,6 +14,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <exception>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -200,22 +201,33 @@ class Engine {
     }
   }
 
+  // An exception must not unwind through CVODE's C frames: the callbacks catch it, report an
+  // unrecoverable failure (-1) and the exception is rethrown, as it was, once CVode returns.
+  template <class F>
+  static int guarded(void* user, F&& f) {
+    auto* self = static_cast<Engine*>(user);
+    try {
+      f(self);
+      return 0;
+    } catch (...) {
+      self->callback_exception_ = std::current_exception();
+      return -1;
+    }
+  }
   static int rhs_cb(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
-    static_cast<Engine*>(user)->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
-    return 0;
+    return guarded(user, [&](Engine* self) { self->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot)); });
   }
   static int roots_cb(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
-    static_cast<Engine*>(user)->roots(t, N_VGetArrayPointer(y), g);
-    return 0;
+    return guarded(user, [&](Engine* self) { self->roots(t, N_VGetArrayPointer(y), g); });
   }
   // The analytic Newton matrix (dense, column-major) of the free motion with a dynamic law.
   static int jac_cb(sunrealtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix J, void* user, N_Vector, N_Vector,
                     N_Vector) {
-    auto* self = static_cast<Engine*>(user);
-    const auto n = static_cast<std::size_t>(self->n_);
-    self->system_->jacobian(t, std::span<const double>(N_VGetArrayPointer(y), n), self->input_.at(t),
-                            std::span<double>(SM_DATA_D(J), n * n));
-    return 0;
+    return guarded(user, [&](Engine* self) {
+      const auto n = static_cast<std::size_t>(self->n_);
+      self->system_->jacobian(t, std::span<const double>(N_VGetArrayPointer(y), n), self->input_.at(t),
+                              std::span<double>(SM_DATA_D(J), n * n));
+    });
   }
   static void error_cb(int code, const char* module, const char* function, char* msg, void* user) {
     if (code < 0) {
@@ -415,6 +427,7 @@ class Engine {
         }
         double tret = t;
         const int flag = CVode(sd_.mem, tout, sd_.y, &tret, CV_NORMAL);
+        if (flag < 0 && callback_exception_) std::rethrow_exception(callback_exception_);
         if (flag < 0) fail(tret, error_.empty() ? "CVODE error " + std::to_string(flag) : error_);
         if (steps_ > o_.max_steps) fail(tret, "more than max_steps = " + std::to_string(o_.max_steps) + " steps");
         t = tret;
@@ -598,6 +611,7 @@ class Engine {
   Sundials sd_;
   std::optional<StiffSystem> system_;  // dynamic law with a plant that has an analytic Jacobian
   std::string error_;
+  std::exception_ptr callback_exception_;  // what a callback threw (see guarded)
   double stop_set_ = -1.0;
   long steps_ = 0, rhs_evals_ = 0, restarts_ = 0;
 };

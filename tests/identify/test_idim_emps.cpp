@@ -102,6 +102,22 @@ TEST(IdimEmps, RepeatedIdentificationIsIdentical) {
   }
 }
 
+// A user's column function may run IDIM itself (the inner call must not reuse the outer one's
+// buffers, which are in use): same numbers as without the inner call.
+TEST(IdimEmps, ColumnFunctionMayRunIdimItself) {
+  const fl::IdimData ident = load("DATA_EMPS.mat"), pulses = load("DATA_EMPS_PULSES.mat");
+  fl::IdimOptions plain;
+  plain.extra_terms.push_back({"k", fl::Quantity::stiffness, [](const fl::IdimKinematics& k) { return k.q; }});
+  fl::IdimOptions nested = plain;
+  nested.extra_terms[0].column = [&](const fl::IdimKinematics& k) {
+    EXPECT_TRUE(fl::identify_idim(pulses).ok());  // another record: it would overwrite shared buffers
+    return Eigen::VectorXd(k.q);
+  };
+  const fl::Result a = fl::identify_idim(ident, plain), b = fl::identify_idim(ident, nested);
+  ASSERT_TRUE(a.ok() && b.ok()) << a.message << b.message;
+  for (const auto& p : a.parameters) EXPECT_EQ(p.value, b.value(p.name)) << p.name;
+}
+
 TEST(IdimEmps, RecordNamesAMissingVariable) {
   const fl::Dataset d = fl::read_mat(std::string(FRICTIONLAB_DATA_DIR) + "/emps/DATA_EMPS.mat");
   try {

@@ -62,7 +62,9 @@ Eigen::VectorXd sosfiltfilt(const SecondOrderSections& sos, const Eigen::VectorX
                             const FiltfiltOptions& options = {});
 
 /// sosfiltfilt of every column of x, each on its own (the same numbers as calling sosfiltfilt
-/// column by column, computed several columns at a time), keeping rows 0, keep_every,
+/// column by column, computed several columns at a time; a constant column comes out as the
+/// constant times the squared DC gain without being filtered, which equals filtering it up to
+/// rounding), keeping rows 0, keep_every,
 /// 2 keep_every, ... (decimate keeps every q-th without storing the rest).
 /// Shapes: x is N x C with N > padlen; returns ceil(N / keep_every) x C.
 /// \throws std::invalid_argument when N <= padlen, keep_every < 1 or a section has a0 == 0.

@@ -14,7 +14,8 @@ namespace frictionlab {
 /// A plant with a dynamic friction law as one first-order system of n = np + nz states:
 ///   d/dt x = plant.derivatives(t, x, u, F),  d/dt z = law.derivative(z, v),  F = law.force(z, v),
 /// with v = x[1]. Holds references to plant and law (they must outlive it) and its own scratch
-/// space, so one object serves one thread; no call allocates.
+/// space, so one object serves one thread; no call allocates for laws of up to 16 states (GMS
+/// with more elements uses heap scratch for its derivatives).
 class StiffSystem {
  public:
   /// \throws std::invalid_argument when the law is not dynamic.
