@@ -1,7 +1,10 @@
 #include "frictionlab/simulate/trajectory.hpp"
 
+#include "column_pool.hpp"
+
 #include <charconv>
 #include <stdexcept>
+#include <utility>
 
 namespace frictionlab {
 
@@ -12,6 +15,12 @@ const char* switch_kind_name(SwitchKind kind) {
     case SwitchKind::reversal: return "reversal";
   }
   return "?";
+}
+
+Trajectory::~Trajectory() {
+  for (auto* c : {&time, &position, &velocity, &friction, &applied, &current, &voltage, &reference, &stuck})
+    detail::recycle_column(std::move(*c));
+  for (auto& c : law_state) detail::recycle_column(std::move(c));
 }
 
 const std::vector<std::string>& Trajectory::column_names() {

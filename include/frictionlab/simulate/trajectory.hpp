@@ -32,6 +32,8 @@ struct SimulationStats {
 };
 
 /// Sampled simulation result. All columns have rows() entries.
+/// Destroying a Trajectory keeps its large columns' storage (at most 64 MiB per thread) for the
+/// next simulate() on the same thread, so a loop of simulations maps no new memory.
 struct Trajectory {
   std::vector<double> time;       ///< s
   std::vector<double> position;   ///< m or rad
@@ -47,6 +49,13 @@ struct Trajectory {
   std::vector<std::vector<double>> law_state;
   std::vector<ModeSwitch> switches;  ///< hybrid mode: every mode switch, in time order
   SimulationStats stats;
+
+  Trajectory() = default;
+  Trajectory(const Trajectory&) = default;
+  Trajectory(Trajectory&&) noexcept = default;
+  Trajectory& operator=(const Trajectory&) = default;
+  Trajectory& operator=(Trajectory&&) noexcept = default;
+  ~Trajectory();
 
   std::size_t rows() const { return time.size(); }
   /// Column names in CSV order: time, position, velocity, friction, applied, current, voltage,
