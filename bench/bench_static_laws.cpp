@@ -1,12 +1,14 @@
 // Static friction laws: one evaluation of the sliding force, through the concrete type (inlined,
 // what a templated controller or fitter runs) and through FrictionLaw (run-time choice by name).
-// Target: < 5 ns per call. The velocity cycles through 1024 values so nothing is constant-folded.
+// Target: < 5 ns per call (BM_FrictionLawBatch: per value of an array). The velocity cycles
+// through 1024 values so nothing is constant-folded.
 
 #include <benchmark/benchmark.h>
 
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "frictionlab/models/friction_law.hpp"
 
@@ -49,6 +51,23 @@ void BM_FrictionLaw(benchmark::State& state, FrictionLaw law) {
     benchmark::DoNotOptimize(law.sliding(v[i++ & (kInputs - 1)]));
   }
   state.SetLabel("target < 5 ns");
+}
+
+// The batch call FrictionLaw::sliding(v, F) over the 1024 velocities: one dispatch per call,
+// AVX2 kernels for the laws with exp, log, tanh or atan. The counter time_per_eval is the time
+// per velocity (an inverted rate of 1024 per iteration: seconds, printed with an SI prefix).
+void BM_FrictionLawBatch(benchmark::State& state, FrictionLaw law) {
+  const auto& v = velocities();
+  std::array<double, kInputs> F{};
+  for (auto _ : state) {
+    law.sliding(v, F);
+    benchmark::DoNotOptimize(F.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(kInputs));
+  state.counters["time_per_eval"] = benchmark::Counter(
+      static_cast<double>(kInputs), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.SetLabel("target < 5 ns per evaluation");
 }
 
 // With stiction: friction_force(law, v, applied) at a velocity that is zero one call in four.
@@ -100,3 +119,32 @@ BENCHMARK_CAPTURE(BM_FrictionLaw, karnopp, FrictionLaw(Karnopp{}));
 BENCHMARK_CAPTURE(BM_FrictionLaw, table_8_points, FrictionLaw(table()));
 BENCHMARK_CAPTURE(BM_FrictionLaw, smooth_tanh, FrictionLaw(Smooth{}));
 BENCHMARK_CAPTURE(BM_FrictionLaw, stribeck_asymmetric, FrictionLaw(Asymmetric<Stribeck>{}));
+
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, coulomb, FrictionLaw(Coulomb{}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, viscous, FrictionLaw(Viscous{}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, coulomb_viscous, FrictionLaw(CoulombViscous{}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, static_coulomb_viscous, FrictionLaw(StaticCoulombViscous{}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, stribeck, FrictionLaw(Stribeck{}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, stribeck_delta_1, FrictionLaw(Stribeck{1.0, 1.5, 1e-3, 1.0, 0.4}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, stribeck_delta_1_5, FrictionLaw(Stribeck{1.0, 1.5, 1e-3, 1.5, 0.4}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, karnopp, FrictionLaw(Karnopp{}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, table_8_points, FrictionLaw(table()));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, smooth_tanh,
+                  FrictionLaw(Smooth{1.0, 1.5, 1e-3, 2.0, 0.4, 1e-3, SmoothShape::tanh}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, smooth_atan,
+                  FrictionLaw(Smooth{1.0, 1.5, 1e-3, 2.0, 0.4, 1e-3, SmoothShape::atan}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, smooth_tanh_delta_1_5,
+                  FrictionLaw(Smooth{1.0, 1.5, 1e-3, 1.5, 0.4, 1e-3, SmoothShape::tanh}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, smooth_tanh_no_dip, FrictionLaw(Smooth{}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, smooth_atan_no_dip,
+                  FrictionLaw(Smooth{1.0, 1.0, 1e-3, 2.0, 0.0, 1e-3, SmoothShape::atan}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, coulomb_asymmetric,
+                  FrictionLaw(Asymmetric<Coulomb>{Coulomb{1.0}, Coulomb{0.8}}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, viscous_asymmetric,
+                  FrictionLaw(Asymmetric<Viscous>{Viscous{0.1}, Viscous{0.2}}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, coulomb_viscous_asymmetric, FrictionLaw(Asymmetric<CoulombViscous>{}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, static_coulomb_viscous_asymmetric,
+                  FrictionLaw(Asymmetric<StaticCoulombViscous>{}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, stribeck_asymmetric, FrictionLaw(Asymmetric<Stribeck>{}));
+BENCHMARK_CAPTURE(BM_FrictionLawBatch, stribeck_asymmetric_delta_1_5_2,
+                  FrictionLaw(Asymmetric<Stribeck>{{1.0, 1.5, 1e-3, 1.5, 0.4}, {0.8, 1.1, 2e-3, 2.0, 0.3}}));

@@ -2,7 +2,10 @@
 #include <pybind11/stl.h>
 
 #include <optional>
+#include <span>
 #include <sstream>
+#include <stdexcept>
+#include <vector>
 
 #include "common.hpp"
 
@@ -45,6 +48,21 @@ std::string law_repr(const FrictionLaw& law) {
   return s.str();
 }
 
+// The sliding force (N or N m) at v (m/s or rad/s): a float for a number, an array of v's shape
+// for anything array-like, computed by one batch call (FrictionLaw::sliding(v, F): one dispatch,
+// vector kernels) on v itself when it is a C-contiguous float64 array, on a float64 copy otherwise.
+py::object sliding_of(const FrictionLaw& law, const py::object& v) {
+  if (py::isinstance<py::float_>(v) || py::isinstance<py::int_>(v)) return py::float_(law.sliding(py::cast<double>(v)));
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(v);
+  if (!a || v.is_none())  // numpy reads None as NaN
+    throw std::invalid_argument("v: expected a number or an array of numbers (m/s or rad/s)");
+  if (a.ndim() == 0) return py::float_(law.sliding(*a.data()));
+  py::array_t<double> F(std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()));
+  const auto n = static_cast<std::size_t>(a.size());
+  law.sliding(std::span<const double>(a.data(), n), std::span<double>(F.mutable_data(), n));
+  return F;
+}
+
 }  // namespace
 
 FrictionLaw law_arg(const py::handle& x) {
@@ -84,14 +102,12 @@ Raises ValueError naming the law and parameter for an unknown name, a missing or
         return d;
       }, py::arg("axis") = "linear", "Unit of each scalar parameter on a 'linear' or 'rotary' axis, e.g. {'Fc': 'N', 'Fv': 'N s/m'}.")
       .def("to_dict", &law_to_dict, "The law as a dict, the form the constructor accepts.")
-      .def("sliding", [](const FrictionLaw& l, py::object v) {
-        return py::vectorize([&l](double x) { return l.sliding(x); })(v);
-      }, py::arg("v"),
-           "Friction force (N or N m) while sliding at velocity v (m/s or rad/s; scalar or numpy array). "
-           "For dynamic laws: the steady-state force at constant v.")
-      .def("__call__", [](const FrictionLaw& l, py::object v) {
-        return py::vectorize([&l](double x) { return l.sliding(x); })(v);
-      }, py::arg("v"), "Same as sliding(v): friction force (N or N m) at velocity v (m/s or rad/s).")
+      .def("sliding", &sliding_of, py::arg("v"),
+           "Friction force (N or N m) while sliding at velocity v (m/s or rad/s): a float for a number, an array "
+           "of v's shape for an array (evaluated in one call, vectorised). For dynamic laws: the steady-state "
+           "force at constant v.")
+      .def("__call__", &sliding_of, py::arg("v"),
+           "Same as sliding(v): friction force (N or N m) at velocity v (m/s or rad/s).")
       .def("force", [](const FrictionLaw& l, py::object v, py::object applied) {
         return py::vectorize([&l](double x, double a) { return l.force(x, a); })(v, applied);
       }, py::arg("v"), py::arg("applied"),
