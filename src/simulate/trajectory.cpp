@@ -17,6 +17,28 @@ const char* switch_kind_name(SwitchKind kind) {
   return "?";
 }
 
+Trajectory& Trajectory::operator=(Trajectory&& other) noexcept {
+  Trajectory taken(std::move(other));
+  swap(taken);
+  return *this;  // taken, now holding the old contents, recycles them
+}
+
+void Trajectory::swap(Trajectory& other) noexcept {
+  using std::swap;
+  swap(time, other.time);
+  swap(position, other.position);
+  swap(velocity, other.velocity);
+  swap(friction, other.friction);
+  swap(applied, other.applied);
+  swap(current, other.current);
+  swap(voltage, other.voltage);
+  swap(reference, other.reference);
+  swap(stuck, other.stuck);
+  swap(law_state, other.law_state);
+  swap(switches, other.switches);
+  swap(stats, other.stats);
+}
+
 Trajectory::~Trajectory() {
   for (auto* c : {&time, &position, &velocity, &friction, &applied, &current, &voltage, &reference, &stuck})
     detail::recycle_column(std::move(*c));

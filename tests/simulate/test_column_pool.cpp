@@ -89,3 +89,25 @@ TEST(ColumnPool, RecyclingAfterThePoolIsGoneAtThreadExitJustFrees) {
     EXPECT_GT(detail::pooled_doubles(), 0u);
   }).join();
 }
+
+// `t = simulate(s)` in a loop: the assigned-over columns are recycled as well, and the assignment
+// takes every part of the result.
+TEST(ColumnPool, MoveAssignmentTakesEverythingAndRecyclesTheOldColumns) {
+  Scenario s = example("craig_motor_trapezoid");  // hybrid: switches and stats to carry over
+  Trajectory t = simulate(s);
+  std::size_t old_capacity = 0;
+  for (const auto& name : Trajectory::column_names()) old_capacity += t.column(name).capacity();
+  Trajectory fresh = simulate(s);
+  const Trajectory expected = fresh;  // a copy to compare with
+  const std::size_t pooled_before = detail::pooled_doubles();
+  t = std::move(fresh);
+  EXPECT_EQ(detail::pooled_doubles() - pooled_before, old_capacity) << "all nine assigned-over columns go to the pool";
+  EXPECT_EQ(t.time, expected.time);
+  EXPECT_EQ(t.velocity, expected.velocity);
+  EXPECT_EQ(t.stuck, expected.stuck);
+  EXPECT_EQ(t.reference, expected.reference);
+  ASSERT_EQ(t.switches.size(), expected.switches.size());
+  EXPECT_GT(t.switches.size(), 0u);
+  EXPECT_EQ(t.stats.steps, expected.stats.steps);
+  EXPECT_STREQ(t.stats.solver, "hybrid");
+}

@@ -54,8 +54,11 @@ struct Trajectory {
   Trajectory(const Trajectory&) = default;
   Trajectory(Trajectory&&) noexcept = default;
   Trajectory& operator=(const Trajectory&) = default;
-  Trajectory& operator=(Trajectory&&) noexcept = default;
+  /// Takes other's contents; this one's old columns go to the pool too (`t = simulate(s)` in a
+  /// loop reuses them).
+  Trajectory& operator=(Trajectory&& other) noexcept;
   ~Trajectory();
+  void swap(Trajectory& other) noexcept;
 
   std::size_t rows() const { return time.size(); }
   /// Column names in CSV order: time, position, velocity, friction, applied, current, voltage,
