@@ -1,8 +1,8 @@
 // FrictionLaw::sliding over arrays: the law's type is resolved once per call. Laws without
 // transcendental functions loop over their inline scalar formula (which the compiler may
-// vectorise); stribeck, stribeck-asymmetric and smooth run the AVX2 kernels of
-// sliding_batch_avx2.cpp on whole groups of 4 values when the build has them and the CPU runs
-// them, and their scalar formula on the rest.
+// vectorise); stribeck, stribeck-asymmetric and smooth run the vector kernels of the widest set
+// the build has and the CPU runs (8 wide on AVX-512, 4 on AVX2; sliding_kernels.hpp) on whole
+// vectors of values, and their scalar formula on the rest.
 
 #include "sliding_batch.hpp"
 
@@ -11,9 +11,7 @@
 #include <type_traits>
 #include <variant>
 
-#ifdef FRICTIONLAB_AVX2_KERNELS
 #include "sliding_kernels.hpp"
-#endif
 
 namespace frictionlab {
 namespace detail {
@@ -24,7 +22,19 @@ void scalar_loop(const Law& law, std::span<const double> v, std::span<double> F)
   for (std::size_t i = 0; i < v.size(); ++i) F[i] = law.sliding(v[i]);
 }
 
+// The kernel table of a set, nullptr for scalar and for a set this build lacks.
+const KernelSet* kernel_set(BatchKernels kernels) {
+  switch (kernels) {
 #ifdef FRICTIONLAB_AVX2_KERNELS
+    case BatchKernels::avx2: return &avx2_kernels;
+#endif
+#ifdef FRICTIONLAB_AVX512_KERNELS
+    case BatchKernels::avx512: return &avx512_kernels;
+#endif
+    default: return nullptr;
+  }
+}
+
 Decay decay_of(double Fc, double Fs, double delta) {
   if (Fs == Fc) return Decay::none;
   if (delta == 2.0) return Decay::gaussian;
@@ -40,38 +50,76 @@ AtZero at_zero(const Law& law) {
   return {law.sliding(0.0), law.sliding(-0.0)};
 }
 
-// True when an AVX2 kernel serves `law`: it writes the whole groups of 4 values, the scalar law
-// the rest.
+// True when a kernel of `set` serves `law`: it writes the whole vectors of values, the scalar
+// law the rest.
 template <class Law>
-bool run_avx2_kernel(const Law& law, std::span<const double> v, std::span<double> F) {
-  const std::size_t n = v.size() - v.size() % 4;
+bool run_kernel(const KernelSet& set, const Law& law, std::span<const double> v, std::span<double> F) {
+  const std::size_t n = v.size() - v.size() % set.width;
   if constexpr (std::is_same_v<Law, Stribeck>) {
-    stribeck_sliding_avx2(side_of(law), at_zero(law), v.data(), F.data(), n);
+    set.stribeck(side_of(law), at_zero(law), v.data(), F.data(), n);
   } else if constexpr (std::is_same_v<Law, Asymmetric<Stribeck>>) {
-    asymmetric_stribeck_sliding_avx2(side_of(law.pos), side_of(law.neg), at_zero(law), v.data(), F.data(), n);
+    set.asymmetric_stribeck(side_of(law.pos), side_of(law.neg), at_zero(law), v.data(), F.data(), n);
   } else if constexpr (std::is_same_v<Law, Smooth>) {
-    smooth_sliding_avx2(side_of(law), law.vt, law.shape == SmoothShape::atan, at_zero(law), v.data(), F.data(), n);
+    set.smooth(side_of(law), law.vt, law.shape == SmoothShape::atan, at_zero(law), v.data(), F.data(), n);
   } else {
     return false;
   }
   scalar_loop(law, v.subspan(n), F.subspan(n));
   return true;
 }
+
+// What the CPU runs, asked once.
+struct CpuFeatures {
+  bool avx2_fma = false;  // AVX2 and FMA
+  bool avx512f = false;
+};
+
+const CpuFeatures& cpu_features() {
+  static const CpuFeatures features = [] {
+    CpuFeatures f;
+#if defined(FRICTIONLAB_AVX2_KERNELS) || defined(FRICTIONLAB_AVX512_KERNELS)  // x86-64, GCC or Clang
+    f.avx2_fma = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    f.avx512f = __builtin_cpu_supports("avx512f");
 #endif
+    return f;
+  }();
+  return features;
+}
 
 }  // namespace
 
-BatchKernels best_batch_kernels() {
-#ifdef FRICTIONLAB_AVX2_KERNELS
-  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return avx2 ? BatchKernels::avx2 : BatchKernels::scalar;
-#else
-  return BatchKernels::scalar;
-#endif
+const char* name_of(BatchKernels kernels) {
+  switch (kernels) {
+    case BatchKernels::scalar: return "scalar";
+    case BatchKernels::avx2: return "avx2";
+    case BatchKernels::avx512: return "avx512";
+  }
+  return "?";
 }
 
-void sliding_batch(const FrictionLaw& law, std::span<const double> v, std::span<double> F,
-                   [[maybe_unused]] BatchKernels kernels) {
+bool batch_kernels_built(BatchKernels kernels) {
+  return kernels == BatchKernels::scalar || kernel_set(kernels) != nullptr;
+}
+
+bool batch_kernels_available(BatchKernels kernels) {
+  const CpuFeatures& cpu = cpu_features();
+  switch (kernels) {
+    case BatchKernels::scalar: return true;
+    case BatchKernels::avx2: return batch_kernels_built(kernels) && cpu.avx2_fma;
+    case BatchKernels::avx512: return batch_kernels_built(kernels) && cpu.avx512f && cpu.avx2_fma;
+  }
+  return false;
+}
+
+BatchKernels best_batch_kernels() {
+  static const BatchKernels best = batch_kernels_available(BatchKernels::avx512) ? BatchKernels::avx512
+                                   : batch_kernels_available(BatchKernels::avx2) ? BatchKernels::avx2
+                                                                                 : BatchKernels::scalar;
+  return best;
+}
+
+void sliding_batch(const FrictionLaw& law, std::span<const double> v, std::span<double> F, BatchKernels kernels) {
+  const KernelSet* set = kernel_set(kernels);
   std::visit(
       [&](const auto& l) {
         using Law = std::decay_t<decltype(l)>;
@@ -79,9 +127,7 @@ void sliding_batch(const FrictionLaw& law, std::span<const double> v, std::span<
           // The steady state of a dynamic law, as the scalar call computes it (not a fast path).
           for (std::size_t i = 0; i < v.size(); ++i) F[i] = law.sliding(v[i]);
         } else {
-#ifdef FRICTIONLAB_AVX2_KERNELS
-          if (kernels == BatchKernels::avx2 && run_avx2_kernel(l, v, F)) return;
-#endif
+          if (set != nullptr && run_kernel(*set, l, v, F)) return;
           scalar_loop(l, v, F);
         }
       },

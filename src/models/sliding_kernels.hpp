@@ -1,9 +1,11 @@
 #pragma once
-// Entry points of the 4-wide AVX2 kernels of FrictionLaw::sliding(v, F) (sliding_batch_avx2.cpp)
-// and the parameters they take. Plain structs and raw arrays only: that file is compiled with
-// -mavx2 -mfma, and an inline function of a shared header used there would be compiled with AVX2
-// too, and its copy might be the one the linker keeps for every caller, including callers on
-// CPUs without AVX2.
+// The vector kernels of FrictionLaw::sliding(v, F) as sliding_batch.cpp sees them: one table of
+// entry points per instruction set (avx2_kernels: 4 wide, sliding_batch_avx2.cpp; avx512_kernels:
+// 8 wide, sliding_batch_avx512.cpp; both compile the one kernel body sliding_kernels_impl.hpp)
+// and the parameters they take. Plain structs and raw arrays only: those files are compiled with
+// -mavx2 -mfma or -mavx512f, and an inline function of a shared header used there would be
+// compiled with those instructions too, and its copy might be the one the linker keeps for every
+// caller, including callers on CPUs without them.
 
 #include <cstddef>
 
@@ -11,7 +13,7 @@ namespace frictionlab::detail {
 
 /// How a Stribeck level Fc + (Fs - Fc) exp(-|v/vs|^delta) is computed, the same choice as the
 /// scalar laws make (stribeck_decay in scalar.hpp, SmoothT::sliding); the two sides of an
-/// asymmetric law share one form (asymmetric_stribeck_sliding_avx2).
+/// asymmetric law share one form (KernelSet::asymmetric_stribeck).
 enum class Decay {
   none,         ///< Fs == Fc: the level is Fc
   exponential,  ///< delta == 1: exp(-|v/vs|)
@@ -31,16 +33,23 @@ struct AtZero {
   double plus, minus;
 };
 
-// Each kernel writes F[i] for i < n, with n a multiple of 4 (the caller runs the scalar law on the
-// rest). v in m/s or rad/s, F in N or N m.
+/// The kernels of one instruction set. Each writes F[i] for i < n, with n a multiple of `width`
+/// (the caller runs the scalar law on the rest). v in m/s or rad/s, F in N or N m.
+struct KernelSet {
+  std::size_t width;  ///< values per vector: 4 (AVX2) or 8 (AVX-512)
+  /// stribeck: sign(v) (Fc + (Fs - Fc) decay) + Fv v.
+  void (*stribeck)(const StribeckSide& law, AtZero zero, const double* v, double* F, std::size_t n);
+  /// stribeck-asymmetric: `pos` for v >= 0, `neg` otherwise.
+  void (*asymmetric_stribeck)(const StribeckSide& pos, const StribeckSide& neg, AtZero zero, const double* v,
+                              double* F, std::size_t n);
+  /// smooth: s(v/vt) (Fc + (Fs - Fc) decay) + Fv v, s = tanh or (2/pi) atan (`atan_shape`).
+  void (*smooth)(const StribeckSide& level, double vt, bool atan_shape, AtZero zero, const double* v, double* F,
+                 std::size_t n);
+};
 
-/// stribeck: sign(v) (Fc + (Fs - Fc) decay) + Fv v.
-void stribeck_sliding_avx2(const StribeckSide& law, AtZero zero, const double* v, double* F, std::size_t n);
-/// stribeck-asymmetric: `pos` for v >= 0, `neg` otherwise.
-void asymmetric_stribeck_sliding_avx2(const StribeckSide& pos, const StribeckSide& neg, AtZero zero, const double* v,
-                                      double* F, std::size_t n);
-/// smooth: s(v/vt) (Fc + (Fs - Fc) decay) + Fv v, s = tanh or (2/pi) atan (`atan_shape`).
-void smooth_sliding_avx2(const StribeckSide& level, double vt, bool atan_shape, AtZero zero, const double* v, double* F,
-                         std::size_t n);
+/// Defined only in builds with that set (FRICTIONLAB_AVX2_KERNELS, FRICTIONLAB_AVX512_KERNELS);
+/// to be called only on CPUs that run it (batch_kernels_available in sliding_batch.hpp).
+extern const KernelSet avx2_kernels;
+extern const KernelSet avx512_kernels;
 
 }  // namespace frictionlab::detail

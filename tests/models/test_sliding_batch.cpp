@@ -1,7 +1,9 @@
 // FrictionLaw::sliding over arrays against the scalar call, value by value: every law, the
 // delta forms of the Stribeck decay, smooth shapes with and without the dip, velocities at the
 // edges (zero of both signs, tiny, subnormal, huge, inf, NaN), and lengths that leave every tail
-// of a 4-wide group. Also the size check and the scalar fallback of the run-time dispatch.
+// of a 4- and an 8-wide vector. Through the public call (the widest kernels here) and through
+// every kernel set of the run-time dispatch the build and CPU have (scalar, AVX2, AVX-512; the
+// others are reported skipped). Also the dispatch's choice and the size check.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -18,7 +20,7 @@
 #include <variant>
 #include <vector>
 
-#include "../../src/models/sliding_batch.hpp"  // private to the library: the dispatch's fallback
+#include "../../src/models/sliding_batch.hpp"  // private to the library: the kernel sets
 #include "error_message.hpp"
 #include "frictionlab/models/friction_law.hpp"
 
@@ -99,18 +101,18 @@ void expect_matches_scalar(const FrictionLaw& law, std::span<const double> v, st
   }
 }
 
-// Every length 0..9 (every tail of a group of 4) and 1001, each from offsets 0..3 of the
-// velocities, so that every edge value lands in every lane and in the tail.
+// Every length 0..17 (every tail of a vector of 4 or 8, with and without a whole vector before
+// it) and 1001, each from offsets 0..7 of the velocities, so that every edge value lands in every
+// lane of an 8-wide vector and in the tail.
 template <class Evaluate>
 void for_each_slice(Evaluate evaluate) {
   const std::vector<double> v = velocities();
-  for (std::size_t n : {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 1001})
-    for (std::size_t offset = 0; offset < 4; ++offset) evaluate(std::span<const double>(v).subspan(offset, n));
+  for (std::size_t n : {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 1001})
+    for (std::size_t offset = 0; offset < 8; ++offset) evaluate(std::span<const double>(v).subspan(offset, n));
 }
 
 TEST(SlidingBatch, MatchesTheScalarCallForEveryLaw) {
-  const bool avx2 = detail::best_batch_kernels() == detail::BatchKernels::avx2;
-  SCOPED_TRACE(avx2 ? "AVX2 kernels" : "scalar kernels (no AVX2 on this CPU or in this build)");
+  SCOPED_TRACE(std::string(detail::name_of(detail::best_batch_kernels())) + " kernels");
   for (const auto& [label, law] : laws()) {
     for_each_slice([&](std::span<const double> v) {
       std::vector<double> F(v.size(), -7.0);
@@ -120,14 +122,46 @@ TEST(SlidingBatch, MatchesTheScalarCallForEveryLaw) {
   }
 }
 
-TEST(SlidingBatch, ScalarFallbackIsTheScalarCall) {
-  // The fallback (CPUs without AVX2, other architectures) runs the scalar formula: equal exactly.
+// One instance per kernel set; a set this build or CPU lacks is skipped, saying which.
+class SlidingBatchKernels : public ::testing::TestWithParam<detail::BatchKernels> {};
+
+TEST_P(SlidingBatchKernels, MatchTheScalarCallForEveryLaw) {
+  const detail::BatchKernels kernels = GetParam();
+  const std::string name = detail::name_of(kernels);
+  if (!detail::batch_kernels_built(kernels))
+    GTEST_SKIP() << name << " kernels: not in this build (not x86-64 with GCC or Clang, or glibc's libmvec lacks them)";
+  if (!detail::batch_kernels_available(kernels)) GTEST_SKIP() << name << " kernels: this CPU lacks their instructions";
+  // The scalar fallback (CPUs without AVX2, other architectures) runs the scalar formula: equal
+  // exactly. The vector sets round differently, each within kBatchRelTol.
+  const double rel_tol = kernels == detail::BatchKernels::scalar ? 0.0 : kBatchRelTol;
   for (const auto& [label, law] : laws()) {
     for_each_slice([&](std::span<const double> v) {
       std::vector<double> F(v.size(), -7.0);
-      detail::sliding_batch(law, v, F, detail::BatchKernels::scalar);
-      expect_matches_scalar(law, v, F, 0.0, law.name() + " " + label + " (scalar), length " + std::to_string(v.size()));
+      detail::sliding_batch(law, v, F, kernels);
+      expect_matches_scalar(law, v, F, rel_tol, law.name() + " " + label + " (" + name + "), length " +
+                                                    std::to_string(v.size()));
     });
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(SlidingBatch, SlidingBatchKernels,
+                         ::testing::Values(detail::BatchKernels::scalar, detail::BatchKernels::avx2,
+                                           detail::BatchKernels::avx512),
+                         [](const ::testing::TestParamInfo<detail::BatchKernels>& info) {
+                           return std::string(detail::name_of(info.param));
+                         });
+
+TEST(SlidingBatch, PublicCallRunsTheWidestAvailableKernels) {
+  using detail::BatchKernels;
+  const BatchKernels want = detail::batch_kernels_available(BatchKernels::avx512) ? BatchKernels::avx512
+                            : detail::batch_kernels_available(BatchKernels::avx2) ? BatchKernels::avx2
+                                                                                  : BatchKernels::scalar;
+  EXPECT_EQ(detail::best_batch_kernels(), want);
+  EXPECT_TRUE(detail::batch_kernels_available(BatchKernels::scalar));
+  for (BatchKernels k : {BatchKernels::scalar, BatchKernels::avx2, BatchKernels::avx512}) {
+    if (detail::batch_kernels_available(k)) {
+      EXPECT_TRUE(detail::batch_kernels_built(k)) << detail::name_of(k);
+    }
   }
 }
 
