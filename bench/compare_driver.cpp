@@ -85,9 +85,9 @@ json stats(const fl::Trajectory& t) {
 }
 
 // The Canudas run at rtol 1e-9 rather than the example's 1e-8: the target is speed at equal or
-// better accuracy, and CVODE at 1e-8 lands at about twice LSODA's trajectory error at 1e-8
-// (velocity 7e-6 vs 2.6e-6 m/s against the Radau 1e-12 reference); at 1e-9 it is 1.7e-6, for 8 %
-// more steps. bench/compare prints the rtol each side used.
+// better accuracy, and CVODE at 1e-8 lands at about three times LSODA's trajectory error at 1e-8
+// (velocity about 8e-6 vs 2.6e-6 m/s against a 1e-12 reference); at 1e-9 it is 2.2e-6, for 14 %
+// more steps (5116 against 4477). bench/compare prints the rtol each side used.
 constexpr double kCanudasRtol = 1e-9;
 
 json canudas(const Args& a) {
