@@ -2,11 +2,19 @@
 
 #include "column_pool.hpp"
 
+#include <array>
 #include <charconv>
 #include <stdexcept>
 #include <utility>
 
 namespace frictionlab {
+
+namespace {
+// The nine columns, in the order of column_names() (the CSV's).
+constexpr std::array<std::vector<double> Trajectory::*, 9> kColumns = {
+    &Trajectory::time,    &Trajectory::position, &Trajectory::velocity,  &Trajectory::friction, &Trajectory::applied,
+    &Trajectory::current, &Trajectory::voltage,  &Trajectory::reference, &Trajectory::stuck};
+}  // namespace
 
 const char* switch_kind_name(SwitchKind kind) {
   switch (kind) {
@@ -25,23 +33,14 @@ Trajectory& Trajectory::operator=(Trajectory&& other) noexcept {
 
 void Trajectory::swap(Trajectory& other) noexcept {
   using std::swap;
-  swap(time, other.time);
-  swap(position, other.position);
-  swap(velocity, other.velocity);
-  swap(friction, other.friction);
-  swap(applied, other.applied);
-  swap(current, other.current);
-  swap(voltage, other.voltage);
-  swap(reference, other.reference);
-  swap(stuck, other.stuck);
+  for (auto column : kColumns) swap(this->*column, other.*column);
   swap(law_state, other.law_state);
   swap(switches, other.switches);
   swap(stats, other.stats);
 }
 
 Trajectory::~Trajectory() {
-  for (auto* c : {&time, &position, &velocity, &friction, &applied, &current, &voltage, &reference, &stuck})
-    detail::recycle_column(std::move(*c));
+  for (auto column : kColumns) detail::recycle_column(std::move(this->*column));
   for (auto& c : law_state) detail::recycle_column(std::move(c));
 }
 
@@ -52,15 +51,9 @@ const std::vector<std::string>& Trajectory::column_names() {
 }
 
 const std::vector<double>& Trajectory::column(std::string_view name) const {
-  if (name == "time") return time;
-  if (name == "position") return position;
-  if (name == "velocity") return velocity;
-  if (name == "friction") return friction;
-  if (name == "applied") return applied;
-  if (name == "current") return current;
-  if (name == "voltage") return voltage;
-  if (name == "reference") return reference;
-  if (name == "stuck") return stuck;
+  const auto& names = column_names();
+  for (std::size_t c = 0; c < kColumns.size(); ++c)
+    if (name == names[c]) return this->*kColumns[c];
   std::string list;
   for (const auto& n : column_names()) list += (list.empty() ? "" : ", ") + n;
   throw std::invalid_argument("trajectory has no column '" + std::string(name) + "'; columns: " + list);
@@ -75,11 +68,11 @@ std::string Trajectory::to_csv() const {
     out += names[c];
   }
   out += '\n';
-  const std::vector<double>* cols[] = {&time, &position, &velocity, &friction, &applied,
-                                       &current, &voltage, &reference, &stuck};
+  std::array<const std::vector<double>*, kColumns.size()> cols{};
+  for (std::size_t c = 0; c < kColumns.size(); ++c) cols[c] = &(this->*kColumns[c]);
   char buf[32];
   for (std::size_t r = 0; r < rows(); ++r) {
-    for (std::size_t c = 0; c < 9; ++c) {
+    for (std::size_t c = 0; c < cols.size(); ++c) {
       if (c) out += ',';
       const auto res = std::to_chars(buf, buf + sizeof buf, (*cols[c])[r]);
       out.append(buf, res.ptr);
