@@ -14,7 +14,9 @@
 //    otherwise it slides on in the direction of applied (reversal).
 //  After every switch (and at every corner of the input) CVODE is re-initialised from the exact
 //  state, so there is no creep, no chatter, and no tiny steps near v = 0.
-// Continuous static laws and dynamic laws: CVODE BDF, dense Newton, difference-quotient Jacobian.
+// Continuous static laws and dynamic laws: CVODE BDF with dense Newton; with a dynamic law and a
+// plant that has an analytic Jacobian the exact Newton matrix (StiffSystem), refreshed at every
+// update, else difference quotients. Output rows inside a step come from the step's polynomial.
 // Fixed-step mode: see SolverMode::fixed_step.
 
 #include "frictionlab/models/friction_law.hpp"
