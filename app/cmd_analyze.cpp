@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "data_options.hpp"
 #include "figures.hpp"
 #include "frictionlab/io/figure.hpp"
 #include "output.hpp"
@@ -26,15 +27,14 @@ struct AnalyzeArgs {
   std::string plot;
   bool overwrite = false;
   double threshold = 0.0;
+  ReadOptions read;  // --names, --resample, --max-gap, --drop-invalid
 };
 
 // NaN is not JSON: null instead.
 nlohmann::json num(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
 std::vector<double> column(const Dataset& d, const std::string& name, const std::string& option) {
-  if (!d.has_column(name))
-    throw std::invalid_argument(d.where() + "no column '" + name + "' (" + option + "); the file has: " +
-                                d.describe_contents());
+  if (!d.has_column(name)) throw std::invalid_argument(d.missing_column_message(name, option));
   const Eigen::VectorXd& c = d.column(name);
   std::vector<double> out(c.data(), c.data() + c.size());
   for (std::size_t i = 0; i < out.size(); ++i)
@@ -118,7 +118,9 @@ Handler register_analyze(CLI::App& app) {
   cmd->add_option("method", a->method, "envelope (free-oscillation decay) or stick-slip")
       ->required()
       ->check(CLI::IsMember({"envelope", "stick-slip"}));
-  cmd->add_option("data", a->data, "CSV file with a header row (the output of `frictionlab simulate` works) or .mat")
+  cmd->add_option("data", a->data,
+                  "CSV file, with a header row (the output of `frictionlab simulate` works) or without one (see "
+                  "--names), or .mat")
       ->required();
   cmd->add_option("--time", a->time, "time column (s)")->capture_default_str();
   cmd->add_option("--position", a->position, "position column (envelope)")->capture_default_str();
@@ -130,11 +132,12 @@ Handler register_analyze(CLI::App& app) {
   cmd->add_option("--json", a->json, "write the result as JSON to FILE, or '-' for stdout");
   add_plot_option(cmd, a->plot);
   cmd->add_flag("--overwrite", a->overwrite, "replace an existing --json or --plot file");
+  add_read_options(cmd, a->read);
   return [a]() -> int {
     if (!a->json.empty() && a->json != "-" && !a->overwrite && std::filesystem::exists(a->json))
       throw std::invalid_argument(a->json + " exists; pass --overwrite to replace it");
     check_plot(a->plot, a->overwrite);
-    const Dataset d = load_dataset(a->data);
+    const Dataset d = load_data(a->data, a->read, a->time);
     std::optional<Figure> figure;
     const std::string name = std::filesystem::path(a->data).filename().string();
     const std::vector<double> t = column(d, a->time, "--time");
@@ -167,12 +170,19 @@ Handler register_analyze(CLI::App& app) {
       if (!a->plot.empty()) figure = stick_slip_figure(t, v, f, r, name);
       text = stick_slip_text(r, !f.empty());
     }
-    const nlohmann::json j = {{"schema", 1},
+    text = data_note(d) + text;
+    nlohmann::json j = {{"schema", 1},
                               {"status", "ok"},
                               {"message", ""},
                               {"method", a->method},
                               {"data", {{"file", d.file}, {"sha256", d.sha256}}},
                               {"result", result}};
+    if (d.resampling || !d.warnings.empty()) {
+      Result notes;  // the data's resampling record and warnings, as identify reports them
+      note_data(notes, d);
+      j["diagnostics"]["warnings"] = notes.diagnostics.warnings;
+      if (d.resampling) j["diagnostics"]["resampling"] = notes.diagnostics.groups.at("resampling");
+    }
     if (a->json == "-") {
       std::cerr << text;
       std::cout << j.dump(2) << "\n";

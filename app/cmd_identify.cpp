@@ -62,7 +62,7 @@ std::vector<std::string> split_list(const std::string& s) {
 CLI::App* method(CLI::App* identify, const std::string& name, const std::string& help, MethodIO& io,
                  const std::string& default_axis) {
   auto* cmd = identify->add_subcommand(name, help);
-  cmd->add_option("DATA", io.data, "Measured data: a CSV file with a header row, or a MATLAB .mat file")->required();
+  cmd->add_option("DATA", io.data, "Measured data: a CSV file (with a header row, or without one: see --names), or a MATLAB .mat file")->required();
   add_data_options(cmd, io.columns, default_axis);
   add_output_options(cmd, io.output);
   return cmd;
@@ -71,10 +71,10 @@ CLI::App* method(CLI::App* identify, const std::string& name, const std::string&
 void stamp(Result& r, const Dataset& d) {
   r.data_file = d.file;
   r.data_sha256 = d.sha256;
+  note_data(r, d);
 }
 
-IdimData idim_data(const std::string& path, const DataOptions& c) {
-  const Dataset d = load_data(path, c);
+IdimData idim_data(const Dataset& d, const DataOptions& c) {
   IdimData x;
   x.time = time_column(d, c);
   const bool use_velocity = c.velocity_opt->count() > 0 && c.position_opt->count() == 0;
@@ -85,6 +85,8 @@ IdimData idim_data(const std::string& path, const DataOptions& c) {
   x.sha256 = d.sha256;
   return x;
 }
+
+IdimData idim_data(const std::string& path, const DataOptions& c) { return idim_data(load_data(path, c), c); }
 
 int run_idim(const IdentifyArgs& a, const MethodIO& io) {
   check_outputs(io.output);
@@ -105,10 +107,12 @@ int run_idim(const IdentifyArgs& a, const MethodIO& io) {
   o.input_delay = a.delay;
   o.stribeck_delta = a.delta;
   o.axis = io.columns.parsed_axis();
-  const IdimData data = idim_data(io.data, io.columns);
+  const Dataset d = load_data(io.data, io.columns);
+  const IdimData data = idim_data(d, io.columns);
   Result r = identify_idim(data, o);
   r.data_file = data.file;
   r.data_sha256 = data.sha256;
+  note_data(r, d);
   if (r.ok() && !a.validate.empty()) r.validation = cross_test(r, idim_data(a.validate, io.columns), o);
   return emit(r, io.output);
 }

@@ -110,6 +110,7 @@ int run(const ValidateArgs& a) {
   Result r = validate_model(mf.model, sc, v, vo);
   r.data_file = mf.data_file;
   r.data_sha256 = mf.data_sha256;
+  note_data(r, *data);
   return emit(r, a.output, text_of(r, a.scenario));
 }
 
@@ -122,7 +123,7 @@ Handler register_validate(CLI::App& app) {
                                  "controller, driven by a measured run, and report the relative errors of position, "
                                  "velocity, acceleration and force");
   cmd->add_option("MODEL", a->model, "MODEL.json written by frictionlab identify ... --json")->required();
-  cmd->add_option("DATA", a->data, "Measured run: a CSV file with a header row, or a MATLAB .mat file")->required();
+  cmd->add_option("DATA", a->data, "Measured run: a CSV file (with a header row, or without one: see --names), or a MATLAB .mat file")->required();
   cmd->add_option("--scenario", a->scenario,
                   "Scenario YAML: plant (axis), controller and input (e.g. examples/emps_closed_loop.yaml); its data "
                   "inputs read DATA, its M, offset and friction come from MODEL")

@@ -14,6 +14,7 @@
 #include "frictionlab/signal/decimate.hpp"
 #include "frictionlab/signal/differentiate.hpp"
 #include "frictionlab/signal/filtfilt.hpp"
+#include "frictionlab/signal/sampling.hpp"
 #include "../signal/scratch.hpp"
 
 namespace frictionlab {
@@ -40,40 +41,10 @@ void check_signal(const IdimData& d, const Vec& v, const char* name, Eigen::Inde
 
 // Mean sample step after checking time is finite, strictly increasing and regular (1 %).
 double checked_step(const IdimData& d) {
-  const Vec& t = d.time;
-  const Eigen::Index n = t.size();
-  if (n < 2) throw std::invalid_argument(where(d) + "time has " + std::to_string(n) + " samples; expected many");
-  check_signal(d, t, "time", n);
-  for (Eigen::Index k = 1; k < n; ++k) {
-    if (!(t(k) > t(k - 1))) {
-      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time " + detail::format_value(t(k), 6) +
-                                  " s is not greater than the previous " + detail::format_value(t(k - 1), 6) +
-                                  " s; expected strictly increasing time");
-    }
-  }
-  const double dt = (t(n - 1) - t(0)) / static_cast<double>(n - 1);
-  constexpr double kRegularTol = 0.01;  // relative step jitter accepted (EMPS: 2.4e-5)
-  // Quick pass: all steps within kRegularTol of the smallest are within it of the median too.
-  double smallest = t(1) - t(0), largest = smallest;
-  for (Eigen::Index k = 2; k < n; ++k) {
-    smallest = std::min(smallest, t(k) - t(k - 1));
-    largest = std::max(largest, t(k) - t(k - 1));
-  }
-  if (largest - smallest <= kRegularTol * smallest) return dt;
-  // Steps are compared with the median step, so a gap is reported where it is.
-  std::vector<double> steps(static_cast<std::size_t>(n - 1));
-  for (Eigen::Index k = 1; k < n; ++k) steps[static_cast<std::size_t>(k - 1)] = t(k) - t(k - 1);
-  auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
-  std::nth_element(steps.begin(), mid, steps.end());
-  const double median = *mid;
-  for (Eigen::Index k = 1; k < n; ++k) {
-    if (std::abs(t(k) - t(k - 1) - median) > kRegularTol * median) {
-      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time step " +
-                                  detail::format_value(t(k) - t(k - 1), 6) + " s differs from the median step " + detail::format_value(median, 6) +
-                                  " s by more than 1 %; IDIM needs regularly sampled data");
-    }
-  }
-  return dt;
+  RegularSamplingCheck check;  // the one rule of signal/sampling.hpp: 1 % of the median step
+  check.where = where(d);
+  check.requirement = "IDIM needs regularly sampled data";
+  return check_regular_sampling(d.time, check).mean;
 }
 
 // A built-in term from its value at one sample, f(qd, qdd), in both forms: written into a

@@ -36,9 +36,11 @@ struct LinearFit {
 };
 LinearFit least_squares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y);
 
-/// Mean step of a strictly increasing, regular time vector (s).
-/// \throws std::invalid_argument "METHOD: time ..." naming the sample index (0-based) of the
-///         first non-finite, non-increasing or irregular (more than 1 % off the mean) step.
+/// Mean step of a strictly increasing, regular time vector (s): check_regular_sampling of
+/// signal/sampling.hpp with at least 3 samples.
+/// \throws SamplingError (a std::invalid_argument) "METHOD: sample K: ..." naming the sample
+///         (1-based) of the first non-finite, non-increasing or irregular (more than 1 % off the
+///         median step) time stamp.
 double regular_time_step(const Eigen::VectorXd& time, const std::string& method);
 
 }  // namespace frictionlab::detail
