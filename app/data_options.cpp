@@ -44,20 +44,23 @@ std::string fmt(double x) {
 
 void add_read_options(CLI::App* cmd, ReadOptions& o) {
   cmd->add_option("--names", o.names,
-                  "NAME,NAME,...: names of a CSV file's columns in order, for a file without a header row (its "
+                  "Names of a CSV file's columns in order, for a file without a header row (its "
                   "columns are otherwise c1, c2, ...); with a header row they replace its names. Fewer names than "
                   "columns name the first ones")
+      ->type_name("NAME,...")
       ->group("Data columns");
   o.resample_opt = cmd->add_option("--resample", o.resample,
-                                   "[DT] Interpolate every column linearly onto a uniform time grid of step DT s "
+                                   "Interpolate every column linearly onto a uniform time grid of step DT s "
                                    "(default: the median step), for irregularly sampled data; repeated time stamps "
                                    "are merged. The jitter and the samples made are reported")
                        ->expected(0, 1)
+                       ->type_name("[DT]")
                        ->group("Data columns");
   cmd->add_option("--max-gap", o.max_gap,
-                  "S: longest time gap (s) --resample may interpolate over (default: 10 median steps; a longer gap "
+                  "Longest time gap (s) --resample may interpolate over (default: 10 median steps; a longer gap "
                   "is an error naming its rows)")
       ->check(CLI::PositiveNumber)
+      ->type_name("S")
       ->needs(o.resample_opt)
       ->group("Data columns");
   cmd->add_flag("--drop-invalid", o.drop_invalid, "Drop CSV rows with empty or NaN cells instead of refusing the file")
@@ -94,14 +97,16 @@ Dataset load_data(const std::string& path, const ReadOptions& o, const std::stri
   csv.header = CsvHeader::detect;
   if (!o.names.empty()) csv.names = split_names(o.names);
   csv.names_option = "--names";
+  const double dt = o.resample_given() ? parse_step(o.resample) : 0.0;  // a bad DT is named before the file is read
   Dataset d = load_dataset(path, csv);
   if (!o.names.empty() && d.lines.empty()) {
     throw std::invalid_argument(d.where() + "--names names the columns of a CSV file; a MAT file's variables have their "
                                 "own names: " + d.describe_contents());
   }
   if (o.resample_given()) {
+    select_column(d, time_column, "--time");  // a missing time column is named with its option
     ResampleOptions r;
-    r.dt = parse_step(o.resample);
+    r.dt = dt;
     r.max_gap = o.max_gap;
     r.dt_name = "--resample";
     r.max_gap_name = "--max-gap";

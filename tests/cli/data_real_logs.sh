@@ -57,7 +57,7 @@ truth = {"M": 0.8, "Fv": 1.5, "Fc": 2.0}
 for k, v in truth.items():  # 5 %: noise, quantisation and interpolation of a 91 Hz log
     assert abs(p[k] - v) <= 0.05 * v, (k, p[k], v)
 r = j["diagnostics"]["resampling"]
-assert 0.010 <= r["dt_min"] <= r["dt_median"] <= r["dt_max"] <= 0.012 + 1e-6, r
+assert 0.010 - 1e-6 <= r["dt_min"] <= r["dt_median"] <= r["dt_max"] <= 0.012 + 1e-6, r  # stamps printed to 1 us
 assert r["dt"] == r["dt_median"] and r["samples_in"] == 3000, r
 assert abs(r["samples_out"] - 3000) < 100, r
 PY
