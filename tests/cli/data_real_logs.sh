@@ -112,4 +112,22 @@ open(sys.argv[2], "wb").write(b)
 PY
 expect_fail "variable 'qm'" identify idim "$tmp/flipped.mat" --time t --position qm --input vir --gain gtau
 expect_fail "flipped.mat" identify idim "$tmp/flipped.mat" --time t --position qm --input vir --gain gtau
+# analyze reads the same way: a jittered, headerless free decay, resampled; the JSON says how.
+/usr/bin/python3 - "$tmp/decay.txt" <<'PY'
+import math, random, sys
+rng, t = random.Random(3), 0.0
+with open(sys.argv[1], "w") as f:
+    for k in range(4000):
+        t += rng.uniform(0.0009, 0.0011) if k else 0.0
+        f.write(f"{t:.7f} {math.exp(-0.3 * t) * math.cos(2 * math.pi * t):.6f}\n")  # space separated
+PY
+mv "$tmp/decay.txt" "$tmp/decay.csv"
+"$exe" analyze envelope "$tmp/decay.csv" --names t,x --time t --position x --resample --json - 2> /dev/null > "$tmp/env.json"
+/usr/bin/python3 - "$tmp/env.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+r = j["diagnostics"]["resampling"]
+assert j["status"] == "ok" and r["samples_in"] == 4000 and abs(r["dt_median"] - 0.001) < 2e-5, r
+assert j["result"]["half_cycles"] >= 4, j["result"]
+PY
 echo "data_real_logs: all checks passed"
