@@ -4,8 +4,10 @@
 #include <charconv>
 #include <cmath>
 #include <sstream>
-#include <utility>
 #include <stdexcept>
+#include <utility>
+
+#include "frictionlab/models/parameter.hpp"
 
 namespace frictionlab {
 namespace {
@@ -90,6 +92,15 @@ void resample_dataset(Dataset& data, const std::string& time_column, ResampleOpt
   options.where = data.where();
   options.row_label = [&data](Eigen::Index k) { return data.row_label(k); };
   const UniformResampler resampler(time, options);
+  // The resampled copy must fit in memory beside the original: refuse, rather than fail to allocate.
+  constexpr double kMaxBytes = 8e9;
+  const double bytes = 8.0 * static_cast<double>(resampler.report().samples_out) * static_cast<double>(data.column_names().size());
+  if (bytes > kMaxBytes) {
+    throw std::invalid_argument(data.where() + options.dt_name + " = " + detail::format_value(resampler.report().dt, 6) +
+                                " s: " + std::to_string(resampler.report().samples_out) + " samples x " +
+                                std::to_string(data.column_names().size()) + " columns would take " +
+                                detail::format_value(bytes / 1e9, 3) + " GB; expected at most 8 GB (a larger step)");
+  }
   // Every column is interpolated before any is replaced, so a bad value leaves `data` unchanged.
   std::vector<std::pair<std::string, Eigen::VectorXd>> out;
   for (const auto& name : data.column_names()) {

@@ -168,6 +168,11 @@ UniformResampler::UniformResampler(const Eigen::VectorXd& t, const ResampleOptio
     throw std::invalid_argument(where + o.dt_name + " = " + step(dt) + " s is longer than the record (" + step(span) +
                                 " s from first to last time stamp)");
   }
+  constexpr double kMaxGrid = 1e8;  // samples per column (800 MB): beyond, a step given by mistake
+  if (span / dt > kMaxGrid) {
+    throw std::invalid_argument(where + o.dt_name + " = " + step(dt) + " s would make " + detail::format_value(span / dt, 3) +
+                                " samples of the " + step(span) + " s record; expected at most 1e+08 (a larger step)");
+  }
   // Grid points u(0) + i dt up to the last stamp; the relative slack keeps a last point that
   // rounding puts a hair past the end (span / dt = 99.9999999 for 100 steps).
   const auto count = static_cast<Eigen::Index>(std::floor(span / dt * (1 + 1e-12) + 1e-9)) + 1;

@@ -185,6 +185,9 @@ TEST(UniformResampler, BadOptionsAndColumnsAreNamed) {
   EXPECT_NE(error_of([&] { fl::UniformResampler r(t, o); }).find("--resample = -1"), std::string::npos);
   o.dt = 10;
   EXPECT_NE(error_of([&] { fl::UniformResampler r(t, o); }).find("longer than the record"), std::string::npos);
+  o.dt = 1e-12;  // a step given in the wrong unit: refused, not an allocation failure
+  EXPECT_NE(error_of([&] { fl::UniformResampler r(t, o); }).find("--resample = 1e-12 s would make 4.9e+11 samples"),
+            std::string::npos);
   o.dt = 0;
   const fl::UniformResampler r(t, o);
   Eigen::VectorXd x = Eigen::VectorXd::Ones(50);

@@ -68,8 +68,9 @@ double check_time(const Dataset& data, const Eigen::VectorXd& time, const TimeCh
 /// jitter and the samples in and out; its warnings are appended to data.warnings; data.lines is
 /// cleared (rows are grid samples from then on). Rows in messages are the file's (data.row_label
 /// before resampling). options.where and options.row_label are filled in from `data`.
-/// \throws std::invalid_argument as select_column for a missing time column, and as
-///         UniformResampler (naming the file, rows and the options' names).
+/// \throws std::invalid_argument as select_column for a missing time column, as
+///         UniformResampler (naming the file, rows and the options' names), or when the
+///         resampled columns would take more than 8 GB.
 void resample_dataset(Dataset& data, const std::string& time_column, ResampleOptions options = {});
 
 }  // namespace frictionlab

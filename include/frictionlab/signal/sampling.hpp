@@ -123,8 +123,8 @@ class UniformResampler {
   /// \throws SamplingError naming the row for a non-finite or decreasing time stamp, fewer than 2
   ///         distinct time stamps, or a gap longer than max_gap (naming both rows, the gap in s and
   ///         in median steps, and the option that allows it); std::invalid_argument naming
-  ///         dt_name / max_gap_name for a negative or non-finite dt or max_gap, or a dt longer
-  ///         than the record.
+  ///         dt_name / max_gap_name for a negative or non-finite dt or max_gap, a dt longer
+  ///         than the record, or one that would make more than 1e8 grid samples.
   UniformResampler(const Eigen::VectorXd& time, const ResampleOptions& options = {});
 
   /// The uniform time grid, s (length report().samples_out).
