@@ -1,5 +1,4 @@
 """Reading measured data files (CSV with a header row, MATLAB .mat) into numpy."""
-import os
 
 from . import _core
 
@@ -49,5 +48,7 @@ def load(path, *, delimiter=",", drop_invalid=False, comment="#"):
     Returns a :class:`Data` (a dict of numpy columns and float scalars, with ``file`` and
     ``sha256``). Raises ValueError naming the file, line and column on a bad file.
     """
-    columns, scalars, file, sha256, lines = _core._load_dataset(os.fspath(path), delimiter, drop_invalid, comment)
+    if not isinstance(delimiter, str) or not isinstance(comment, str):
+        raise _core.ArgumentTypeError("load: arguments delimiter and comment: expected one character (str)")
+    columns, scalars, file, sha256, lines = _core._load_dataset(path, delimiter, bool(drop_invalid), comment)
     return Data(columns, scalars, file, sha256, lines)

@@ -16,7 +16,7 @@ void init_io(py::module_& m) {
         o.delimiter = delimiter[0];
         o.drop_invalid = drop_invalid;
         o.comment = comment.empty() ? '\0' : comment[0];
-        const Dataset d = load_dataset(path_arg(path), o);
+        const Dataset d = load_dataset(path_arg(path, "load"), o);
         py::list columns;  // (name, array) pairs in file order
         for (const auto& name : d.column_names()) columns.append(py::make_tuple(name, to_array(d.column(name))));
         py::dict scalars;
@@ -27,11 +27,11 @@ void init_io(py::module_& m) {
       py::arg("path"), py::arg("delimiter") = ",", py::arg("drop_invalid") = false, py::arg("comment") = "#",
       "Reads a CSV (header row) or MAT file: ([(name, column)], {scalar: value}, file, sha256, csv line numbers).");
 
-  m.def("load_law", [](const py::object& p) { return load_law(path_arg(p)); }, py::arg("path"),
+  m.def("load_law", [](const py::object& p) { return load_law(path_arg(p, "load_law")); }, py::arg("path"),
         "Reads a friction law from a .yaml/.yml file ({law: NAME, params...}) or a .json file (the same, or the "
         "MODEL.json an identification writes). Raises ValueError naming the file and key on bad content.");
 
-  m.def("sha256_file", [](const py::object& p) { return sha256_file(path_arg(p)); }, py::arg("path"), "Lowercase hex SHA-256 of a file's bytes (as in results' data.sha256).");
+  m.def("sha256_file", [](const py::object& p) { return sha256_file(path_arg(p, "sha256_file")); }, py::arg("path"), "Lowercase hex SHA-256 of a file's bytes (as in results' data.sha256).");
 }
 
 }  // namespace frictionlab::python
