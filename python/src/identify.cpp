@@ -349,8 +349,8 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
     return identify_sweep(d, o);
   });
   m.def("_sweep_points", [](py::object time, py::object force, py::object velocity, const SweepOptions& o) {
-    const auto [t, f, v] = three_arrays("sweep_points", time, force, velocity);
-    const SweepData d{t, f, v};
+    const auto [tt, ff, vv] = three_arrays("sweep_points", time, force, velocity);
+    const SweepData d{tt, ff, vv};
     const std::vector<SweepPoint> pts = sweep_points(d, o);
     std::vector<double> v, vs, f, fs, tb, te, n;
     for (const auto& p : pts) {

@@ -12,9 +12,10 @@ namespace frictionlab::python {
 void init_validate(py::module_& m) {
   m.def(
       "_validate",
-      [](const Result& identified, const py::handle& data, const py::handle& scenario, const py::handle& time,
+      [](const Result& identified, const py::handle& data_arg, const py::handle& scenario_arg, const py::handle& time,
          const py::handle& position, const py::handle& force) {
-        const std::string data_path = path_arg(data, "validate", "data"), scenario_path = path_arg(scenario, "validate", "scenario");
+        const std::string data_path = path_arg(data_arg, "validate", "data"),
+                          scenario_path = path_arg(scenario_arg, "validate", "scenario");
         ValidationData v;
         v.time = vector_arg(time, "validate", "time");
         v.position = vector_arg(position, "validate", "position");
