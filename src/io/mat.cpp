@@ -141,6 +141,13 @@ Dataset read_mat(const std::string& path) {
   MatPtr mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
   if (!mat) fail("not a MATLAB MAT file (v5 or v7.3) or corrupt; expected a file saved by MATLAB's save");
 
+  // matio (1.5.23) also ends the variables with NULL, logging nothing, when it cannot allocate or
+  // read one (a corrupt header declaring a variable of 32 GB): the directory, read from the
+  // variables' headers only, says how many there are. (The directory belongs to `mat`.)
+  std::size_t listed_count = 0;
+  char** const listed = Mat_GetDir(mat.get(), &listed_count);
+  Mat_Rewind(mat.get());
+
   // One pass over the variables, each read in full.
   std::vector<std::string> names;
   std::vector<std::pair<std::string, Eigen::VectorXd>> vectors;
@@ -154,6 +161,12 @@ Dataset read_mat(const std::string& path) {
       // NULL ends the file; with an error logged on the way it is a damaged variable instead
       // (warnings, e.g. about a class matio skips, are not).
       if (g_matio_error) fail("cannot read the variable after '" + (names.empty() ? std::string("(start)") : names.back()) + "' (corrupt or truncated file)");
+      if (listed != nullptr && names.size() < listed_count) {
+        const char* next = listed[names.size()];
+        fail("cannot read variable '" + std::string(next != nullptr ? next : "?") + "' (number " +
+             std::to_string(names.size() + 1) + " of " + std::to_string(listed_count) +
+             "): corrupt, or larger than the memory can hold");
+      }
       break;
     }
     const std::string name = var->name != nullptr ? var->name : "";
