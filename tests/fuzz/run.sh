@@ -7,7 +7,7 @@
 #   JOBS       targets run at once (one core each)
 #   keep       (make fuzz) copy each crashing input into tests/fuzz/regressions/<target>/ to be
 #              committed; without it (make test) the source tree is left as it is.
-# Inputs found on the way go to BUILD_DIR/fuzz/corpus/<target> (not committed; make fuzz-merge
+# Each target mutates with the tokens of tests/fuzz/<target>.dict. Inputs found on the way go to BUILD_DIR/fuzz/corpus/<target> (not committed; make fuzz-merge
 # minimises them into tests/fuzz/corpus/<target>).
 set -uo pipefail
 
@@ -31,7 +31,7 @@ run_target() {
     return
   fi
   "$bin" -max_total_time="$seconds" -timeout=25 -print_final_stats=1 -artifact_prefix="$findings/" \
-    "$corpus" "$here/corpus/$t" >"$log" 2>&1
+    -dict="$here/$t.dict" "$corpus" "$here/corpus/$t" >"$log" 2>&1
   local rc=$? elapsed=$((SECONDS - start))
   local runs
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)
