@@ -30,13 +30,17 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
   detail::check_unique_keys(node, where);
   LawSpec spec;
   for (const auto& kv : node) {
-    const std::string key = kv.first.Scalar();
+    // A list, mapping or empty key or name would make yaml-cpp throw its own bad conversion.
+    if (!kv.first.IsScalar())
+      throw std::invalid_argument(where + ": line " + std::to_string(kv.first.Mark().line + 1) +
+                                  ": expected a parameter name as key, got a list, mapping or empty key");
+    const std::string key = kv.first.as<std::string>();
     const YAML::Node& value = kv.second;
     const std::string here = where + "." + key;
-    if ((key == "law" || key == "shape") && !value.IsScalar())
-      throw std::invalid_argument(here + ": expected a name");
-    if (key == "law") {
-      spec.name = value.Scalar();
+    if ((key == "law" || key == "shape") && !value.IsScalar()) {
+      throw std::invalid_argument(here + ": expected a name" + (key == "law" ? " (one of the friction law names, e.g. stribeck)" : " (tanh or atan)"));
+    } else if (key == "law") {
+      spec.name = value.as<std::string>();
     } else if (key == "shape") {
       spec.strings[key] = value.Scalar();
     } else if (value.IsSequence()) {

@@ -53,6 +53,9 @@ class Section {
     std::set<std::string> ok;
     for (const char* a : allowed) ok.insert(a);
     for (const auto& kv : node_) {
+      if (!kv.first.IsScalar())  // yaml-cpp would throw its own bad conversion
+        throw std::invalid_argument(path_ + ": line " + std::to_string(kv.first.Mark().line + 1) +
+                                    ": expected a field name as key, got a list, mapping or empty key; valid fields: " + join(allowed));
       const std::string key = kv.first.as<std::string>();
       if (!ok.count(key))
         throw std::invalid_argument(at(key) + ": unknown field '" + key + "'; valid fields: " + join(allowed));
