@@ -1,15 +1,21 @@
 # frictionlab: the two commands of the quick start, and a few more for developers.
 #   make demo   install what is missing, build, identify friction on the bundled EMPS data, write a report
 #   make test   install what is missing, build, run every test (C++, CLI, Python, examples)
-# Others: make build, make sanitize (tests under ASan+UBSan), make bench, make install-test, make clean.
+# Others: make build, make sanitize (tests under ASan+UBSan), make bench, make install-test,
+# make fuzz (the libFuzzer targets of tests/fuzz, FUZZ_SECONDS each), make fuzz-merge, make clean.
 
 BUILD      ?= build
 JOBS       ?= $(shell nproc)
 PYTHON     ?= /usr/bin/python3
 CMAKE_ARGS ?=
 CONFIGURE   = cmake -S . -B $(1) -DPython_EXECUTABLE=$(PYTHON) $(CMAKE_ARGS) $(2) >/dev/null
+# The fuzzers (tests/fuzz): a Clang build of their own; seconds per target in make fuzz and in make test.
+FUZZ_BUILD        ?= build-fuzz
+FUZZ_SECONDS      ?= 600
+FUZZ_TEST_SECONDS ?= 60
+FUZZERS            = fuzz_csv fuzz_mat fuzz_scenario fuzz_law
 
-.PHONY: all deps build test demo sanitize bench install-test clean
+.PHONY: all deps build test demo sanitize bench install-test clean fuzz-build fuzz fuzz-test fuzz-merge
 
 all: build
 
@@ -23,6 +29,7 @@ build: deps
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	@$(MAKE) --no-print-directory install-test
+	@$(MAKE) --no-print-directory fuzz-test
 
 demo: build
 	@bash examples/demo.sh $(BUILD)
@@ -42,5 +49,31 @@ bench: deps
 install-test: build
 	@bash tests/install/run.sh $(BUILD)
 
+# libFuzzer targets under ASan+UBSan, built with clang++ from the readers' sources only.
+fuzz-build: deps
+	@$(call CONFIGURE,$(FUZZ_BUILD),-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRICTIONLAB_BUILD_FUZZERS=ON -DFRICTIONLAB_BUILD_TESTS=OFF -DFRICTIONLAB_BUILD_APP=OFF -DFRICTIONLAB_BUILD_PYTHON=OFF)
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzzers
+
+# Replays every kept regression input, then fuzzes each target FUZZ_SECONDS (crashing inputs are
+# copied into tests/fuzz/regressions/ to be committed with the fix).
+fuzz: fuzz-build
+	@bash tests/fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(JOBS) keep
+
+# The bounded run of make test: FUZZ_TEST_SECONDS per target, one PASS/FAIL line each.
+fuzz-test: fuzz-build
+	@bash tests/fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_TEST_SECONDS) $(JOBS)
+
+# Minimises the committed corpus together with what make fuzz found (libFuzzer -merge=1). The
+# hand-made seeds (files with an extension: .csv, .mat, .yaml, .json) are always kept.
+fuzz-merge: fuzz-build
+	@for t in $(FUZZERS); do \
+	  rm -rf $(FUZZ_BUILD)/fuzz/merged/$$t && mkdir -p $(FUZZ_BUILD)/fuzz/merged/$$t $(FUZZ_BUILD)/fuzz/corpus/$$t && \
+	  cp tests/fuzz/corpus/$$t/*.* $(FUZZ_BUILD)/fuzz/merged/$$t/ && \
+	  $(FUZZ_BUILD)/tests/fuzz/$$t -merge=1 $(FUZZ_BUILD)/fuzz/merged/$$t tests/fuzz/corpus/$$t $(FUZZ_BUILD)/fuzz/corpus/$$t \
+	    >$(FUZZ_BUILD)/fuzz/$$t.merge.log 2>&1 || { echo "fuzz-merge: $$t failed (see $(FUZZ_BUILD)/fuzz/$$t.merge.log)"; exit 1; }; \
+	  rm -rf tests/fuzz/corpus/$$t && cp -r $(FUZZ_BUILD)/fuzz/merged/$$t tests/fuzz/corpus/$$t && \
+	  echo "fuzz-merge: $$t: $$(ls tests/fuzz/corpus/$$t | wc -l) inputs in tests/fuzz/corpus/$$t"; \
+	done
+
 clean:
-	rm -rf $(BUILD) $(BUILD)-sanitize $(BUILD)-bench
+	rm -rf $(BUILD) $(BUILD)-sanitize $(BUILD)-bench $(FUZZ_BUILD)

@@ -129,14 +129,20 @@ Handler register_analyze(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--threshold", a->threshold,
                   "stick-slip: |v| at or below counts as stuck (0 = automatic: exact zeros or 1 % of max |v|)");
-  cmd->add_option("--json", a->json, "write the result as JSON to FILE, or '-' for stdout");
+  CLI::Option* json = cmd->add_option("--json", a->json, "write the result as JSON to FILE, or '-' for stdout");
   add_plot_option(cmd, a->plot);
   cmd->add_flag("--overwrite", a->overwrite, "replace an existing --json or --plot file");
   add_read_options(cmd, a->read);
+  register_json_output(cmd, json, &a->overwrite, [a] { return a->method.empty() ? std::string("analyze") : a->method; });
   return [a]() -> int {
-    if (!a->json.empty() && a->json != "-" && !a->overwrite && std::filesystem::exists(a->json))
-      throw std::invalid_argument(a->json + " exists; pass --overwrite to replace it");
+    check_output_file(a->json, a->overwrite, "--json");
     check_plot(a->plot, a->overwrite);
+    if (!a->plot.empty()) {
+      const FigureFiles files = figure_files(a->plot);
+      check_distinct_outputs(
+          {{"--json", a->json}, {"--plot", files.figure}, {"--plot data", files.data}, {"--plot script", files.script}});
+    }
+    outputs_checked();
     const Dataset d = load_data(a->data, a->read, a->time);
     std::optional<Figure> figure;
     const std::string name = std::filesystem::path(a->data).filename().string();
@@ -183,21 +189,19 @@ Handler register_analyze(CLI::App& app) {
       j["diagnostics"]["warnings"] = notes.diagnostics.warnings;
       if (d.resampling) j["diagnostics"]["resampling"] = notes.diagnostics.groups.at("resampling");
     }
-    if (a->json == "-") {
-      std::cerr << text;
-      std::cout << j.dump(2) << "\n";
-    } else {
-      std::cout << text;
-      if (!a->json.empty()) {
-        AtomicWriteOptions w;
-        w.overwrite = a->overwrite;
-        write_file_atomic(a->json, j.dump(2) + "\n", w);
-      }
-    }
+    (a->json == "-" ? std::cerr : std::cout) << text;
+    // The figure (gnuplot may fail) before the JSON, so that a failed run leaves no JSON saying ok.
     if (figure) {
       const FigureFiles files = write_figure(*figure, a->plot, a->overwrite);
       (a->json == "-" ? std::cerr : std::cout) << "figure " << files.figure << " (data " << files.data
                                                << ", gnuplot script " << files.script << ")\n";
+    }
+    if (a->json == "-") {
+      std::cout << j.dump(2) << "\n";
+    } else if (!a->json.empty()) {
+      AtomicWriteOptions w;
+      w.overwrite = a->overwrite;
+      write_file_atomic(a->json, j.dump(2) + "\n", w);
     }
     return 0;
   };

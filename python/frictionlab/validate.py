@@ -1,5 +1,4 @@
 """Closed-loop validation and the LuGre output-error fit (SI units throughout)."""
-import os
 
 from . import _core
 
@@ -7,7 +6,7 @@ from . import _core
 def _path(x):
     """A file path from a path, or the file a Data (from load()) came from."""
     file = getattr(x, "file", None)
-    return file if file else os.fspath(x)
+    return file if file else x  # checked (and named) by the binding
 
 
 def validate(model, data, scenario, *, time, position, force):
@@ -24,7 +23,10 @@ def validate(model, data, scenario, *, time, position, force):
     position, velocity, acceleration and force, and whose series hold measured and simulated signals.
     Raises ValueError naming the file, key or column for bad input.
     """
-    return _core._validate(model, _path(data), os.fspath(scenario), time, position, force)
+    if not isinstance(model, _core.Result):
+        raise _core.ArgumentTypeError(f"validate: argument model: expected the Result of an identification, got "
+                                      f"{type(model).__name__}")
+    return _core._validate(model, _path(data), scenario, time, position, force)
 
 
 def identify_lugre(time, force, position, *, inertia, static_law=None, delta=2.0, stribeck_velocity=0.001,

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 #include "common.hpp"
 #include "frictionlab/identify/breakaway.hpp"
@@ -80,16 +81,30 @@ std::string result_repr(const Result& r) {
 
 py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
-IdimData idim_data(const py::object& time, const py::object& force, const py::object& position,
+IdimData idim_data(const char* function, const py::object& time, const py::object& force, const py::object& position,
                    const py::object& velocity, const std::string& file, const std::string& sha256) {
   IdimData d;
-  d.time = vector_arg(time, "time");
-  d.force = vector_arg(force, "force");
-  d.position = vector_arg(position, "position");
-  d.velocity = vector_arg(velocity, "velocity");
+  d.time = vector_arg(time, function, "time");
+  d.force = vector_arg(force, function, "force");
+  ArraySpec optional;
+  optional.optional = true;
+  d.position = vector_arg(position, function, "position", optional);
+  d.velocity = vector_arg(velocity, function, "velocity", optional);
+  same_length(function, {{"time", d.time.size()}, {"force", d.force.size()}, {"position", d.position.size()},
+                         {"velocity", d.velocity.size()}});
   d.file = file;
   d.sha256 = sha256;
   return d;
+}
+
+// time, force and velocity of the breakaway and sweep methods, checked, of equal lengths.
+std::tuple<Eigen::VectorXd, Eigen::VectorXd, Eigen::VectorXd> three_arrays(const char* function, const py::object& time,
+                                                                          const py::object& force,
+                                                                          const py::object& velocity) {
+  Eigen::VectorXd t = vector_arg(time, function, "time"), f = vector_arg(force, function, "force"),
+                  v = vector_arg(velocity, function, "velocity");
+  same_length(function, {{"time", t.size()}, {"force", f.size()}, {"velocity", v.size()}});
+  return {std::move(t), std::move(f), std::move(v)};
 }
 
 template <class Options>
@@ -219,7 +234,7 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
       .def("save", [](const Result& r, const py::object& path, bool overwrite) {
         AtomicWriteOptions o;
         o.overwrite = overwrite;
-        write_file_atomic(path_arg(path), to_json(r) + "\n", o);
+        write_file_atomic(path_arg(path, "Result.save"), to_json(r) + "\n", o);
       }, py::arg("path"), py::arg("overwrite") = false,
          "Writes the MODEL.json atomically. ValueError when the file exists and overwrite is False.")
       .def("_stamp", [](Result& r, const std::string& file, const std::string& sha256) {
@@ -298,19 +313,19 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
   // ---- methods ----------------------------------------------------------------------------
   m.def("_identify_idim", [](py::object time, py::object force, py::object position, py::object velocity,
                              const IdimOptions& o, const std::string& file, const std::string& sha256) {
-    const IdimData d = idim_data(time, force, position, velocity, file, sha256);
+    const IdimData d = idim_data("identify_idim", time, force, position, velocity, file, sha256);
     py::gil_scoped_release release;
     return identify_idim(d, o);
   });
   m.def("_cross_test", [](const Result& r, py::object time, py::object force, py::object position, py::object velocity,
                           const IdimOptions& o, const std::string& file, const std::string& sha256) {
-    const IdimData d = idim_data(time, force, position, velocity, file, sha256);
+    const IdimData d = idim_data("cross_test", time, force, position, velocity, file, sha256);
     py::gil_scoped_release release;
     return cross_test(r, d, o);
   });
   m.def("_idim_regression", [](py::object time, py::object force, py::object position, py::object velocity,
                                const IdimOptions& o) {
-    const IdimRegression reg = idim_regression(idim_data(time, force, position, velocity, "", ""), o);
+    const IdimRegression reg = idim_regression(idim_data("idim_regression", time, force, position, velocity, "", ""), o);
     py::dict d;
     d["X"] = reg.X;
     d["y"] = reg.y;
@@ -322,17 +337,20 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
     return d;
   });
   m.def("_identify_breakaway", [](py::object time, py::object force, py::object velocity, const BreakawayOptions& o) {
-    const BreakawayData d{vector_arg(time, "time"), vector_arg(force, "force"), vector_arg(velocity, "velocity")};
+    const auto [t, f, v] = three_arrays("identify_breakaway", time, force, velocity);
+    const BreakawayData d{t, f, v};
     py::gil_scoped_release release;
     return identify_breakaway(d, o);
   });
   m.def("_identify_sweep", [](py::object time, py::object force, py::object velocity, const SweepOptions& o) {
-    const SweepData d{vector_arg(time, "time"), vector_arg(force, "force"), vector_arg(velocity, "velocity")};
+    const auto [t, f, v] = three_arrays("identify_sweep", time, force, velocity);
+    const SweepData d{t, f, v};
     py::gil_scoped_release release;
     return identify_sweep(d, o);
   });
   m.def("_sweep_points", [](py::object time, py::object force, py::object velocity, const SweepOptions& o) {
-    const SweepData d{vector_arg(time, "time"), vector_arg(force, "force"), vector_arg(velocity, "velocity")};
+    const auto [tt, ff, vv] = three_arrays("sweep_points", time, force, velocity);
+    const SweepData d{tt, ff, vv};
     const std::vector<SweepPoint> pts = sweep_points(d, o);
     std::vector<double> v, vs, f, fs, tb, te, n;
     for (const auto& p : pts) {
@@ -350,7 +368,8 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
     return out;
   });
   m.def("_identify_decay", [](py::object time, py::object position, const DecayOptions& o) {
-    const DecayData d{vector_arg(time, "time"), vector_arg(position, "position")};
+    const DecayData d{vector_arg(time, "identify_decay", "time"), vector_arg(position, "identify_decay", "position")};
+    same_length("identify_decay", {{"time", d.time.size()}, {"position", d.position.size()}});
     py::gil_scoped_release release;
     return identify_decay(d, o);
   });
@@ -395,7 +414,8 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
         return s;
       });
   m.def("_fit_static_law", [](py::object velocity, py::object force, const StaticFitOptions& o) {
-    const Eigen::VectorXd v = vector_arg(velocity, "velocity"), f = vector_arg(force, "force");
+    // Unequal lengths: the library's own message ("friction fit: velocity has ... points").
+    const Eigen::VectorXd v = vector_arg(velocity, "fit_static_law", "velocity"), f = vector_arg(force, "fit_static_law", "force");
     py::gil_scoped_release release;
     return fit_static_law(v, f, o);
   });

@@ -22,7 +22,7 @@ void init_io(py::module_& m) {
           o.header = CsvHeader::detect;
           o.names = names;
           o.names_option = "names";
-          Dataset d = load_dataset(path_arg(path), o);
+          Dataset d = load_dataset(path_arg(path, "load"), o);
           if (!names.empty() && d.lines.empty()) {
             throw std::invalid_argument(d.where() + "names: names the columns of a CSV file; a MAT file's variables have their own "
                                         "names: " + d.describe_contents());
@@ -71,11 +71,11 @@ void init_io(py::module_& m) {
         "Reads a CSV (header row or none) or MAT file, optionally resampled onto a uniform grid: ([(name, column)], "
         "{scalar: value}, file, sha256, csv line numbers, {header_row, warnings, unusable, contents, resampling}).");
 
-  m.def("load_law", [](const py::object& p) { return load_law(path_arg(p)); }, py::arg("path"),
+  m.def("load_law", [](const py::object& p) { return load_law(path_arg(p, "load_law")); }, py::arg("path"),
         "Reads a friction law from a .yaml/.yml file ({law: NAME, params...}) or a .json file (the same, or the "
         "MODEL.json an identification writes). Raises ValueError naming the file and key on bad content.");
 
-  m.def("sha256_file", [](const py::object& p) { return sha256_file(path_arg(p)); }, py::arg("path"), "Lowercase hex SHA-256 of a file's bytes (as in results' data.sha256).");
+  m.def("sha256_file", [](const py::object& p) { return sha256_file(path_arg(p, "sha256_file")); }, py::arg("path"), "Lowercase hex SHA-256 of a file's bytes (as in results' data.sha256).");
 }
 
 }  // namespace frictionlab::python

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -269,6 +270,34 @@ Dataset read_mat(const std::string& path) {
   MatPtr mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
   if (!mat) fail("not a MATLAB MAT file (v5 or v7.3) or corrupt; expected a file saved by MATLAB's save");
 
+  // A first pass over the variables' headers only. matio (1.5.23) allocates a variable's values
+  // by the dimensions its header declares, and when that fails it ends the variables with NULL
+  // logging nothing: a 1 kB file declaring 6 GB of doubles would be allocated and converted, or
+  // would silently drop the variables after it. A header declaring more bytes than the file could
+  // hold (zlib inflates at most 1032 to 1) is refused, and the count tells an early end.
+  constexpr double kMaxInflateRatio = 1032.0;  // zlib's largest compression ratio
+  const std::uintmax_t file_size = std::filesystem::file_size(path, ec);  // -1 when unknown: no bound
+  const double file_bytes = static_cast<double>(file_size);
+  std::size_t declared_count = 0;
+  for (VarPtr info(Mat_VarReadNextInfo(mat.get())); info; info.reset(Mat_VarReadNextInfo(mat.get()))) {
+    ++declared_count;
+    double bytes = static_cast<double>(Mat_SizeOfClass(info->class_type));
+    std::string shape;
+    for (int d = 0; d < info->rank && info->dims != nullptr; ++d) {
+      bytes *= static_cast<double>(info->dims[d]);
+      shape += (d ? " x " : "") + std::to_string(info->dims[d]);
+    }
+    if (bytes > kMaxInflateRatio * file_bytes) {
+      char gigabytes[32];
+      std::snprintf(gigabytes, sizeof gigabytes, "%.3g", bytes / 1e9);  // may be far beyond any integer
+      fail("variable '" + std::string(info->name != nullptr ? info->name : "?") + "' declares " + shape + " values (" +
+           gigabytes + " GB) but the file has " + std::to_string(file_size) +
+           " bytes: corrupt file");
+    }
+  }
+  Mat_Rewind(mat.get());
+  g_matio_log.clear();
+
   // One pass over the variables, each read in full and checked by variable_problem.
   std::vector<std::string> names;
   std::vector<std::pair<std::string, Eigen::VectorXd>> vectors;
@@ -281,6 +310,10 @@ Dataset read_mat(const std::string& path) {
       // NULL ends the file; with an error logged on the way it is a damaged variable instead
       // (warnings, e.g. about a class matio skips, are not).
       if (g_matio_error) fail("cannot read the variable after '" + (names.empty() ? std::string("(start)") : names.back()) + "' (corrupt or truncated file)");
+      if (names.size() < declared_count) {
+        fail("cannot read variable " + std::to_string(names.size() + 1) + " of " + std::to_string(declared_count) +
+             " (after '" + (names.empty() ? std::string("(start)") : names.back()) + "'): corrupt file, or more than the memory holds");
+      }
       break;
     }
     const std::string name = var->name != nullptr ? var->name : "";

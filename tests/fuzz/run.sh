@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Runs the libFuzzer targets of tests/fuzz for a bounded time each, after replaying every kept
+# regression input, and prints one PASS/FAIL line per target; exits 1 if any target failed.
+# Usage: tests/fuzz/run.sh BUILD_DIR SECONDS JOBS [keep]
+#   BUILD_DIR  the Clang build holding tests/fuzz/fuzz_* (make fuzz-build)
+#   SECONDS    fuzzing time per target (-max_total_time)
+#   JOBS       targets run at once (one core each)
+#   keep       (make fuzz) copy each crashing input into tests/fuzz/regressions/<target>/ to be
+#              committed; without it (make test) the source tree is left as it is.
+# Each target mutates with the tokens of tests/fuzz/<target>.dict. Inputs found on the way go to BUILD_DIR/fuzz/corpus/<target> (not committed; make fuzz-merge
+# minimises them into tests/fuzz/corpus/<target>).
+set -uo pipefail
+
+build=$1 seconds=$2 jobs=${3:-1} keep=${4:-}
+here=$(cd "$(dirname "$0")" && pwd)
+targets=(fuzz_csv fuzz_mat fuzz_scenario fuzz_law)
+out="$build/fuzz"
+mkdir -p "$out"
+
+# One target: replay its regressions, then fuzz from the committed corpus. Writes a summary line
+# to $out/<target>.result.
+run_target() {
+  local t=$1 bin="$build/tests/fuzz/$1"
+  local corpus="$out/corpus/$t" findings="$out/findings/$t" log="$out/$t.log"
+  local regressions=("$here/regressions/$t"/*)
+  mkdir -p "$corpus" "$findings"
+  [[ -e "${regressions[0]}" ]] || regressions=()
+  local start=$SECONDS
+  if ((${#regressions[@]})) && ! "$bin" -timeout=25 "${regressions[@]}" >"$out/$t.regressions.log" 2>&1; then
+    echo "FAIL  $t: a kept regression input fails again (log: $out/$t.regressions.log)" >"$out/$t.result"
+    return
+  fi
+  "$bin" -max_total_time="$seconds" -timeout=25 -print_final_stats=1 -artifact_prefix="$findings/" \
+    -dict="$here/$t.dict" "$corpus" "$here/corpus/$t" >"$log" 2>&1
+  local rc=$? elapsed=$((SECONDS - start))
+  local runs
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)
+  if ((rc == 0)); then
+    echo "PASS  $t: ${elapsed} s, ${runs:-?} inputs run, ${#regressions[@]} regression inputs replayed" >"$out/$t.result"
+    return
+  fi
+  local found
+  found=$(ls -t "$findings" 2>/dev/null | head -1)
+  local what
+  what=$(grep -m1 -E 'ERROR: (AddressSanitizer|libFuzzer|UndefinedBehaviorSanitizer)|runtime error:|terminate called' "$log" || true)
+  local msg="FAIL  $t: ${what:-exit status $rc} (log: $log)"
+  if [[ -n "$found" ]]; then
+    msg+="; input: $findings/$found"
+    if [[ -n "$keep" ]]; then
+      mkdir -p "$here/regressions/$t"
+      cp "$findings/$found" "$here/regressions/$t/"
+      msg+=" (kept in tests/fuzz/regressions/$t/: commit it with the fix)"
+    else
+      msg+=" (keep it in tests/fuzz/regressions/$t/ once fixed)"
+    fi
+  fi
+  echo "$msg" >"$out/$t.result"
+}
+export -f run_target
+export build seconds keep here out
+
+rm -f "$out"/*.result
+printf '%s\n' "${targets[@]}" | xargs -P "$jobs" -I{} bash -c 'run_target {}'
+status=0
+for t in "${targets[@]}"; do
+  if [[ -f "$out/$t.result" ]]; then
+    echo "fuzz: $(cat "$out/$t.result")"
+    grep -q '^PASS' "$out/$t.result" || status=1
+  else
+    echo "fuzz: FAIL  $t: did not run"
+    status=1
+  fi
+done
+exit $status
