@@ -130,7 +130,7 @@ Handler register_analyze(CLI::App& app) {
   CLI::Option* json = cmd->add_option("--json", a->json, "write the result as JSON to FILE, or '-' for stdout");
   add_plot_option(cmd, a->plot);
   cmd->add_flag("--overwrite", a->overwrite, "replace an existing --json or --plot file");
-  register_json_output(cmd, json, &a->overwrite, [a] { return a->method.empty() ? std::string("analyze") : a->method; });
+  register_json_output(cmd, json, [a] { return a->method.empty() ? std::string("analyze") : a->method; });
   return [a]() -> int {
     check_output_file(a->json, a->overwrite, "--json");
     check_plot(a->plot, a->overwrite);
@@ -139,7 +139,6 @@ Handler register_analyze(CLI::App& app) {
       check_distinct_outputs(
           {{"--json", a->json}, {"--plot", files.figure}, {"--plot data", files.data}, {"--plot script", files.script}});
     }
-    outputs_checked();
     const Dataset d = load_dataset(a->data);
     std::optional<Figure> figure;
     const std::string name = std::filesystem::path(a->data).filename().string();
