@@ -133,7 +133,7 @@ Handler register_analyze(CLI::App& app) {
   add_plot_option(cmd, a->plot);
   cmd->add_flag("--overwrite", a->overwrite, "replace an existing --json or --plot file");
   add_read_options(cmd, a->read);
-  register_json_output(cmd, json, &a->overwrite, [a] { return a->method.empty() ? std::string("analyze") : a->method; });
+  register_json_output(cmd, json, [a] { return a->method.empty() ? std::string("analyze") : a->method; });
   return [a]() -> int {
     check_output_file(a->json, a->overwrite, "--json");
     check_plot(a->plot, a->overwrite);
@@ -142,7 +142,6 @@ Handler register_analyze(CLI::App& app) {
       check_distinct_outputs(
           {{"--json", a->json}, {"--plot", files.figure}, {"--plot data", files.data}, {"--plot script", files.script}});
     }
-    outputs_checked();
     const Dataset d = load_data(a->data, a->read, a->time);
     std::optional<Figure> figure;
     const std::string name = std::filesystem::path(a->data).filename().string();

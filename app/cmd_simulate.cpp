@@ -73,7 +73,6 @@ Handler register_simulate(CLI::App& app) {
       check_distinct_outputs(
           {{"-o", args->output}, {"--plot", files.figure}, {"--plot data", files.data}, {"--plot script", files.script}});
     }
-    outputs_checked();
     progress_start("frictionlab simulate");
     const Scenario sc = load_scenario(args->scenario);
     progress_stage("simulating");

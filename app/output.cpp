@@ -222,7 +222,7 @@ void add_output_options(CLI::App* cmd, OutputOptions& o) {
       ->group("Output");
   cmd->add_flag("--overwrite", o.overwrite, "Replace existing output files and report files")->group("Output");
   const std::string name = cmd->get_name();
-  register_json_output(cmd, json, &o.overwrite, [name] { return name; });
+  register_json_output(cmd, json, [name] { return name; });
 }
 
 void add_plot_option(CLI::App* cmd, std::string& plot) {
@@ -238,7 +238,6 @@ namespace {
 struct JsonOutput {
   CLI::App* command;
   CLI::Option* json;
-  const bool* overwrite;
   std::function<std::string()> method;
 };
 
@@ -246,8 +245,6 @@ std::vector<JsonOutput>& json_outputs() {
   static std::vector<JsonOutput> outputs;
   return outputs;
 }
-
-bool g_outputs_checked = false;
 
 // The registered subcommand that was chosen (parsed() is set as soon as CLI11 enters it, so this
 // also works after a parse error).
@@ -267,11 +264,9 @@ std::string one_line(std::string s) {
 
 }  // namespace
 
-void register_json_output(CLI::App* cmd, CLI::Option* json, const bool* overwrite, std::function<std::string()> method) {
-  json_outputs().push_back({cmd, json, overwrite, std::move(method)});
+void register_json_output(CLI::App* cmd, CLI::Option* json, std::function<std::string()> method) {
+  json_outputs().push_back({cmd, json, std::move(method)});
 }
-
-void outputs_checked() { g_outputs_checked = true; }
 
 void print_error(const std::string& message, bool internal) {
   progress_stop();
@@ -289,13 +284,7 @@ int fail(const std::string& message, int status, bool internal) {
                               {"status", "error"},
                               {"message", one_line(message)},
                               {"method", out->method ? out->method() : std::string()}};
-    if (path == "-") {
-      std::cout << j.dump() << std::endl;
-    } else if (g_outputs_checked) {
-      AtomicWriteOptions w;
-      w.overwrite = out->overwrite && *out->overwrite;
-      write_file_atomic(path, j.dump(2) + "\n", w);
-    }
+    if (path == "-") std::cout << j.dump() << std::endl;
   } catch (...) {
     // Reporting an error must not raise another one; the line on stderr is out already.
   }
@@ -371,7 +360,6 @@ void check_outputs(const OutputOptions& o) {
     paths.insert(paths.end(), {{"--plot", files.figure}, {"--plot data", files.data}, {"--plot script", files.script}});
   }
   check_distinct_outputs(paths);
-  outputs_checked();
   progress_start(o.command ? command_path(o.command) : "frictionlab");
 }
 

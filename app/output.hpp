@@ -27,18 +27,17 @@ struct OutputOptions {
 /// registers --json with register_json_output (method: the subcommand's name).
 void add_output_options(CLI::App* cmd, OutputOptions& o);
 
-/// Registers `cmd`'s --json option so that a failed run still writes its JSON: `json` the
-/// --json option, `overwrite` the --overwrite flag's variable (both owned by the subcommand),
-/// `method` the "method" the JSON names (called when the error is reported; may read parsed
-/// positionals). The registry is what lets fail() build the error JSON in one place.
-void register_json_output(CLI::App* cmd, CLI::Option* json, const bool* overwrite, std::function<std::string()> method);
+/// Registers `cmd`'s --json option (owned by the subcommand) so that a failed run still prints
+/// its error JSON: `method` gives the "method" the JSON names (called when the error is reported;
+/// it may read parsed positionals). This registry lets fail() build the error JSON in one place.
+void register_json_output(CLI::App* cmd, CLI::Option* json, std::function<std::string()> method);
 
-/// The one place a failed run is reported (main's catch blocks, and emit for a result whose
-/// data gave no answer): one line "frictionlab: error: MESSAGE" (or "internal error" when
-/// `internal`) on stderr; and when the subcommand that ran has --json, the JSON
-/// {"schema": 1, "status": "error", "message": MESSAGE, "method": ...} on stdout (--json -) or
-/// in the file (only once its path was checked by check_outputs: an error about the outputs
-/// themselves writes no file). Never throws. Returns `status`.
+/// The one place a failed run is reported (main's catch blocks; emit prints the same line for a
+/// result whose data gave no answer): one line "frictionlab: error: MESSAGE" (or "internal
+/// error" when `internal`) on stderr; and when the subcommand that ran was given `--json -`, the
+/// JSON {"schema": 1, "status": "error", "message": MESSAGE, "method": ...} as one line on stdout.
+/// A --json FILE is not written: a run that failed leaves no file behind. Never throws. Returns
+/// `status`.
 int fail(const std::string& message, int status, bool internal = false);
 
 /// The error line alone: "frictionlab: error: MESSAGE" on stderr (the progress line cleared).
@@ -48,17 +47,13 @@ void print_error(const std::string& message, bool internal = false);
 /// message naming `option`: a directory, an existing regular file without --overwrite, a
 /// missing directory, a block device or socket. "-" (stdout) and "" (none) pass. Devices and
 /// FIFOs pass: they are written through, never replaced.
-/// 	hrows std::invalid_argument "OPTION PATH ...".
+/// \throws std::invalid_argument "OPTION PATH ...".
 void check_output_file(const std::string& path, bool overwrite, const std::string& option);
 
 /// Refuses two outputs of one run that are the same file (--json and --plot, or a figure's
 /// .dat/.gp): the second would fail after the first was written. `paths` pairs option and path.
-/// 	hrows std::invalid_argument naming both options.
+/// \throws std::invalid_argument naming both options.
 void check_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& paths);
-
-/// Marks the outputs of this run as checked (check_outputs does it; commands with their own
-/// output options call it after their checks): from then on fail() writes the error JSON file.
-void outputs_checked();
 
 /// Adds --plot FILE to `cmd` (simulate, analyze: they have their own other output options).
 void add_plot_option(CLI::App* cmd, std::string& plot);
@@ -67,8 +62,7 @@ void add_plot_option(CLI::App* cmd, std::string& plot);
 /// path with an unsupported extension (svg, png, pdf) or an existing figure, a --report
 /// directory that exists and is not empty, all without --overwrite; a --json or --plot path that
 /// is a directory (with or without --overwrite); two outputs that are the same file. Also checks
-/// that gnuplot is there when a figure is asked for, marks the outputs checked and starts the
-/// progress line.
+/// that gnuplot is there when a figure is asked for, and starts the progress line.
 /// \throws std::invalid_argument (exit 2) naming the option and path; std::runtime_error when
 ///         gnuplot is missing ("gnuplot not found: install Debian package gnuplot-nox").
 void check_outputs(const OutputOptions& o);

@@ -63,10 +63,7 @@ code=$?
 set -e
 [ "$code" -eq 1 ] || fail "failing gnuplot: exit $code, expected 1"
 [ ! -e "$tmp/b.svg" ] || fail "failing gnuplot left a figure"
-if [ -e "$tmp/b.json" ]; then  # the error JSON may be there; a JSON saying ok must not
-  /usr/bin/python3 -c "import json,sys; assert json.load(open(sys.argv[1]))['status']=='error'" "$tmp/b.json" \
-    || fail "--json says ok although the figure failed: $(cat "$tmp/b.json")"
-fi
+[ ! -e "$tmp/b.json" ] || fail "--json written although the figure failed: $(cat "$tmp/b.json")"
 
 # Devices and FIFOs are written through, never replaced.
 if [ "$(id -u)" -eq 0 ] && mknod "$tmp/null" c 1 3 2> /dev/null; then
