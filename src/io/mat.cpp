@@ -288,10 +288,11 @@ Dataset read_mat(const std::string& path) {
       shape += (d ? " x " : "") + std::to_string(info->dims[d]);
     }
     if (bytes > kMaxInflateRatio * file_bytes) {
+      if (info->rank > 3) shape = "rank-" + std::to_string(info->rank) + " array of";
       char gigabytes[32];
       std::snprintf(gigabytes, sizeof gigabytes, "%.3g", bytes / 1e9);  // may be far beyond any integer
-      fail("variable '" + std::string(info->name != nullptr ? info->name : "?") + "' declares " + shape + " values (" +
-           gigabytes + " GB) but the file has " + std::to_string(file_size) +
+      fail("variable " + (info->name != nullptr ? "'" + std::string(info->name) + "'" : std::to_string(declared_count) + " (no name)") +
+           " declares " + shape + " values (" + gigabytes + " GB) but the file has " + std::to_string(file_size) +
            " bytes: corrupt file");
     }
   }

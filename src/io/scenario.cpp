@@ -499,7 +499,12 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
       if (!(std::isfinite(o.max_step) && o.max_step >= 0))
         throw std::invalid_argument(s.at("max_step") + ": " + detail::format_value(o.max_step) + " must be >= 0 (s; 0 = no limit)");
     }
-    if (s.has("max_steps")) o.max_steps = static_cast<long>(positive(s, "max_steps", 0, "steps", true));
+    if (s.has("max_steps")) {
+      const double n = positive(s, "max_steps", 0, "steps", true);
+      constexpr double kLongEnd = 0x1p63;  // 2^63: the first value a long cannot hold
+      if (!(n < kLongEnd)) throw std::invalid_argument(s.at("max_steps") + ": " + detail::format_value(n) + " must be < 9.2e18 (steps)");
+      o.max_steps = static_cast<long>(n);
+    }
     with_context(s.at("mode"), [&] { return resolve_solver_mode(sc.law, o.mode); });
   }
   if (top.has("initial")) {

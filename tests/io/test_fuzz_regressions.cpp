@@ -81,8 +81,8 @@ TEST(FuzzRegressions, MatVariableLargerThanTheFileCouldHoldIsRefused) {
     const std::string path = dir.file(name);
     fs::copy_file(kFuzzDir / "regressions" / "fuzz_mat" / name, path);
     const std::string message = error_of([&] { (void)fl::load_dataset(path); });
-    EXPECT_NE(message.find(path + ": variable '"), std::string::npos) << message;
-    EXPECT_NE(message.find("' declares 16 x "), std::string::npos) << message;
+    EXPECT_NE(message.find(path + ": variable "), std::string::npos) << message;
+    EXPECT_NE(message.find(" declares 16 x "), std::string::npos) << message;
     EXPECT_NE(message.find("but the file has 971 bytes: corrupt file"), std::string::npos) << message;
   }
 }
