@@ -8,6 +8,8 @@ JOBS       ?= $(shell nproc)
 PYTHON     ?= /usr/bin/python3
 CMAKE_ARGS ?=
 CONFIGURE   = cmake -S . -B $(1) -DPython_EXECUTABLE=$(PYTHON) $(CMAKE_ARGS) $(2) >/dev/null
+# Inherited by cmake's own makes: the build prints its progress, not "Entering directory" lines.
+MAKEFLAGS  += --no-print-directory
 
 .PHONY: all deps build test demo sanitize bench install-test clean
 
