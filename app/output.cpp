@@ -426,6 +426,7 @@ int emit(const Result& r, const OutputOptions& o, const std::string& text_overri
       progress_stage("writing report " + o.report);
       std::vector<ReportFigure> figs;
       if (figure) figs.push_back({"fit", caption(r), *figure});
+      for (auto& f : report_extra_figures(r)) figs.push_back(std::move(f));
       const std::string page = write_report(r, figs, report_info(r, o), o.report, o.overwrite);
       note << "report " << page << "\n";
     }

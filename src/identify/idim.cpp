@@ -329,7 +329,31 @@ Result identify_idim(const IdimData& data, const IdimOptions& options) {
   Result r = identify_idim_fixed(data, o);
   if (has_stribeck) r.diagnostics.numbers["stribeck_vs"] = o.stribeck_vs;
   if (options.input_delay > 0) r.diagnostics.numbers["input_delay"] = static_cast<double>(options.input_delay);
-  if (r.ok()) attach_law(r, o, o.stribeck_vs);
+  if (r.ok()) {
+    attach_law(r, o, o.stribeck_vs);
+    // The filtered velocity at the fitted samples (the viscous term's column), for the friction map.
+    IdimOptions ov = o;
+    ov.terms = {"viscous"};
+    ov.extra_terms.clear();
+    const Vec v = idim_regression(data, ov).X.col(0);
+    r.series["velocity"].assign(v.data(), v.data() + v.size());
+    // The identified friction terms as a curve over +-max |v| (denser near 0, where Stribeck
+    // terms bend), evaluated on the velocity itself, not on decimated columns.
+    constexpr int kSide = 150;
+    Vec grid(2 * kSide), zero = Vec::Zero(2 * kSide), curve = Vec::Zero(2 * kSide);
+    for (int i = 0; i < kSide; ++i) {
+      const double a = v.cwiseAbs().maxCoeff() * std::pow((i + 1.0) / kSide, 2.0);
+      grid(kSide - 1 - i) = -a;
+      grid(kSide + i) = a;
+    }
+    const IdimKinematics k{IdimKinematics::View(nullptr, 0), IdimKinematics::View(grid.data(), grid.size()),
+                           IdimKinematics::View(zero.data(), zero.size())};
+    ov.terms = o.terms;  // the built-in terms only (a user's term may need the position)
+    for (const auto& t : idim_terms(ov))
+      if (t.parameter != "M" && t.parameter != "offset") curve += r.value(t.parameter) * t.column(k);
+    r.series["law_velocity"].assign(grid.data(), grid.data() + grid.size());
+    r.series["law_force"].assign(curve.data(), curve.data() + curve.size());
+  }
   return r;
 }
 
@@ -404,6 +428,17 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
     for (Eigen::Index k = 0; k < nobs; ++k) t.push_back(data.time[options.skip + k * std::max(1, options.decimation)]);
     r.series["force"].assign(reg.y.data(), reg.y.data() + nobs);
     r.series["force_model"].assign(model.data(), model.data() + nobs);
+    // The friction map: the force less the non-friction terms (inertia, offset, user terms)
+    // against velocity, and the friction terms alone.
+    Vec friction = reg.y, friction_model = Vec::Zero(nobs);
+    for (Eigen::Index j = 0; j < p; ++j) {
+      const std::string& name = reg.terms[static_cast<std::size_t>(j)].parameter;
+      const bool is_friction = j < p - static_cast<Eigen::Index>(options.extra_terms.size()) && name != "M" && name != "offset";
+      if (is_friction) friction_model += reg.X.col(j) * theta(j);
+      else friction -= reg.X.col(j) * theta(j);
+    }
+    r.series["friction"].assign(friction.data(), friction.data() + nobs);
+    r.series["friction_model"].assign(friction_model.data(), friction_model.data() + nobs);
   }
   r.diagnostics.numbers["residual_std"] = std::sqrt(s2);
 
@@ -440,6 +475,13 @@ ValidationFigures cross_test(const Result& identified, const IdimData& data, con
   v.relative_error_percent = 100.0 * e.norm() / reg.y.norm();
   v.rmse = std::sqrt(e.squaredNorm() / static_cast<double>(e.size()));
   v.samples = static_cast<std::size_t>(e.size());
+  {  // figure signals, sampled as the identification's (see identify_idim_fixed)
+    const Vec model = reg.X * theta;
+    auto& t = v.series["time"];
+    for (Eigen::Index k = 0; k < e.size(); ++k) t.push_back(data.time[o.skip + k * std::max(1, o.decimation)]);
+    v.series["force"].assign(reg.y.data(), reg.y.data() + reg.y.size());
+    v.series["force_model"].assign(model.data(), model.data() + model.size());
+  }
   return v;
 }
 

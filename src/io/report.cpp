@@ -322,7 +322,9 @@ std::string write_report(const Result& result, const std::vector<ReportFigure>& 
     for (const auto& f : figures) {
       const std::string path = (fs::path(work) / (f.name + ".svg")).string();
       write_figure(f.figure, path, true);
-      inlined.emplace_back(f.caption, inline_svg(read_file(path)));
+      // The caption names the file, whose data and script sit next to it.
+      inlined.emplace_back(f.caption + (f.caption.empty() ? "" : " ") + "(" + f.name + ".svg)",
+                           inline_svg(read_file(path)));
     }
     AtomicWriteOptions w;
     w.overwrite = true;

@@ -40,6 +40,9 @@ struct ValidationFigures {
   /// `frictionlab validate`. When not empty, JSON "relative_error_percent" is this object
   /// instead of the single number above.
   std::map<std::string, double> signal_errors_percent;
+  /// Signals behind the cross-test figure, in SI units (not written to JSON): idim's cross_test
+  /// gives "time", "force" (measured) and "force_model" (predicted), of one length.
+  std::map<std::string, std::vector<double>> series;
 };
 
 /// Numerical health of an identification.
@@ -72,7 +75,9 @@ struct Result {
   /// the estimates do not make a valid law, e.g. a negative Coulomb level; a warning says why).
   std::optional<LawSpec> law;
   /// Signals behind the result's figures, by name, in SI units (not written to JSON): e.g. idim
-  /// "time", "force", "force_model"; sweep "velocity", "force", "force_std"; decay "time",
+  /// "time", "force", "force_model", "velocity", "friction" (force less inertia and offset),
+  /// "friction_model" (the friction terms), "law_velocity" and "law_force" (the friction terms
+  /// over a velocity grid); sweep "velocity", "force", "force_std"; decay "time",
   /// "position", "peak_time", "peak_position". Series that share a prefix share a length.
   std::map<std::string, std::vector<double>> series;
 
