@@ -274,7 +274,12 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
       .def_readwrite("relative_tolerance", &SweepOptions::relative_tolerance, "Relative steady band (0.01).")
       .def_readwrite("min_duration", &SweepOptions::min_duration, "Shortest steady segment, s (0.5).")
       .def_readwrite("settle_fraction", &SweepOptions::settle_fraction, "Fraction dropped at each segment's start (0.2).")
-      .def_readwrite("min_speed", &SweepOptions::min_speed, "Slower segments are standstill, m/s or rad/s (-1: 1e-3 max |v|).")
+      .def_readwrite("min_speed", &SweepOptions::min_speed, "Slower segments are standstill, m/s or rad/s (-1: 1e-6 max |v|).")
+      .def_readwrite("noise_band", &SweepOptions::noise_band, "Steady band half-width in smoothed-noise std (5).")
+      .def_readwrite("smoothing_fraction", &SweepOptions::smoothing_fraction,
+                     "Moving-average window as a fraction of min_duration (0.1).")
+      .def_readwrite("reference", &SweepOptions::reference,
+                     "Commanded velocity (length N) to find the steady segments on; empty: the measured velocity.")
       .def_readwrite("min_segments", &SweepOptions::min_segments, "Fewer segments is an error (-1: parameters + 1).")
       .def_property("windows", [](const SweepOptions& o) {
         py::list l;
