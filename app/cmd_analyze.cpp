@@ -118,7 +118,9 @@ std::string stick_slip_text(const StickSlipResult& r, bool with_force) {
 Handler register_analyze(CLI::App& app) {
   auto a = std::make_shared<AnalyzeArgs>();
   CLI::App* cmd = app.add_subcommand("analyze", "Analyse a motion record: decay envelope or stick-slip.");
-  cmd->add_option("method", a->method, "envelope (free-oscillation decay) or stick-slip")
+  cmd->add_option("method", a->method,
+                  "envelope (free-oscillation decay) or stick-slip (exit 2 with a message when the record never "
+                  "slips)")
       ->required()
       ->check(CLI::IsMember({"envelope", "stick-slip"}));
   cmd->add_option("data", a->data, "CSV file with a header row (the output of `frictionlab simulate` works) or .mat")
