@@ -24,7 +24,7 @@ Result fail(Result& r, const std::string& message) {
 }
 
 void add_parameter(Result& r, const std::string& name, double value, double std, Quantity q, Axis axis) {
-  r.parameters.push_back({name, value, std, std::string(unit(q, axis))});
+  r.parameters.push_back({name, value, std, std::string(unit(q, axis)), ""});
 }
 
 void set_fit(Result& r, const Eigen::VectorXd& y, const Eigen::VectorXd& y_hat) {
@@ -65,6 +65,9 @@ LinearFit least_squares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y) {
     f.stdev[i] = std::sqrt(s2 * d);
   }
   f.rmse = std::sqrt(e.squaredNorm() / static_cast<double>(n));
+  const Eigen::MatrixXd vs = V * s.head(p).asDiagonal();
+  f.information = vs * vs.transpose();
+  f.residual_variance = s2;
   f.ok = true;
   return f;
 }
