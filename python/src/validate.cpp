@@ -39,7 +39,7 @@ void init_validate(py::module_& m) {
       "_identify_lugre",
       [](const py::handle& time, const py::handle& force, const py::handle& position, double inertia,
          const py::handle& static_law, double delta, double stribeck_velocity, int substeps, int max_iterations,
-         const std::string& axis) {
+         const std::string& axis, double vd) {
         LugreData d{vector_arg(time, "time"), vector_arg(force, "force"), vector_arg(position, "position")};
         LugreOptions o;
         o.inertia = inertia;
@@ -49,11 +49,12 @@ void init_validate(py::module_& m) {
         o.substeps = substeps;
         o.max_iterations = max_iterations;
         o.axis = parse_axis(axis);
+        o.vd = vd;
         py::gil_scoped_release release;  // the fit takes a while; let other Python threads run
         return identify_lugre(d, o);
       },
       py::arg("time"), py::arg("force"), py::arg("position"), py::arg("inertia"), py::arg("static_law"),
-      py::arg("delta"), py::arg("stribeck_velocity"), py::arg("substeps"), py::arg("max_iterations"), py::arg("axis"));
+      py::arg("delta"), py::arg("stribeck_velocity"), py::arg("substeps"), py::arg("max_iterations"), py::arg("axis"), py::arg("vd") = 0.0);
 }
 
 }  // namespace frictionlab::python

@@ -47,6 +47,10 @@ struct LugreOptions {
   /// Stribeck velocity (m/s or rad/s) used with a static-coulomb-viscous `static_law`, which has
   /// none. Default 0.001.
   double stribeck_velocity = 0.001;
+  /// Damping decay velocity vd (m/s or rad/s, >= 0) of the revisited LuGre damping
+  /// sigma1 exp(-(v/vd)^2) (Canudas de Wit 1998); 0 (default) = constant damping sigma1. Held
+  /// fixed: the fit simulates with it. A `static_law` of kind lugre with vd > 0 gives its own.
+  double vd = 0.0;
   /// Integration substeps per sample interval (>= 1) of the fit's second-order fixed-step
   /// simulation. The bristle-mass resonance sqrt(sigma0/M) (316 rad/s for Table I) and the
   /// reversals need a step well below the sample time of 1 kHz data: 4 substeps keep the
