@@ -274,7 +274,7 @@ std::string result_text(const Result& r) {
   for (const auto& p : r.parameters) {
     s << "  " << std::left << std::setw(static_cast<int>(w)) << p.name << " = " << std::right << std::setw(12)
       << std::setprecision(6) << p.value << "  +- " << std::left << std::setw(10) << std::setprecision(3) << p.std << " "
-      << p.unit << "\n";
+      << p.unit << (p.flag.empty() ? "" : "  (" + p.flag + ")") << "\n";
   }
   // The fitted signal: force for most methods, the energy lost per half cycle for decay, the
   // position for lugre's output error.
@@ -293,6 +293,7 @@ std::string result_text(const Result& r) {
     for (const auto& [k, v] : group) s << " " << k << " = " << std::setprecision(6) << v;
     s << "\n";
   }
+  for (const auto& [name, word] : r.diagnostics.texts) s << name << ": " << word << "\n";
   for (const auto& w2 : r.diagnostics.warnings) s << "warning: " << w2 << "\n";
   return s.str();
 }

@@ -367,7 +367,7 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
         const Axis a = parse_axis(axis);
         py::dict d;
         for (const auto& p : f.parameters)
-          d[py::str(p.name)] = ParameterEstimate{p.name, p.value, p.std, std::string(unit(p.quantity, a))};
+          d[py::str(p.name)] = ParameterEstimate{p.name, p.value, p.std, std::string(unit(p.quantity, a)), ""};
         return d;
       }, py::arg("axis") = "linear", "Fitted parameters by name: Parameter(name, value, std, unit) with units of the axis.")
       .def_property_readonly("values", [](const StaticFit& f) {

@@ -22,7 +22,7 @@ Result fail(Result& r, const std::string& message) {
 }
 
 void add_parameter(Result& r, const std::string& name, double value, double std, Quantity q, Axis axis) {
-  r.parameters.push_back({name, value, std, std::string(unit(q, axis))});
+  r.parameters.push_back({name, value, std, std::string(unit(q, axis)), ""});
 }
 
 void set_fit(Result& r, const Eigen::VectorXd& y, const Eigen::VectorXd& y_hat) {

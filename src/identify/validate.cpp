@@ -163,13 +163,13 @@ Result validate_model(const IdentifiedModel& model, const Scenario& scenario, co
   r.diagnostics.numbers["mode_switches"] = static_cast<double>(tr.switches.size());
 
   const Axis axis = po.axis;
-  r.parameters.push_back({"M", model.axis.M, std::numeric_limits<double>::quiet_NaN(), std::string(unit(Quantity::inertia, axis))});
-  r.parameters.push_back({"offset", model.axis.offset, std::numeric_limits<double>::quiet_NaN(), std::string(unit(Quantity::force, axis))});
+  r.parameters.push_back({"M", model.axis.M, std::numeric_limits<double>::quiet_NaN(), std::string(unit(Quantity::inertia, axis)), ""});
+  r.parameters.push_back({"offset", model.axis.offset, std::numeric_limits<double>::quiet_NaN(), std::string(unit(Quantity::force, axis)), ""});
   for (const auto& [name, value] : model.law.to_spec().scalars) {
     const bool viscous = name.rfind("Fv", 0) == 0 || name == "sigma1" || name == "sigma2";
     const bool force = !viscous && name.rfind("F", 0) == 0;
     const std::string u = viscous ? std::string(unit(Quantity::viscous, axis)) : force ? std::string(unit(Quantity::force, axis)) : "";
-    r.parameters.push_back({name, value, std::numeric_limits<double>::quiet_NaN(), u});
+    r.parameters.push_back({name, value, std::numeric_limits<double>::quiet_NaN(), u, ""});
   }
 
   r.series["time"] = to_std(data.time);

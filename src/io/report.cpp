@@ -233,7 +233,7 @@ std::string report_html(const Result& r, const std::vector<std::pair<std::string
       const auto [v, s] = value_and_std(p.value, p.std);
       const double rel = std::abs(p.value) > 0 ? 100.0 * p.std / std::abs(p.value) : NAN;
       h << "<tr><td><b>" << esc(p.name) << "</b></td><td class=\"num\" title=\"" << general(p.value, 17) << "\">" << v
-        << "</td><td class=\"num\">" << s << "</td><td>" << esc(p.unit) << "</td><td class=\"num\">"
+        << "</td><td class=\"num\">" << (p.flag.empty() ? s : "n/a (" + esc(p.flag) + ")") << "</td><td>" << esc(p.unit) << "</td><td class=\"num\">"
         << (std::isfinite(rel) ? general(rel, 2) + " %" : "n/a") << "</td></tr>\n";
     }
     h << "</tbody></table>\n";
