@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "frictionlab/identify/static_fit.hpp"
+#include "frictionlab/identify/uncertainty.hpp"
 #include "frictionlab/models/lugre.hpp"
 #include "frictionlab/models/scalar.hpp"
 #include "frictionlab/signal/differentiate.hpp"
@@ -656,38 +657,68 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   A_int *= kResidualUnit * kResidualUnit;
   const double dof = std::max<double>(1.0, static_cast<double>(nr - p_free - nuisance));
   const double s2 = e.squaredNorm() / dof;
-  const Eigen::MatrixXd Jf = J;
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jf, Eigen::ComputeThinV);
-  const auto& sv = svd.singularValues();
-  Eigen::MatrixXd cov_int = s2 * A_int.completeOrthogonalDecomposition().pseudoInverse();
-  bool singular = false;
-  r.diagnostics.condition_number = sv[p_free - 1] > 0 ? sv[0] / sv[p_free - 1] : std::numeric_limits<double>::infinity();
-  if (singular) warn("the position does not depend on every parameter (rank-deficient Jacobian): some std are understated");
+  {
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J);
+    const auto& sv = svd.singularValues();
+    r.diagnostics.condition_number = sv[p_free - 1] > 0 ? sv[0] / sv[p_free - 1] : std::numeric_limits<double>::infinity();
+  }
 
-  // Physical values [sigma0, sigma1, sigma2, Fc, Fs, vs] and the Jacobian D of the map.
+  // Physical values, and the map T from them to the internal parameters (d internal / d physical;
+  // the internal ones are logs and dF = Fs - Fc): the information in [sigma0, sigma1, sigma2, Fc,
+  // Fs, vs] is T' A T.
   const double S0 = std::exp(dyn[kLogS0]), S1 = std::exp(dyn[kLogS1]);
   const double S2 = sta[kS2], FC = std::exp(sta[kLogFc]), FS = FC + sta[kDF], VS = std::exp(sta[kLogVs]);
-  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(6, p_free);
-  D(0, kLogS0) = S0;
-  D(1, kLogS1) = S1;
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(p_free, p_free);
+  T(kLogS0, 0) = 1 / S0;
+  T(kLogS1, 1) = 1 / S1;
   if (!given) {
-    D(2, kNd + kS2) = 1;
-    D(3, kNd + kLogFc) = FC;
-    D(4, kNd + kLogFc) = FC;
-    D(4, kNd + kDF) = 1;
-    D(5, kNd + kLogVs) = VS;
+    T(kNd + kS2, 2) = 1;
+    T(kNd + kLogFc, 3) = 1 / FC;
+    T(kNd + kDF, 3) = -1;
+    T(kNd + kDF, 4) = 1;
+    T(kNd + kLogVs, 5) = 1 / VS;
   }
-  const Eigen::VectorXd stdev = (D * cov_int * D.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
+  const Eigen::MatrixXd information = T.transpose() * A_int * T;
 
-  const auto add = [&](const std::string& name, double v, double s, Quantity q) { add_parameter(r, name, v, s, q, o.axis); };
-  add("sigma0", S0, stdev[0], Quantity::stiffness);
-  add("sigma1", S1, stdev[1], Quantity::viscous);
-  add("sigma2", S2, stdev[2], Quantity::viscous);
-  add("Fc", FC, stdev[3], Quantity::force);
-  add("Fs", FS, stdev[4], Quantity::force);
-  add("vs", VS, stdev[5], Quantity::velocity);
-  add("delta", st.delta, 0.0, Quantity::dimensionless);
-  if (st.vd > 0) add("vd", st.vd, 0.0, Quantity::velocity);
+  // Parameters held from `static_law` (and delta, vd) keep std 0.
+  const auto add = [&](const std::string& name, double v, Quantity q) { add_parameter(r, name, v, 0.0, q, o.axis); };
+  add("sigma0", S0, Quantity::stiffness);
+  add("sigma1", S1, Quantity::viscous);
+  add("sigma2", S2, Quantity::viscous);
+  add("Fc", FC, Quantity::force);
+  add("Fs", FS, Quantity::force);
+  add("vs", VS, Quantity::velocity);
+  add("delta", st.delta, Quantity::dimensionless);
+  if (st.vd > 0) add("vd", st.vd, Quantity::velocity);
+  {
+    // Standard deviations s^2 (T' A T)^-1 through the shared rule (identify/uncertainty.hpp): a
+    // parameter at a bound of the fit or not determined by the record gets std NaN and a warning.
+    const std::vector<std::string> all = {"sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs"};
+    const std::vector<std::string> names(all.begin(), all.begin() + p_free);
+    std::vector<ParameterState> states(names.size());
+    // Each internal parameter against its bounds (Ceres stops exactly on a bound it hits); the
+    // scale sets the tolerance at a bound of 0: sigma2 against the viscous coefficient that would
+    // carry Fc at the top speed, dF = Fs - Fc against Fc. Internal i is physical i.
+    for (int i = 0; i < p_free; ++i) {
+      double* block = i < kNd ? dyn : sta;
+      const int j = i < kNd ? i : i - kNd;
+      const double scale = i == kNd + kS2 ? FC / vmax : (i == kNd + kDF ? FC : 1.0);
+      if (is_at_bound(block[j], problem.GetParameterLowerBound(block, j), problem.GetParameterUpperBound(block, j), scale))
+        states[static_cast<std::size_t>(i)].at_bound = true;
+    }
+    // A first pass finds the parameters whose std would exceed their value: the record does not
+    // give even their order of magnitude (all six are >= 0), so they count as undetermined.
+    Result probe = r;
+    set_uncertainty_from_information(probe, names, information, s2, states);
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const ParameterEstimate* p = probe.find(names[i]);
+      if (!states[i].at_bound && std::isfinite(p->std) && p->std > std::abs(p->value)) {
+        states[i].undetermined = true;
+        states[i].reason = "its linearised std " + format_number(p->std) + " exceeds its value";
+      }
+    }
+    set_uncertainty_from_information(r, names, information, s2, states);
+  }
 
   Eigen::VectorXd x_sim = d.position;
   x_sim.tail(nr) += e;
