@@ -51,6 +51,7 @@ struct IdentifyArgs {
   double lugre_inertia = std::numeric_limits<double>::quiet_NaN();
   std::string lugre_static;
   int lugre_substeps = 4;
+  double lugre_vd = 0;
 };
 
 std::vector<std::string> split_list(const std::string& s) {
@@ -192,6 +193,7 @@ int run_lugre(const IdentifyArgs& a, const MethodIO& io) {
   LugreOptions o;
   o.inertia = a.lugre_inertia;
   o.substeps = a.lugre_substeps;
+  o.vd = a.lugre_vd;
   o.axis = io.columns.parsed_axis();
   if (!a.lugre_static.empty()) o.static_law = load_law(a.lugre_static);
   const Dataset d = load_data(io.data, io.columns);
@@ -276,14 +278,20 @@ Handler register_identify(CLI::App& app) {
   decay->add_flag("--pendulum", a->pendulum, "Restoring torque is stiffness * sin(angle)");
 
   auto* lugre = method(identify, "lugre",
-                       "LuGre dynamic parameters sigma0, sigma1 by output error (simulate the axis with the measured "
-                       "force, compare positions, Ceres least squares) over presliding and sliding; the static ones "
-                       "(Fc, Fs, vs, sigma2) from the same record unless --static gives them",
+                       "LuGre parameters by output error: simulate the axis with the measured force, compare positions, "
+                       "Ceres least squares. From one record that starts at rest and breaks away both ways (presliding, "
+                       "sliding, reversals), all six: sigma0, sigma1 and the static part Fc, Fs, vs, sigma2 (started "
+                       "from the sliding samples and a grid of Fs and vs), unless --static gives the static part. A "
+                       "parameter the record cannot determine, or that ends at a bound, has std null (nan) and a warning",
                        (*io)[4], "linear");
   lugre->add_option("--inertia", a->lugre_inertia, "Mass or inertia of the axis (kg or kg m^2), > 0")->required();
   lugre->add_option("--static", a->lugre_static,
                     "MODEL.json (or .yaml) with the static law (stribeck, lugre, static-coulomb-viscous, coulomb-viscous), "
                     "e.g. from identify sweep: held fixed instead of identified");
+  lugre->add_option("--vd", a->lugre_vd,
+                    "Damping decay velocity (m/s or rad/s) of the damping sigma1 exp(-(v/vd)^2), held fixed; 0 = constant "
+                    "damping. A --static lugre model with vd > 0 gives its own")
+      ->capture_default_str();
   lugre->add_option("--substeps", a->lugre_substeps, "Simulation steps per sample interval of the fit")->capture_default_str();
 
   return [a, io, idim, breakaway, sweep, decay, lugre]() -> int {
