@@ -2,6 +2,7 @@
 //                     [--json FILE|-] [--plot FILE] [--overwrite]
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -100,7 +101,9 @@ std::string stick_slip_text(const StickSlipResult& r, bool with_force) {
   std::ostringstream o;
   o.precision(6);
   o << "slips        " << r.slip.size() << " (velocity threshold " << r.velocity_threshold << ")\n"
-    << "period       " << r.period << " s\n"
+    << "period       " << (std::isfinite(r.period) ? (std::ostringstream() << std::setprecision(6) << r.period << " s").str()
+                                              : std::string("n/a (fewer than two slips)"))
+    << "\n"
     << "peak slip    " << r.peak_slip_velocity << " (velocity unit)\n"
     << "slip length  " << r.mean_slip_duration << " s (mean)\n";
   if (with_force)
@@ -115,7 +118,9 @@ std::string stick_slip_text(const StickSlipResult& r, bool with_force) {
 Handler register_analyze(CLI::App& app) {
   auto a = std::make_shared<AnalyzeArgs>();
   CLI::App* cmd = app.add_subcommand("analyze", "Analyse a motion record: decay envelope or stick-slip.");
-  cmd->add_option("method", a->method, "envelope (free-oscillation decay) or stick-slip")
+  cmd->add_option("method", a->method,
+                  "envelope (free-oscillation decay) or stick-slip (exit 2 with a message when the record never "
+                  "slips)")
       ->required()
       ->check(CLI::IsMember({"envelope", "stick-slip"}));
   cmd->add_option("data", a->data, "CSV file with a header row (the output of `frictionlab simulate` works) or .mat")
@@ -162,6 +167,23 @@ Handler register_analyze(CLI::App& app) {
         r = detect_stick_slip(t, v, f, o);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(d.where() + e.what());
+      }
+      if (!r.found()) {  // data that cannot give an answer: exit 2, with the JSON if asked for
+        const std::string message = d.where() + r.message;
+        const nlohmann::json j = {{"schema", 1},
+                                  {"status", "error"},
+                                  {"message", message},
+                                  {"method", a->method},
+                                  {"data", {{"file", d.file}, {"sha256", d.sha256}}}};
+        std::cerr << "error: " << message << "\n";
+        if (a->json == "-") {
+          std::cout << j.dump(2) << "\n";
+        } else if (!a->json.empty()) {
+          AtomicWriteOptions w;
+          w.overwrite = a->overwrite;
+          write_file_atomic(a->json, j.dump(2) + "\n", w);
+        }
+        return 2;
       }
       result = stick_slip_json(r);
       if (!a->plot.empty()) figure = stick_slip_figure(t, v, f, r, name);

@@ -29,7 +29,8 @@ struct MethodIO {
 struct IdentifyArgs {
   // idim
   std::string terms = "inertia,viscous,coulomb,offset";
-  double cutoff = 100, delta = 2;
+  double cutoff = 100, delta = 2;  // cutoff, decimate, skip: from the sample rate unless given
+  std::string from;                // "position", "velocity" or "" (position unless only --velocity is given)
   std::string vs = "0.01";
   long delay = 0;
   int decimate = 10;
@@ -45,6 +46,7 @@ struct IdentifyArgs {
   double fixed_delta = 0;
   double relative_tolerance = 0.01, min_duration = 0.5;
   std::vector<std::string> segments;
+  std::string reference;  // commanded-velocity column to segment on
   // lugre
   double lugre_inertia = std::numeric_limits<double>::quiet_NaN();
   std::string lugre_static;
@@ -74,11 +76,12 @@ void stamp(Result& r, const Dataset& d) {
   r.data_sha256 = d.sha256;
 }
 
-IdimData idim_data(const std::string& path, const DataOptions& c) {
+IdimData idim_data(const std::string& path, const DataOptions& c, const std::string& from) {
   const Dataset d = load_data(path, c);
   IdimData x;
   x.time = time_column(d, c);
-  const bool use_velocity = c.velocity_opt->count() > 0 && c.position_opt->count() == 0;
+  const bool use_velocity =
+      from == "velocity" || (from.empty() && c.velocity_opt->count() > 0 && c.position_opt->count() == 0);
   if (use_velocity) x.velocity = velocity_column(d, c);
   else x.position = position_column(d, c);
   x.force = force_column(d, c);
@@ -87,13 +90,21 @@ IdimData idim_data(const std::string& path, const DataOptions& c) {
   return x;
 }
 
-int run_idim(const IdentifyArgs& a, const MethodIO& io) {
+int run_idim(const IdentifyArgs& a, const MethodIO& io, const CLI::App& cmd) {
   check_outputs(io.output);
   IdimOptions o;
   o.terms = split_list(a.terms);
   o.cutoff_hz = a.cutoff;
   o.decimation = a.decimate;
   o.skip = a.skip;
+  // Not given: chosen from the sample rate (idim_rate_defaults; the EMPS recipe at 1 kHz).
+  o.auto_cutoff = cmd.get_option("--cutoff")->count() == 0;
+  o.auto_decimation = cmd.get_option("--decimate")->count() == 0;
+  o.auto_skip = cmd.get_option("--skip")->count() == 0;
+  if (a.from == "position") o.source = IdimSource::position;
+  else if (a.from == "velocity") o.source = IdimSource::velocity;
+  else if (!a.from.empty())
+    throw std::invalid_argument("--from '" + a.from + "': expected position or velocity");
   if (a.vs == "search") {
     o.search_stribeck_vs = true;
   } else {
@@ -106,11 +117,11 @@ int run_idim(const IdentifyArgs& a, const MethodIO& io) {
   o.input_delay = a.delay;
   o.stribeck_delta = a.delta;
   o.axis = io.columns.parsed_axis();
-  const IdimData data = idim_data(io.data, io.columns);
+  const IdimData data = idim_data(io.data, io.columns, a.from);
   Result r = identify_idim(data, o);
   r.data_file = data.file;
   r.data_sha256 = data.sha256;
-  if (r.ok() && !a.validate.empty()) r.validation = cross_test(r, idim_data(a.validate, io.columns), o);
+  if (r.ok() && !a.validate.empty()) r.validation = cross_test(r, idim_data(a.validate, io.columns, a.from), o);
   return emit(r, io.output);
 }
 
@@ -132,6 +143,11 @@ int run_sweep(const IdentifyArgs& a, const MethodIO& io) {
   const Dataset d = load_data(io.data, io.columns);
   SweepData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns)};
   SweepOptions o;
+  if (!a.reference.empty()) {
+    DataOptions ref = io.columns;
+    ref.velocity = a.reference;
+    o.reference = velocity_column(d, ref);
+  }
   o.fit.model = parse_static_fit_model(a.model);
   o.fit.fixed_delta = a.fixed_delta;
   o.relative_tolerance = a.relative_tolerance;
@@ -200,9 +216,19 @@ Handler register_identify(CLI::App& app) {
                    "Comma-separated regressors: inertia, viscous, coulomb, offset, asymmetric (Fv_pos, Fc_pos, Fv_neg, "
                    "Fc_neg; then leave out offset), stribeck (Fs_minus_Fc with --vs, --delta)")
       ->capture_default_str();
-  idim->add_option("--cutoff", a->cutoff, "Position low-pass cut-off (Hz)")->capture_default_str();
-  idim->add_option("--decimate", a->decimate, "Keep one sample in N after the anti-alias filter")->capture_default_str();
-  idim->add_option("--skip", a->skip, "Samples dropped at the start (filter transient)")->capture_default_str();
+  idim->add_option("--cutoff", a->cutoff,
+                   "Position low-pass cut-off (Hz). Default from the sample rate fs: min(100 Hz, fs/10) (EMPS: 100 Hz at "
+                   "1 kHz)");
+  idim->add_option("--decimate", a->decimate,
+                   "Keep one sample in N after the anti-alias filter. Default from fs: floor(fs/100 Hz), 1 to 10 (EMPS: 10)");
+  idim->add_option("--skip", a->skip,
+                   "Samples dropped at the start (filter transient). Default from fs: five periods of the cut-off less one "
+                   "sample (EMPS: 49)");
+  idim->add_option("--from", a->from,
+                   "What the regressors are built from when the file has both: position (filtered, differentiated "
+                   "twice) or velocity (the measured velocity filtered like the position, differentiated once). "
+                   "Default: position, or velocity when only --velocity is given")
+      ->check(CLI::IsMember({"position", "velocity"}));
   idim->add_option("--vs", a->vs, "Stribeck velocity of the stribeck term (m/s or rad/s), or 'search' for the value "
                                   "that minimises the identification error")
       ->capture_default_str();
@@ -221,7 +247,9 @@ Handler register_identify(CLI::App& app) {
   breakaway->add_option("--velocity-threshold", a->threshold, "Speed above which the axis moves (default 1 % of max)");
 
   auto* sweep = method(identify, "sweep",
-                       "Constant-velocity tests: friction-velocity points from steady segments and a fitted law",
+                       "Constant-velocity tests: friction-velocity points from steady segments (found on the smoothed "
+                       "velocity with a noise-aware band, or on --reference) and a fitted law; vs and delta get std "
+                       "null when no level is slow enough to show the Stribeck part",
                        (*io)[2], "rotary");
   sweep->add_option("--model", a->model, "Law to fit: coulomb-viscous, coulomb-viscous-asymmetric, stribeck, stribeck-asymmetric")
       ->capture_default_str();
@@ -229,6 +257,9 @@ Handler register_identify(CLI::App& app) {
   sweep->add_option("--tolerance", a->relative_tolerance, "Relative velocity band of a steady segment")->capture_default_str();
   sweep->add_option("--min-duration", a->min_duration, "Shortest steady segment (s)")->capture_default_str();
   sweep->add_option("--segment", a->segments, "T_BEGIN:T_END (s) of a steady segment, instead of detection (repeatable)");
+  sweep->add_option("--reference", a->reference,
+                    "Column of the commanded velocity: steady segments are found on it instead of on the measured "
+                    "velocity (which is smoothed, with a band that covers its measured noise)");
 
   auto* decay = method(identify, "decay",
                        "Free oscillation of a pendulum or spring-mass: Coulomb and viscous friction from the energy lost "
@@ -258,7 +289,7 @@ Handler register_identify(CLI::App& app) {
   lugre->add_option("--substeps", a->lugre_substeps, "Simulation steps per sample interval of the fit")->capture_default_str();
 
   return [a, io, idim, breakaway, sweep, decay, lugre]() -> int {
-    if (idim->parsed()) return run_idim(*a, (*io)[0]);
+    if (idim->parsed()) return run_idim(*a, (*io)[0], *idim);
     if (breakaway->parsed()) return run_breakaway(*a, (*io)[1]);
     if (sweep->parsed()) return run_sweep(*a, (*io)[2]);
     if (decay->parsed()) return run_decay(*a, (*io)[3]);

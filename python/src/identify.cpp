@@ -242,6 +242,12 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
       .def_readwrite("skip", &IdimOptions::skip, "Samples dropped at the start (49).")
       .def_readwrite("skip_end", &IdimOptions::skip_end, "Samples dropped at the end (0).")
       .def_readwrite("decimation", &IdimOptions::decimation, "Decimation factor (10; 1 = none).")
+      .def_readwrite("auto_cutoff", &IdimOptions::auto_cutoff,
+                     "Take cutoff_hz from the sample rate fs: min(100 Hz, fs/10) (False).")
+      .def_readwrite("auto_decimation", &IdimOptions::auto_decimation,
+                     "Take decimation from fs: floor(fs/100 Hz), 1 to 10 (False).")
+      .def_readwrite("auto_skip", &IdimOptions::auto_skip,
+                     "Take skip from fs: five periods of the cut-off less one sample (False).")
       .def_readwrite("stribeck_vs", &IdimOptions::stribeck_vs, "Stribeck velocity of the stribeck term, m/s or rad/s (0.01).")
       .def_readwrite("search_stribeck_vs", &IdimOptions::search_stribeck_vs, "Search the Stribeck velocity (False).")
       .def_readwrite("stribeck_delta", &IdimOptions::stribeck_delta, "Stribeck exponent (2).")
@@ -274,7 +280,12 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
       .def_readwrite("relative_tolerance", &SweepOptions::relative_tolerance, "Relative steady band (0.01).")
       .def_readwrite("min_duration", &SweepOptions::min_duration, "Shortest steady segment, s (0.5).")
       .def_readwrite("settle_fraction", &SweepOptions::settle_fraction, "Fraction dropped at each segment's start (0.2).")
-      .def_readwrite("min_speed", &SweepOptions::min_speed, "Slower segments are standstill, m/s or rad/s (-1: 1e-3 max |v|).")
+      .def_readwrite("min_speed", &SweepOptions::min_speed, "Slower segments are standstill, m/s or rad/s (-1: 1e-6 max |v|).")
+      .def_readwrite("noise_band", &SweepOptions::noise_band, "Steady band half-width in smoothed-noise std (5).")
+      .def_readwrite("smoothing_fraction", &SweepOptions::smoothing_fraction,
+                     "Moving-average window as a fraction of min_duration (0.1).")
+      .def_readwrite("reference", &SweepOptions::reference,
+                     "Commanded velocity (length N) to find the steady segments on; empty: the measured velocity.")
       .def_readwrite("min_segments", &SweepOptions::min_segments, "Fewer segments is an error (-1: parameters + 1).")
       .def_property("windows", [](const SweepOptions& o) {
         py::list l;
@@ -387,7 +398,7 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
       })
       .def("__repr__", [](const StaticFit& f) {
         std::vector<ParameterEstimate> ps;
-        for (const auto& p : f.parameters) ps.push_back({p.name, p.value, p.std, std::string(unit(p.quantity, Axis::linear))});
+        for (const auto& p : f.parameters) ps.push_back({p.name, p.value, p.std, std::string(unit(p.quantity, Axis::linear)), p.flag});
         std::string s = "<frictionlab.StaticFit law='" + f.law.name() + "' converged=" + (f.converged ? "True" : "False") + ">\n" +
                         parameter_table(ps) + "  relative error " + num(f.relative_error_percent, 4) + " %, rmse " +
                         num(f.rmse, 4) + ", " + std::to_string(f.samples) + " points\n";

@@ -63,6 +63,9 @@ LinearFit least_squares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y) {
     f.stdev[i] = std::sqrt(s2 * d);
   }
   f.rmse = std::sqrt(e.squaredNorm() / static_cast<double>(n));
+  const Eigen::MatrixXd vs = V * s.head(p).asDiagonal();
+  f.information = vs * vs.transpose();
+  f.residual_variance = s2;
   f.ok = true;
   return f;
 }

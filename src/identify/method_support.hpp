@@ -31,6 +31,8 @@ struct LinearFit {
   bool ok = false;
   std::string message;
   Eigen::VectorXd beta, stdev;
+  Eigen::MatrixXd information;   ///< X'X (parameter units^-2 times the unit of y squared)
+  double residual_variance = 0;  ///< s^2
   double rmse = 0;
   double condition_number = 0;
 };

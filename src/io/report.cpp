@@ -127,13 +127,15 @@ void table_head(std::ostringstream& h, std::initializer_list<const char*> cols) 
 
 void diagnostics_html(std::ostringstream& h, const Diagnostics& d) {
   h << "<h2 id=\"diagnostics\">Diagnostics</h2>\n";
-  const bool any = std::isfinite(d.condition_number) || !d.numbers.empty() || !d.groups.empty() || !d.lists.empty();
+  const bool any = std::isfinite(d.condition_number) || !d.numbers.empty() || !d.groups.empty() || !d.lists.empty() ||
+                   !d.texts.empty();
   if (!any) {
     h << "<p class=\"note\">No diagnostics.</p>\n";
     return;
   }
-  if (std::isfinite(d.condition_number) || !d.numbers.empty()) {
+  if (std::isfinite(d.condition_number) || !d.numbers.empty() || !d.texts.empty()) {
     table_head(h, {"figure", "value"});
+    for (const auto& [k, v] : d.texts) h << "<tr><td>" << esc(k) << "</td><td>" << esc(v) << "</td></tr>\n";
     if (std::isfinite(d.condition_number))
       h << "<tr><td>condition number</td><td class=\"num\">" << general(d.condition_number, 4) << "</td></tr>\n";
     for (const auto& [k, v] : d.numbers)
