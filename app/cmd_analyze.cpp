@@ -2,11 +2,13 @@
 //                     [--json FILE|-] [--plot FILE] [--overwrite]
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "commands.hpp"
+#include "data_options.hpp"
 #include "figures.hpp"
 #include "frictionlab/io/figure.hpp"
 #include "output.hpp"
@@ -26,15 +28,14 @@ struct AnalyzeArgs {
   std::string plot;
   bool overwrite = false;
   double threshold = 0.0;
+  ReadOptions read;  // --names, --resample, --max-gap, --drop-invalid
 };
 
 // NaN is not JSON: null instead.
 nlohmann::json num(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
 std::vector<double> column(const Dataset& d, const std::string& name, const std::string& option) {
-  if (!d.has_column(name))
-    throw std::invalid_argument(d.where() + "no column '" + name + "' (" + option + "); the file has: " +
-                                d.describe_contents());
+  if (!d.has_column(name)) throw std::invalid_argument(d.missing_column_message(name, option));
   const Eigen::VectorXd& c = d.column(name);
   std::vector<double> out(c.data(), c.data() + c.size());
   for (std::size_t i = 0; i < out.size(); ++i)
@@ -100,7 +101,9 @@ std::string stick_slip_text(const StickSlipResult& r, bool with_force) {
   std::ostringstream o;
   o.precision(6);
   o << "slips        " << r.slip.size() << " (velocity threshold " << r.velocity_threshold << ")\n"
-    << "period       " << r.period << " s\n"
+    << "period       " << (std::isfinite(r.period) ? (std::ostringstream() << std::setprecision(6) << r.period << " s").str()
+                                              : std::string("n/a (fewer than two slips)"))
+    << "\n"
     << "peak slip    " << r.peak_slip_velocity << " (velocity unit)\n"
     << "slip length  " << r.mean_slip_duration << " s (mean)\n";
   if (with_force)
@@ -115,10 +118,14 @@ std::string stick_slip_text(const StickSlipResult& r, bool with_force) {
 Handler register_analyze(CLI::App& app) {
   auto a = std::make_shared<AnalyzeArgs>();
   CLI::App* cmd = app.add_subcommand("analyze", "Analyse a motion record: decay envelope or stick-slip.");
-  cmd->add_option("method", a->method, "envelope (free-oscillation decay) or stick-slip")
+  cmd->add_option("method", a->method,
+                  "envelope (free-oscillation decay) or stick-slip (exit 2 with a message when the record never "
+                  "slips)")
       ->required()
       ->check(CLI::IsMember({"envelope", "stick-slip"}));
-  cmd->add_option("data", a->data, "CSV file with a header row (the output of `frictionlab simulate` works) or .mat")
+  cmd->add_option("data", a->data,
+                  "CSV file, with a header row (the output of `frictionlab simulate` works) or without one (see "
+                  "--names), or .mat")
       ->required();
   cmd->add_option("--time", a->time, "time column (s)")->capture_default_str();
   cmd->add_option("--position", a->position, "position column (envelope)")->capture_default_str();
@@ -127,14 +134,20 @@ Handler register_analyze(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--threshold", a->threshold,
                   "stick-slip: |v| at or below counts as stuck (0 = automatic: exact zeros or 1 % of max |v|)");
-  cmd->add_option("--json", a->json, "write the result as JSON to FILE, or '-' for stdout");
+  CLI::Option* json = cmd->add_option("--json", a->json, "write the result as JSON to FILE, or '-' for stdout");
   add_plot_option(cmd, a->plot);
   cmd->add_flag("--overwrite", a->overwrite, "replace an existing --json or --plot file");
+  add_read_options(cmd, a->read);
+  register_json_output(cmd, json, [a] { return a->method.empty() ? std::string("analyze") : a->method; });
   return [a]() -> int {
-    if (!a->json.empty() && a->json != "-" && !a->overwrite && std::filesystem::exists(a->json))
-      throw std::invalid_argument(a->json + " exists; pass --overwrite to replace it");
+    check_output_file(a->json, a->overwrite, "--json");
     check_plot(a->plot, a->overwrite);
-    const Dataset d = load_dataset(a->data);
+    if (!a->plot.empty()) {
+      const FigureFiles files = figure_files(a->plot);
+      check_distinct_outputs(
+          {{"--json", a->json}, {"--plot", files.figure}, {"--plot data", files.data}, {"--plot script", files.script}});
+    }
+    const Dataset d = load_data(a->data, a->read, a->time);
     std::optional<Figure> figure;
     const std::string name = std::filesystem::path(a->data).filename().string();
     const std::vector<double> t = column(d, a->time, "--time");
@@ -163,31 +176,53 @@ Handler register_analyze(CLI::App& app) {
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(d.where() + e.what());
       }
+      if (!r.found()) {  // data that cannot give an answer: exit 2, with the JSON if asked for
+        const std::string message = d.where() + r.message;
+        const nlohmann::json j = {{"schema", 1},
+                                  {"status", "error"},
+                                  {"message", message},
+                                  {"method", a->method},
+                                  {"data", {{"file", d.file}, {"sha256", d.sha256}}}};
+        std::cerr << "error: " << message << "\n";
+        if (a->json == "-") {
+          std::cout << j.dump(2) << "\n";
+        } else if (!a->json.empty()) {
+          AtomicWriteOptions w;
+          w.overwrite = a->overwrite;
+          write_file_atomic(a->json, j.dump(2) + "\n", w);
+        }
+        return 2;
+      }
       result = stick_slip_json(r);
       if (!a->plot.empty()) figure = stick_slip_figure(t, v, f, r, name);
       text = stick_slip_text(r, !f.empty());
     }
-    const nlohmann::json j = {{"schema", 1},
+    text = data_note(d) + text;
+    nlohmann::json j = {{"schema", 1},
                               {"status", "ok"},
                               {"message", ""},
                               {"method", a->method},
                               {"data", {{"file", d.file}, {"sha256", d.sha256}}},
                               {"result", result}};
-    if (a->json == "-") {
-      std::cerr << text;
-      std::cout << j.dump(2) << "\n";
-    } else {
-      std::cout << text;
-      if (!a->json.empty()) {
-        AtomicWriteOptions w;
-        w.overwrite = a->overwrite;
-        write_file_atomic(a->json, j.dump(2) + "\n", w);
-      }
+    if (d.resampling || !d.warnings.empty()) {
+      Result notes;  // the data's resampling record and warnings, as identify reports them
+      note_data(notes, d);
+      j["diagnostics"]["warnings"] = notes.diagnostics.warnings;
+      if (d.resampling) j["diagnostics"]["resampling"] = notes.diagnostics.groups.at("resampling");
     }
+    (a->json == "-" ? std::cerr : std::cout) << text;
+    // The figure (gnuplot may fail) before the JSON, so that a failed run leaves no JSON saying ok.
     if (figure) {
       const FigureFiles files = write_figure(*figure, a->plot, a->overwrite);
       (a->json == "-" ? std::cerr : std::cout) << "figure " << files.figure << " (data " << files.data
                                                << ", gnuplot script " << files.script << ")\n";
+    }
+    if (a->json == "-") {
+      std::cout << j.dump(2) << "\n";
+    } else if (!a->json.empty()) {
+      AtomicWriteOptions w;
+      w.overwrite = a->overwrite;
+      write_file_atomic(a->json, j.dump(2) + "\n", w);
     }
     return 0;
   };

@@ -64,9 +64,15 @@ Handler register_simulate(CLI::App& app) {
   add_plot_option(cmd, args->plot);
   cmd->add_flag("--overwrite", args->overwrite, "replace an existing output file");
   return [args]() -> int {
-    if (!args->output.empty() && !args->overwrite && std::filesystem::exists(args->output))
-      throw std::invalid_argument(args->output + " exists; pass --overwrite to replace it");
+    // Every output path is checked before the (possibly long) simulation; the figure, which
+    // runs gnuplot and may fail, is written before the CSV.
+    check_output_file(args->output, args->overwrite, "-o");
     check_plot(args->plot, args->overwrite);
+    if (!args->plot.empty()) {
+      const FigureFiles files = figure_files(args->plot);
+      check_distinct_outputs(
+          {{"-o", args->output}, {"--plot", files.figure}, {"--plot data", files.data}, {"--plot script", files.script}});
+    }
     progress_start("frictionlab simulate");
     const Scenario sc = load_scenario(args->scenario);
     progress_stage("simulating");

@@ -31,41 +31,42 @@ struct ModelFile {
   std::string data_file, data_sha256;
 };
 
+// The one model reader (io/law_file.hpp: whole file, status ok) and the plant values, each
+// checked here so that a bad value is blamed on MODEL.json, not on the scenario.
 ModelFile read_model(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot open the model file (MODEL.json of frictionlab identify --json)");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw std::invalid_argument(path + ": not valid JSON: " + e.what());
-  }
-  if (!j.is_object()) throw std::invalid_argument(path + ": expected a JSON object (MODEL.json of frictionlab identify --json)");
-  if (j.contains("status") && j["status"] != "ok")
-    throw std::invalid_argument(path + ": the identification failed (status " + j["status"].dump() + "); nothing to validate");
+  const nlohmann::json j = read_model_json(path);
   if (!j.contains("law") || !j["law"].is_object())
     throw std::invalid_argument(path + ": no 'law' object; expected the friction law of an identification "
                                 "(frictionlab identify ... --json writes it when the estimates make a valid law)");
   ModelFile m;
   m.model.law = law_from_json(j["law"], path + ": law");
-  auto param = [&](const char* name, bool required, double fallback) {
-    const auto& p = j.contains("parameters") ? j["parameters"] : nlohmann::json::object();
-    if (!p.is_object() || !p.contains(name)) {
-      if (required)
-        throw std::invalid_argument(path + ": parameters." + name + ": missing; expected the identified inertia (kg or kg m^2)");
+  const nlohmann::json none = nlohmann::json::object();
+  const nlohmann::json& p = j.contains("parameters") ? j["parameters"] : none;
+  if (!p.is_object()) throw std::invalid_argument(path + ": parameters: expected an object, got " + p.dump());
+  auto param = [&](const char* name, bool required, double fallback, const char* what) {
+    if (!p.contains(name)) {
+      if (required) throw std::invalid_argument(path + ": parameters." + name + ": missing; expected " + what);
       return fallback;
     }
-    const auto& v = p[name].is_object() ? p[name]["value"] : p[name];
-    if (!v.is_number()) throw std::invalid_argument(path + ": parameters." + name + ".value: expected a number, got " + v.dump());
-    return v.get<double>();
+    const bool wrapped = p[name].is_object();
+    const auto& v = wrapped ? p[name].value("value", nlohmann::json()) : p[name];
+    const std::string key = path + ": parameters." + name + (wrapped ? ".value" : "");
+    if (!v.is_number()) throw std::invalid_argument(key + ": expected " + what + ", got " + v.dump());
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) throw std::invalid_argument(key + ": expected a finite number (" + what + ")");
+    return x;
   };
-  m.model.axis.M = param("M", true, 0.0);
-  m.model.axis.offset = param("offset", false, 0.0);
-  m.model.method = j.value("method", "");
+  m.model.axis.M = param("M", true, 0.0, "the identified inertia, a number > 0 (kg or kg m^2)");
+  if (!(m.model.axis.M > 0))
+    throw std::invalid_argument(path + ": parameters.M: " + nlohmann::json(m.model.axis.M).dump() +
+                                " must be > 0 (the identified inertia, kg or kg m^2)");
+  m.model.axis.offset = param("offset", false, 0.0, "a force offset in N or N m");
+  if (j.contains("method") && j["method"].is_string()) m.model.method = j["method"].get<std::string>();
   m.model.source = path;
   if (j.contains("data") && j["data"].is_object()) {
-    m.data_file = j["data"].value("file", "");
-    m.data_sha256 = j["data"].value("sha256", "");
+    const auto& d = j["data"];
+    if (d.contains("file") && d["file"].is_string()) m.data_file = d["file"].get<std::string>();
+    if (d.contains("sha256") && d["sha256"].is_string()) m.data_sha256 = d["sha256"].get<std::string>();
   }
   return m;
 }
@@ -98,6 +99,7 @@ int run(const ValidateArgs& a) {
   so.data = data;
   so.law = mf.model.law;
   so.axis = mf.model.axis;
+  so.model_source = a.model;
   const Scenario sc = load_scenario(a.scenario, so);
   ValidationData v;
   v.time = time_column(*data, a.columns);
@@ -110,6 +112,7 @@ int run(const ValidateArgs& a) {
   Result r = validate_model(mf.model, sc, v, vo);
   r.data_file = mf.data_file;
   r.data_sha256 = mf.data_sha256;
+  note_data(r, *data);
   return emit(r, a.output, text_of(r, a.scenario));
 }
 
@@ -122,7 +125,7 @@ Handler register_validate(CLI::App& app) {
                                  "controller, driven by a measured run, and report the relative errors of position, "
                                  "velocity, acceleration and force");
   cmd->add_option("MODEL", a->model, "MODEL.json written by frictionlab identify ... --json")->required();
-  cmd->add_option("DATA", a->data, "Measured run: a CSV file with a header row, or a MATLAB .mat file")->required();
+  cmd->add_option("DATA", a->data, "Measured run: a CSV file (with a header row, or without one: see --names), or a MATLAB .mat file")->required();
   cmd->add_option("--scenario", a->scenario,
                   "Scenario YAML: plant (axis), controller and input (e.g. examples/emps_closed_loop.yaml); its data "
                   "inputs read DATA, its M, offset and friction come from MODEL")

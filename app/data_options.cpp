@@ -1,11 +1,71 @@
 #include "data_options.hpp"
 
+#include <charconv>
 #include <cmath>
+#include <sstream>
 
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/io/load.hpp"
+#include "frictionlab/signal/sampling.hpp"
 
 namespace frictionlab::cli {
+namespace {
+
+std::vector<std::string> split_names(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) out.push_back(item);
+  if (!text.empty() && text.back() == ',') out.emplace_back();  // "t,q," names an empty third column: refused
+  return out;
+}
+
+// --resample's DT: "" (the median step) or a step in s > 0.
+double parse_step(const std::string& text) {
+  if (text.empty()) return 0;
+  double v = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+  if (ec != std::errc() || ptr != end || !std::isfinite(v) || v <= 0) {
+    throw std::invalid_argument("--resample '" + text +
+                                "': expected the grid step in seconds (> 0, e.g. 0.001), or no value for the median "
+                                "step (put --resample after DATA, or write --resample=DT)");
+  }
+  return v;
+}
+
+std::string fmt(double x) {
+  std::ostringstream s;
+  s.precision(6);
+  s << x;
+  return s.str();
+}
+
+}  // namespace
+
+void add_read_options(CLI::App* cmd, ReadOptions& o) {
+  cmd->add_option("--names", o.names,
+                  "Names of a CSV file's columns in order, for a file without a header row (its "
+                  "columns are otherwise c1, c2, ...); with a header row they replace its names. Fewer names than "
+                  "columns name the first ones")
+      ->type_name("NAME,...")
+      ->group("Data columns");
+  o.resample_opt = cmd->add_option("--resample", o.resample,
+                                   "Interpolate every column linearly onto a uniform time grid of step DT s "
+                                   "(default: the median step), for irregularly sampled data; repeated time stamps "
+                                   "are merged. The jitter and the samples made are reported")
+                       ->expected(0, 1)
+                       ->type_name("[DT]")
+                       ->group("Data columns");
+  cmd->add_option("--max-gap", o.max_gap,
+                  "Longest time gap (s) --resample may interpolate over (default: 10 median steps; a longer gap "
+                  "is an error naming its rows)")
+      ->check(CLI::PositiveNumber)
+      ->type_name("S")
+      ->needs(o.resample_opt)
+      ->group("Data columns");
+  cmd->add_flag("--drop-invalid", o.drop_invalid, "Drop CSV rows with empty or NaN cells instead of refusing the file")
+      ->group("Data columns");
+}
 
 void add_data_options(CLI::App* cmd, DataOptions& o, const std::string& default_axis) {
   o.axis = default_axis;
@@ -28,16 +88,63 @@ void add_data_options(CLI::App* cmd, DataOptions& o, const std::string& default_
       ->check(CLI::IsMember({"linear", "rotary"}))
       ->capture_default_str()
       ->group("Data columns");
-  cmd->add_flag("--drop-invalid", o.drop_invalid, "Drop CSV rows with empty or NaN cells instead of refusing the file")
-      ->group("Data columns");
+  add_read_options(cmd, o.read);
+}
+
+Dataset load_data(const std::string& path, const ReadOptions& o, const std::string& time_column) {
+  CsvOptions csv;
+  csv.drop_invalid = o.drop_invalid;
+  csv.header = CsvHeader::detect;
+  if (!o.names.empty()) csv.names = split_names(o.names);
+  csv.names_option = "--names";
+  const double dt = o.resample_given() ? parse_step(o.resample) : 0.0;  // a bad DT is named before the file is read
+  Dataset d = load_dataset(path, csv);
+  if (!o.names.empty() && d.lines.empty()) {
+    throw std::invalid_argument(d.where() + "--names names the columns of a CSV file; a MAT file's variables have their "
+                                "own names: " + d.describe_contents());
+  }
+  if (o.resample_given()) {
+    select_column(d, time_column, "--time");  // a missing time column is named with its option
+    ResampleOptions r;
+    r.dt = dt;
+    r.max_gap = o.max_gap;
+    r.dt_name = "--resample";
+    r.max_gap_name = "--max-gap";
+    resample_dataset(d, time_column, r);
+  }
+  return d;
 }
 
 Dataset load_data(const std::string& path, const DataOptions& o) {
-  CsvOptions csv;
-  csv.drop_invalid = o.drop_invalid;
-  Dataset d = load_dataset(path, csv);
+  Dataset d = load_data(path, o.read, o.time);
   apply_scales(d, o.scales);
   return d;
+}
+
+void note_data(Result& r, const Dataset& d) {
+  if (d.resampling) {
+    const ResampleReport& s = *d.resampling;
+    r.diagnostics.groups["resampling"] = {{"dt_min", s.dt_min},
+                                          {"dt_median", s.dt_median},
+                                          {"dt_max", s.dt_max},
+                                          {"dt", s.dt},
+                                          {"max_gap", s.max_gap},
+                                          {"samples_in", static_cast<double>(s.samples_in)},
+                                          {"samples_out", static_cast<double>(s.samples_out)},
+                                          {"merged", static_cast<double>(s.merged)}};
+  }
+  r.diagnostics.warnings.insert(r.diagnostics.warnings.end(), d.warnings.begin(), d.warnings.end());
+}
+
+std::string data_note(const Dataset& d) {
+  std::string out;
+  if (d.resampling) {
+    const ResampleReport& s = *d.resampling;
+    out += "resampled    " + std::to_string(s.samples_in) + " samples (steps " + fmt(s.dt_min) + " to " + fmt(s.dt_max) +
+           " s, median " + fmt(s.dt_median) + " s) onto " + std::to_string(s.samples_out) + " at dt " + fmt(s.dt) + " s\n";
+  }
+  for (const auto& w : d.warnings) out += "warning: " + w + "\n";
+  return out;
 }
 
 void require_finite(const Dataset& d, const Eigen::VectorXd& x, const std::string& column) {
@@ -48,15 +155,22 @@ void require_finite(const Dataset& d, const Eigen::VectorXd& x, const std::strin
 
 Eigen::VectorXd time_column(const Dataset& d, const DataOptions& o) {
   const Eigen::VectorXd& t = select_column(d, o.time, "--time");
-  check_time(d, t);
+  try {
+    check_time(d, t);
+  } catch (const SamplingError& e) {
+    if (e.problem() == SamplingProblem::irregular)
+      throw std::invalid_argument(std::string(e.what()) +
+                                  "; --resample [DT] interpolates every column onto a uniform grid (default DT: the median step)");
+    if (e.problem() == SamplingProblem::repeated)
+      throw std::invalid_argument(std::string(e.what()) + "; --resample merges repeated time stamps (and puts the record on a uniform grid)");
+    throw;
+  }
   return t;
 }
 
 namespace {
 Eigen::VectorXd checked(const Dataset& d, const std::string& name, const std::string& role) {
-  Eigen::VectorXd x = select_column(d, name, role);
-  require_finite(d, x, name);
-  return x;
+  return finite_column(d, name, role);
 }
 }  // namespace
 

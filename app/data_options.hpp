@@ -1,7 +1,9 @@
 #pragma once
 // The column options every data-reading subcommand shares (DESIGN.md's command-line contract):
 // which column or variable is time, position, velocity, current, force or drive input, the
-// constants that turn a drive signal into force, unit scale factors, and the axis kind.
+// constants that turn a drive signal into force, unit scale factors, the axis kind, and how the
+// file is read (--names for a file without a header row, --resample and --max-gap for
+// irregular time, --drop-invalid).
 
 #include <CLI/CLI.hpp>
 
@@ -10,10 +12,22 @@
 #include <string>
 #include <vector>
 
+#include "frictionlab/identify/result.hpp"
 #include "frictionlab/io/dataset.hpp"
 #include "frictionlab/models/parameter.hpp"
 
 namespace frictionlab::cli {
+
+/// How a data file is read: the options of add_read_options.
+struct ReadOptions {
+  std::string names;     ///< --names a,b,c: names of the columns of a CSV file, in order
+  std::string resample;  ///< --resample [DT]: grid step in s ("" = the median step)
+  double max_gap = 0;    ///< --max-gap S: longest gap resampling may bridge, s (0 = 10 median steps)
+  bool drop_invalid = false;
+  CLI::Option* resample_opt = nullptr;  ///< set by add_read_options; resampling when it was given
+
+  bool resample_given() const { return resample_opt != nullptr && resample_opt->count() > 0; }
+};
 
 struct DataOptions {
   std::string time = "time", position = "position", velocity = "velocity", current = "current", force = "force",
@@ -22,7 +36,7 @@ struct DataOptions {
   std::string kt;    ///< number or scalar name: force = kt * current
   std::vector<std::string> scales;
   std::string axis = "linear";
-  bool drop_invalid = false;
+  ReadOptions read;
   // Which column options the user gave explicitly (they take precedence over defaults).
   CLI::Option *force_opt = nullptr, *input_opt = nullptr, *current_opt = nullptr, *velocity_opt = nullptr,
               *position_opt = nullptr;
@@ -30,14 +44,34 @@ struct DataOptions {
   Axis parsed_axis() const { return parse_axis(axis); }
 };
 
-/// Adds --time --position --velocity --current --force --input --gain --kt --scale --axis
-/// --drop-invalid to `cmd`. `default_axis` is the axis when --axis is not given.
+/// Adds --names --resample --max-gap --drop-invalid to `cmd` (group "Data columns"): for
+/// commands that name their columns with options of their own (analyze).
+void add_read_options(CLI::App* cmd, ReadOptions& o);
+
+/// Adds --time --position --velocity --current --force --input --gain --kt --scale --axis and
+/// the read options (add_read_options) to `cmd`. `default_axis` is the axis when --axis is not
+/// given.
 void add_data_options(CLI::App* cmd, DataOptions& o, const std::string& default_axis = "linear");
 
-/// Reads DATA (CSV or MAT), applies --scale factors. \throws std::invalid_argument naming the file.
+/// Reads DATA (CSV with a header row or without one, or MAT): CSV columns named by --names;
+/// with --resample, every column put on a uniform grid of `time_column` (repeated time stamps
+/// merged, gaps longer than --max-gap or 10 median steps refused).
+/// \throws std::invalid_argument naming the file, row, column or option.
+Dataset load_data(const std::string& path, const ReadOptions& o, const std::string& time_column);
+
+/// load_data with o.read and o.time, then the --scale factors.
 Dataset load_data(const std::string& path, const DataOptions& o);
 
-/// The time column, checked strictly increasing and regular (names the row otherwise).
+/// Puts what reading did into a result: diagnostics.groups["resampling"] = {dt_min, dt_median,
+/// dt_max, dt, max_gap, samples_in, samples_out, merged} (s and sample counts) when the data
+/// were resampled, and the data's warnings into diagnostics.warnings.
+void note_data(Result& r, const Dataset& d);
+
+/// The same as text lines for commands without a Result (analyze): "" when there is nothing.
+std::string data_note(const Dataset& d);
+
+/// The time column, checked strictly increasing and regular (names the row otherwise, and
+/// --resample when resampling would help).
 Eigen::VectorXd time_column(const Dataset& d, const DataOptions& o);
 
 /// The applied force or torque (N or N m): the --force column if given or present; else --gain

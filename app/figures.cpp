@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string_view>
 
+#include "frictionlab/models/friction_law.hpp"
+
 namespace frictionlab::cli {
 namespace {
 
@@ -138,6 +140,21 @@ Figure idim_figure(const Result& r) {
   return f;
 }
 
+// A law's curve, v ascending: discontinuous at v = 0, so a gap there (a NaN, which gnuplot leaves
+// undrawn), not a vertical line through the origin.
+FigureSeries gapped_at_zero(const std::string& name, const std::vector<double>& v, const std::vector<double>& F) {
+  FigureSeries s = series(name, {}, {}, SeriesStyle::lines, "#d55e00");
+  for (std::size_t i = 0; i < std::min(v.size(), F.size()); ++i) {
+    if (i > 0 && (v[i - 1] < 0) != (v[i] < 0)) {
+      s.x.push_back(std::numeric_limits<double>::quiet_NaN());
+      s.y.push_back(std::numeric_limits<double>::quiet_NaN());
+    }
+    s.x.push_back(v[i]);
+    s.y.push_back(F[i]);
+  }
+  return s;
+}
+
 Figure sweep_figure(const Result& r) {
   const Axis axis = result_axis(r);
   Figure f;
@@ -155,17 +172,7 @@ Figure sweep_figure(const Result& r) {
     p.series.push_back(s);
   }
   if (const auto *v = find(r, "law_velocity"), *F = find(r, "law_force"); v && F) {
-    // The law is discontinuous at v = 0: a gap there, not a vertical line through the origin.
-    FigureSeries s = series("fitted " + r.model + " law", {}, {}, SeriesStyle::lines, "#d55e00");
-    for (std::size_t i = 0; i < std::min(v->size(), F->size()); ++i) {
-      if (i > 0 && ((*v)[i - 1] < 0) != ((*v)[i] < 0)) {
-        s.x.push_back(std::numeric_limits<double>::quiet_NaN());
-        s.y.push_back(std::numeric_limits<double>::quiet_NaN());
-      }
-      s.x.push_back((*v)[i]);
-      s.y.push_back((*F)[i]);
-    }
-    p.series.push_back(s);
+    p.series.push_back(gapped_at_zero("fitted " + r.model + " law", *v, *F));
   }
   f.panels.push_back(p);
   return f;
@@ -243,6 +250,199 @@ Figure compare_figure(const Result& r, const std::string& what) {
   return f;
 }
 
+// Velocities for drawing a law over [-vmax, vmax]: dense near zero, where Stribeck laws bend;
+// a NaN between the two signs so that the jump at v = 0 is a gap, not a vertical line.
+std::vector<double> law_grid(double vmax) {
+  constexpr int kPerSide = 150;
+  std::vector<double> v;
+  for (int i = kPerSide; i >= 1; --i) v.push_back(-vmax * std::pow(static_cast<double>(i) / kPerSide, 2.0));
+  v.push_back(std::numeric_limits<double>::quiet_NaN());
+  for (int i = 1; i <= kPerSide; ++i) v.push_back(vmax * std::pow(static_cast<double>(i) / kPerSide, 2.0));
+  return v;
+}
+
+// The identified law's sliding (steady-state for dynamic laws) force over +-vmax; empty when the
+// result has no law or it cannot be built.
+std::optional<FigureSeries> law_curve(const Result& r, double vmax, const std::string& name) {
+  if (!r.law || !(vmax > 0)) return std::nullopt;
+  try {
+    const FrictionLaw law = FrictionLaw::from_spec(*r.law);
+    FigureSeries s = series(name, {}, {}, SeriesStyle::lines, "#d55e00");
+    s.x = law_grid(vmax);
+    s.y.resize(s.x.size());
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      s.y[i] = std::isfinite(s.x[i]) ? law.sliding(s.x[i]) : std::numeric_limits<double>::quiet_NaN();
+    s.line_width = 2.2;
+    return s;
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
+double max_abs(const std::vector<double>& v) {
+  double m = 0;
+  for (double x : v)
+    if (std::isfinite(x)) m = std::max(m, std::abs(x));
+  return m;
+}
+
+// Friction samples binned by velocity, each sign on its own (friction jumps at v = 0): the mean
+// and the standard deviation of each bin holding enough samples for them to mean something.
+FigureSeries binned(const std::vector<double>& v, const std::vector<double>& F, double vmax) {
+  constexpr int kBinsPerSide = 16;
+  constexpr std::size_t kMinSamples = 5;  // fewer: a std of little worth
+  FigureSeries s = series("mean +- std per velocity bin", {}, {}, SeriesStyle::errorbars, "#0072b2");
+  for (int side : {-1, 1}) {
+    std::vector<double> n(kBinsPerSide, 0.0), sum(kBinsPerSide, 0.0), sum2(kBinsPerSide, 0.0), vsum(kBinsPerSide, 0.0);
+    for (std::size_t i = 0; i < std::min(v.size(), F.size()); ++i) {
+      if (!(side * v[i] > 0) || !std::isfinite(F[i])) continue;
+      const int b = std::min(kBinsPerSide - 1, static_cast<int>(std::abs(v[i]) / vmax * kBinsPerSide));
+      n[b] += 1;
+      sum[b] += F[i];
+      sum2[b] += F[i] * F[i];
+      vsum[b] += v[i];
+    }
+    for (int b0 = 0; b0 < kBinsPerSide; ++b0) {
+      const int b = side < 0 ? kBinsPerSide - 1 - b0 : b0;  // increasing velocity
+      if (n[b] < kMinSamples) continue;
+      const double mean = sum[b] / n[b];
+      s.x.push_back(vsum[b] / n[b]);
+      s.y.push_back(mean);
+      s.y_error.push_back(std::sqrt(std::max(0.0, (sum2[b] - n[b] * mean * mean) / (n[b] - 1))));
+    }
+  }
+  return s;
+}
+
+FigurePanel map_panel(Axis axis) {
+  FigurePanel p;
+  p.x_label = label("velocity", Quantity::velocity, axis);
+  p.y_label = label("friction " + force_name(axis), Quantity::force, axis);
+  p.zero_line = true;
+  p.zero_x_line = true;
+  p.key = "top left";
+  return p;
+}
+
+// IDIM: the force less the identified inertia and offset terms, against the filtered velocity.
+Figure idim_map(const Result& r) {
+  const Axis axis = result_axis(r);
+  Figure f;
+  f.title = title_for(r, "Friction map: identified friction " + force_name(axis) + " against velocity");
+  f.panel_height = 560;
+  const auto *v = find(r, "velocity"), *F = find(r, "friction");
+  if (!v || !F) return f;
+  FigurePanel p = map_panel(axis);
+  const bool inertia = r.find("M") != nullptr, offset = r.find("offset") != nullptr;
+  const std::string less = inertia && offset ? " - M a - offset" : inertia ? " - M a" : offset ? " - offset" : "";
+  FigureSeries pts = series("samples: drive " + force_name(axis) + less, *v, *F, SeriesStyle::points, "#a8a8a8");
+  pts.point_size = 0.25;
+  p.series.push_back(pts);
+  const double vmax = max_abs(*v);
+  p.series.push_back(binned(*v, *F, vmax));
+  if (auto law = law_curve(r, vmax, "identified law (" + (r.law ? r.law->name : r.model) + ")")) {
+    p.series.push_back(*law);
+  } else if (const auto *lv = find(r, "law_velocity"), *lF = find(r, "law_force"); lv && lF) {
+    // No law to simulate (e.g. Fs below Fc): the identified friction terms as they are.
+    FigureSeries s = gapped_at_zero("identified friction terms (" + r.model + ")", *lv, *lF);
+    s.line_width = 2.2;
+    p.series.push_back(s);
+  }
+  f.panels.push_back(p);
+  return f;
+}
+
+// Breakaway: the applied force against velocity over the experiment, the breakaway force at rest
+// with its std, and the identified static law.
+Figure breakaway_map(const Result& r) {
+  const Axis axis = result_axis(r);
+  Figure f;
+  f.title = title_for(r, "Friction map: applied " + force_name(axis) + " against velocity");
+  f.panel_height = 520;
+  const auto *v = find(r, "velocity"), *F = find(r, "force");
+  if (!v || !F) return f;
+  FigurePanel p = map_panel(axis);
+  p.y_label = label("applied " + force_name(axis), Quantity::force, axis);
+  FigureSeries pts = series("samples (applied, includes M a while accelerating)", *v, *F, SeriesStyle::points, "#7f7f7f");
+  pts.point_size = 0.3;
+  p.series.push_back(pts);
+  if (const ParameterEstimate* Fs = r.find("Fs"); Fs && std::isfinite(Fs->value)) {
+    FigureSeries b = series("breakaway Fs +- std", {0.0}, {Fs->value}, SeriesStyle::errorbars, "#0072b2");
+    b.y_error = {std::isfinite(Fs->std) ? Fs->std : 0.0};
+    b.point_size = 1.4;
+    p.series.push_back(b);
+  }
+  if (auto law = law_curve(r, max_abs(*v), "identified law (" + (r.law ? r.law->name : r.model) + ")")) {
+    // Drawn for sliding only: a static law's value at rest is its breakaway level, marked above.
+    p.series.push_back(*law);
+  }
+  f.panels.push_back(p);
+  return f;
+}
+
+// LuGre: the identified law's steady state (the force while sliding at constant velocity) over
+// the velocities the record reached (from the simulated position, which is smooth).
+Figure lugre_map(const Result& r) {
+  const Axis axis = result_axis(r);
+  Figure f;
+  f.title = title_for(r, "Friction map: steady-state friction of the identified LuGre law");
+  f.panel_height = 520;
+  const auto *t = find(r, "time"), *x = find(r, "position_sim");
+  double vmax = 0;
+  if (t && x && t->size() >= 2 && x->size() == t->size())
+    for (std::size_t i = 1; i < t->size(); ++i)
+      if ((*t)[i] > (*t)[i - 1]) vmax = std::max(vmax, std::abs(((*x)[i] - (*x)[i - 1]) / ((*t)[i] - (*t)[i - 1])));
+  // Show the Stribeck region even when the record stayed slow: at least 5 vs.
+  const double vs = parameter(r, "vs");
+  if (std::isfinite(vs)) vmax = std::max(vmax, 5 * vs);
+  auto law = law_curve(r, vmax, "steady state: Fc + (Fs - Fc) exp(-|v/vs|^delta) + sigma2 v");
+  if (!law) return f;
+  FigurePanel p = map_panel(axis);
+  p.series.push_back(*law);
+  if (std::isfinite(vs)) {
+    const FrictionLaw lg = FrictionLaw::from_spec(*r.law);
+    p.series.push_back(series("+-vs", {-vs, vs}, {lg.sliding(-vs), lg.sliding(vs)}, SeriesStyle::points, "#009e73"));
+    p.series.back().point_size = 1.2;
+  }
+  f.panels.push_back(p);
+  return f;
+}
+
+// The cross-test: the identified model predicting the drive force of a second record.
+Figure cross_test_figure(const Result& r) {
+  const Axis axis = result_axis(r);
+  Figure f;
+  if (!r.validation) return f;
+  const ValidationFigures& val = *r.validation;
+  char err[64];
+  std::snprintf(err, sizeof err, " (relative error %.3g %%)", val.relative_error_percent);
+  f.title = "Cross-test: measured and predicted " + force_name(axis) + " - " + file_name(val.file) + err;
+  const auto get = [&](const char* n) -> const std::vector<double>* {
+    const auto it = val.series.find(n);
+    return it == val.series.end() || it->second.empty() ? nullptr : &it->second;
+  };
+  const auto *t = get("time"), *y = get("force"), *m = get("force_model");
+  if (!t || !y || !m) return f;
+  FigurePanel p = time_panel(label("drive " + force_name(axis), Quantity::force, axis));
+  p.series.push_back(series("measured", *t, *y, SeriesStyle::lines, "#0072b2"));
+  p.series.push_back(series("predicted by the identified model", *t, *m, SeriesStyle::lines, "#d55e00"));
+  p.series.back().line_width = 1.0;  // thinner, so that the measurement shows where they differ
+  f.panels.push_back(p);
+  std::vector<double> e(std::min(y->size(), m->size()));
+  for (std::size_t i = 0; i < e.size(); ++i) e[i] = (*y)[i] - (*m)[i];
+  FigurePanel q = time_panel(label("residual", Quantity::force, axis));
+  q.series.push_back(series("measured - predicted", *t, e, SeriesStyle::lines, "#555555"));
+  f.panels.push_back(q);
+  return f;
+}
+
+bool has_data(const Figure& f) {
+  for (const auto& p : f.panels)
+    for (const auto& s : p.series)
+      if (!s.x.empty()) return true;
+  return false;
+}
+
 }  // namespace
 
 Axis result_axis(const Result& r) {
@@ -262,11 +462,46 @@ std::optional<Figure> result_figure(const Result& r) {
   else if (r.method == "validate") f = compare_figure(r, "Validation: measured and simulated");
   else if (r.method == "lugre") f = compare_figure(r, "LuGre identification: measured and simulated");
   else f = compare_figure(r, r.method);
-  bool any = false;
-  for (const auto& p : f.panels)
-    for (const auto& s : p.series) any = any || !s.x.empty();
-  if (!any) return std::nullopt;
+  if (!has_data(f)) return std::nullopt;
   return f;
+}
+
+std::optional<Figure> friction_map_figure(const Result& r) {
+  Figure f;
+  if (r.method == "idim") f = idim_map(r);
+  else if (r.method == "sweep") f = sweep_figure(r);
+  else if (r.method == "breakaway") f = breakaway_map(r);
+  else if (r.method == "lugre") f = lugre_map(r);
+  if (!has_data(f)) return std::nullopt;
+  return f;
+}
+
+std::vector<ReportFigure> report_extra_figures(const Result& r) {
+  std::vector<ReportFigure> out;
+  if (!r.ok()) return out;
+  // sweep's fit figure is its friction map already.
+  if (r.method != "sweep")
+    if (auto map = friction_map_figure(r)) {
+      std::string caption;
+      if (r.method == "idim")
+        caption = "Friction against velocity: each fitted sample's drive force less the identified inertia and "
+                  "offset terms (grey), their mean and standard deviation in velocity bins, and the identified "
+                  "friction law.";
+      else if (r.method == "breakaway")
+        caption = "Applied force against velocity over the experiment, the breakaway force at rest with its "
+                  "standard deviation, and the identified static law while sliding.";
+      else
+        caption = "Steady-state friction of the identified LuGre law (the force while sliding at constant "
+                  "velocity) over the velocities of the record.";
+      out.push_back({"friction-map", caption, *map});
+    }
+  const Figure cross = cross_test_figure(r);
+  if (has_data(cross))
+    out.push_back({"cross-test", "Cross-test: the drive force measured on the second record and the force the model "
+                                 "identified on the first predicts from its position (top), and their difference "
+                                 "(bottom), after the same filtering and decimation.",
+                   cross});
+  return out;
 }
 
 Figure trajectory_figure(const Trajectory& tr, Axis axis, const std::string& title) {

@@ -12,6 +12,7 @@
 #include "frictionlab/analysis/stick_slip.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/io/figure.hpp"
+#include "frictionlab/io/report.hpp"
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/simulate/trajectory.hpp"
 
@@ -26,6 +27,18 @@ Axis result_axis(const Result& r);
 /// and the fitted envelope), validate (measured and simulated position, velocity, force),
 /// lugre (measured and simulated position, force). Empty when the result has no signals for it.
 std::optional<Figure> result_figure(const Result& r);
+
+/// The friction-velocity map of a result: idim (each fitted sample's force less the inertia and
+/// offset terms, their means and stds in velocity bins, the identified law), sweep (its fit
+/// figure), breakaway (applied force against velocity, Fs at rest with its std, the static law),
+/// lugre (the identified law's steady state). Empty for other methods or without the signals.
+std::optional<Figure> friction_map_figure(const Result& r);
+
+/// The report's figures after the fit figure: "friction-map" (friction_map_figure, except for
+/// sweep, whose fit figure is its map) and, when the result carries a cross-test's signals
+/// (identify idim --validate), "cross-test" (measured and predicted force on the second record,
+/// and their difference). Empty when the result is not ok.
+std::vector<ReportFigure> report_extra_figures(const Result& r);
 
 /// A simulation's time series: position, velocity, friction and applied force (and motor
 /// current when there is one). `title` names the scenario.

@@ -1,9 +1,11 @@
 // frictionlab: model, simulate and identify friction. See `frictionlab --help`.
 #include <iostream>
+#include <new>
 #include <stdexcept>
 #include <vector>
 
 #include "commands.hpp"
+#include "output.hpp"
 #include "frictionlab/version.hpp"
 
 int main(int argc, char** argv) {
@@ -26,26 +28,31 @@ int main(int argc, char** argv) {
   add(frictionlab::cli::register_validate);
   add(frictionlab::cli::register_analyze);
 
+  // Every failure goes through fail() (app/output.hpp): one line on stderr, and the error JSON
+  // when the chosen subcommand was asked for --json.
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;  // usage errors are bad input
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    return frictionlab::cli::fail(std::string(e.what()) + " (run with --help for the options)", 2);
   }
   try {
     for (auto& [sub, handler] : handlers)
       if (sub->parsed()) return handler();
   } catch (const std::invalid_argument& e) {
-    std::cerr << "frictionlab: error: " << e.what() << "\n";
-    return 2;
+    return frictionlab::cli::fail(e.what(), 2);
+  } catch (const std::length_error&) {
+    return frictionlab::cli::fail("out of memory: the data or the result is larger than a container can hold", 1);
+  } catch (const std::bad_alloc&) {
+    // Sizes the readers can foresee (a scenario's output rows) are refused before allocating;
+    // this is what is left: a data set or result larger than the memory there is.
+    return frictionlab::cli::fail("out of memory: the data or the result is larger than the memory available", 1);
   } catch (const std::runtime_error& e) {
     // A failure outside the user's input: a simulation that did not converge, a missing
     // program (gnuplot, chromium), an I/O error. The message says which and what to do.
-    std::cerr << "frictionlab: error: " << e.what() << "\n";
-    return 1;
+    return frictionlab::cli::fail(e.what(), 1);
   } catch (const std::exception& e) {
-    std::cerr << "frictionlab: internal error: " << e.what() << "\n";
-    return 1;
+    return frictionlab::cli::fail(e.what(), 1, true);
   }
   return 1;
 }

@@ -19,6 +19,8 @@
 #include "frictionlab/io/report.hpp"
 #include "frictionlab/version.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace frictionlab::cli {
 
 // ---------------------------------------------------------------------------------------------
@@ -208,7 +210,8 @@ void progress_stop() { Progress::instance().stop(); }
 
 void add_output_options(CLI::App* cmd, OutputOptions& o) {
   o.command = cmd;
-  cmd->add_option("--json", o.json, "Write the result as JSON to FILE, or to stdout with '-'")->group("Output");
+  CLI::Option* json =
+      cmd->add_option("--json", o.json, "Write the result as JSON to FILE, or to stdout with '-'")->group("Output");
   cmd->add_option("--plot", o.plot,
                   "Draw the result's figure to FILE (.svg, .png or .pdf, by gnuplot); FILE.dat (data) and FILE.gp "
                   "(script) are written next to it for restyling")
@@ -218,6 +221,8 @@ void add_output_options(CLI::App* cmd, OutputOptions& o) {
                   "diagnostics, warnings, figures)")
       ->group("Output");
   cmd->add_flag("--overwrite", o.overwrite, "Replace existing output files and report files")->group("Output");
+  const std::string name = cmd->get_name();
+  register_json_output(cmd, json, [name] { return name; });
 }
 
 void add_plot_option(CLI::App* cmd, std::string& plot) {
@@ -226,14 +231,93 @@ void add_plot_option(CLI::App* cmd, std::string& plot) {
                   "written next to it for restyling");
 }
 
+// ---------------------------------------------------------------------------------------------
+// Errors: one line on stderr, and the error JSON where --json asks for it.
 namespace {
-// Refuses early (before any work) an output file that exists without --overwrite.
-void check_output_path(const std::string& path, bool overwrite, const std::string& option) {
-  if (path.empty() || path == "-" || overwrite) return;
-  if (std::filesystem::exists(path))
-    throw std::invalid_argument(path + " exists (" + option + "); pass --overwrite to replace it");
+
+struct JsonOutput {
+  CLI::App* command;
+  CLI::Option* json;
+  std::function<std::string()> method;
+};
+
+std::vector<JsonOutput>& json_outputs() {
+  static std::vector<JsonOutput> outputs;
+  return outputs;
 }
+
+// The registered subcommand that was chosen (parsed() is set as soon as CLI11 enters it, so this
+// also works after a parse error).
+const JsonOutput* chosen_output() {
+  for (const auto& o : json_outputs())
+    if (o.command->parsed()) return &o;
+  return nullptr;
+}
+
+// Messages are one line: a stray newline from a library message must not split it.
+std::string one_line(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
 }  // namespace
+
+void register_json_output(CLI::App* cmd, CLI::Option* json, std::function<std::string()> method) {
+  json_outputs().push_back({cmd, json, std::move(method)});
+}
+
+void print_error(const std::string& message, bool internal) {
+  progress_stop();
+  std::cerr << "frictionlab: " << (internal ? "internal error: " : "error: ") << one_line(message) << std::endl;
+}
+
+int fail(const std::string& message, int status, bool internal) {
+  try {
+    print_error(message, internal);
+    const JsonOutput* out = chosen_output();
+    if (!out || !out->json || out->json->count() == 0 || out->json->results().empty()) return status;
+    const std::string path = out->json->results().back();
+    if (path.empty()) return status;
+    const nlohmann::json j = {{"schema", 1},
+                              {"status", "error"},
+                              {"message", one_line(message)},
+                              {"method", out->method ? out->method() : std::string()}};
+    if (path == "-") std::cout << j.dump() << std::endl;
+  } catch (...) {
+    // Reporting an error must not raise another one; the line on stderr is out already.
+  }
+  return status;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Output paths, checked before any work.
+
+void check_output_file(const std::string& path, bool overwrite, const std::string& option) {
+  if (path.empty() || path == "-") return;
+  try {
+    check_output_path(path, overwrite);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(option + " " + e.what());
+  }
+}
+
+void check_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& paths) {
+  namespace fs = std::filesystem;
+  std::vector<std::pair<std::string, fs::path>> seen;
+  for (const auto& [option, path] : paths) {
+    if (path.empty() || path == "-") continue;
+    std::error_code ec;
+    fs::path p = fs::weakly_canonical(path, ec);
+    if (ec) p = fs::absolute(path, ec).lexically_normal();
+    for (const auto& [other, q] : seen)
+      if (p == q)
+        throw std::invalid_argument(option + " " + path + " is also the " + other +
+                                    " output; give each output its own file");
+    seen.emplace_back(option, p);
+  }
+}
 
 void check_plot(const std::string& plot, bool overwrite) {
   if (plot.empty()) return;
@@ -242,11 +326,25 @@ void check_plot(const std::string& plot, bool overwrite) {
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string("--plot ") + e.what());
   }
+  // The figure, its data and its script are renamed into place: what is there must be a
+  // regular file (never a directory, device or FIFO, which a rename would replace).
+  const FigureFiles files = figure_files(plot);
+  for (const auto& f : {files.figure, files.data, files.script}) {
+    std::error_code ec;
+    const auto st = std::filesystem::status(f, ec);
+    if (st.type() == std::filesystem::file_type::not_found || st.type() == std::filesystem::file_type::none) continue;
+    if (std::filesystem::is_directory(st))
+      throw std::invalid_argument("--plot " + f + " is a directory; expected a file name");
+    if (!std::filesystem::is_regular_file(st))
+      throw std::invalid_argument("--plot " + f +
+                                  " is not a regular file; a figure is written with its .dat and .gp files by "
+                                  "renaming them into place, so give the name of a regular file");
+  }
   find_gnuplot();
 }
 
 void check_outputs(const OutputOptions& o) {
-  check_output_path(o.json, o.overwrite, "--json");
+  check_output_file(o.json, o.overwrite, "--json");
   check_plot(o.plot, o.overwrite);
   if (!o.report.empty()) {
     try {
@@ -256,6 +354,12 @@ void check_outputs(const OutputOptions& o) {
     }
     find_gnuplot();
   }
+  std::vector<std::pair<std::string, std::string>> paths{{"--json", o.json}, {"--report", o.report}};
+  if (!o.plot.empty()) {
+    const FigureFiles files = figure_files(o.plot);
+    paths.insert(paths.end(), {{"--plot", files.figure}, {"--plot data", files.data}, {"--plot script", files.script}});
+  }
+  check_distinct_outputs(paths);
   progress_start(o.command ? command_path(o.command) : "frictionlab");
 }
 
@@ -274,7 +378,7 @@ std::string result_text(const Result& r) {
   for (const auto& p : r.parameters) {
     s << "  " << std::left << std::setw(static_cast<int>(w)) << p.name << " = " << std::right << std::setw(12)
       << std::setprecision(6) << p.value << "  +- " << std::left << std::setw(10) << std::setprecision(3) << p.std << " "
-      << p.unit << "\n";
+      << p.unit << (p.flag.empty() ? "" : "  (" + p.flag + ")") << "\n";
   }
   // The fitted signal: force for most methods, the energy lost per half cycle for decay, the
   // position for lugre's output error.
@@ -293,41 +397,48 @@ std::string result_text(const Result& r) {
     for (const auto& [k, v] : group) s << " " << k << " = " << std::setprecision(6) << v;
     s << "\n";
   }
+  for (const auto& [name, word] : r.diagnostics.texts) s << name << ": " << word << "\n";
   for (const auto& w2 : r.diagnostics.warnings) s << "warning: " << w2 << "\n";
   return s.str();
 }
 
 int emit(const Result& r, const OutputOptions& o, const std::string& text_override) {
   progress_stage("writing results");
-  // Text goes to stderr when stdout carries the JSON, and always when the data gave no answer.
-  std::ostream& text = (o.json == "-" || !r.ok()) ? std::cerr : std::cout;
-  text << (text_override.empty() ? result_text(r) : text_override);
-  if (o.json == "-") {
-    std::cout << to_json(r, -1) << "\n";
-  } else if (!o.json.empty()) {
-    AtomicWriteOptions w;
-    w.overwrite = o.overwrite;
-    write_file_atomic(o.json, to_json(r) + "\n", w);
-  }
-  const std::optional<Figure> figure = r.ok() ? result_figure(r) : std::nullopt;
   std::ostream& note = o.json == "-" ? std::cerr : std::cout;
-  if (!o.plot.empty()) {
-    if (!r.ok()) {
-      std::cerr << "no figure drawn: the data gave no answer\n";
-    } else if (!figure) {
-      throw std::runtime_error("--plot: the " + r.method + " result carries no signals to draw");
-    } else {
+  if (!r.ok()) {
+    // The data gave no answer: one error line (naming the data file), then the JSON and the
+    // report that say why. No figure.
+    const bool named = r.data_file.empty() || r.message.find(r.data_file) != std::string::npos;
+    print_error(named ? r.message : r.data_file + ": " + r.message);
+    if (!o.report.empty()) write_report(r, {}, report_info(r, o), o.report, o.overwrite);
+  } else {
+    // Text goes to stderr when stdout carries the JSON.
+    (o.json == "-" ? std::cerr : std::cout) << (text_override.empty() ? result_text(r) : text_override);
+    // The figure and the report first: they run gnuplot and may fail; the JSON, written last,
+    // then never says ok for a run that failed (the error JSON replaces it, see fail()).
+    const std::optional<Figure> figure = result_figure(r);
+    if (!o.plot.empty()) {
+      if (!figure) throw std::runtime_error("--plot: the " + r.method + " result carries no signals to draw");
       progress_stage("drawing " + o.plot);
       const FigureFiles files = write_figure(*figure, o.plot, o.overwrite);
       note << "figure " << files.figure << " (data " << files.data << ", gnuplot script " << files.script << ")\n";
     }
+    if (!o.report.empty()) {
+      progress_stage("writing report " + o.report);
+      std::vector<ReportFigure> figs;
+      if (figure) figs.push_back({"fit", caption(r), *figure});
+      for (auto& f : report_extra_figures(r)) figs.push_back(std::move(f));
+      const std::string page = write_report(r, figs, report_info(r, o), o.report, o.overwrite);
+      note << "report " << page << "\n";
+    }
   }
-  if (!o.report.empty()) {
-    progress_stage("writing report " + o.report);
-    std::vector<ReportFigure> figs;
-    if (figure) figs.push_back({"fit", caption(r), *figure});
-    const std::string page = write_report(r, figs, report_info(r, o), o.report, o.overwrite);
-    note << "report " << page << "\n";
+  if (o.json == "-") {
+    std::cout << to_json(r, -1) << std::endl;
+  } else if (!o.json.empty()) {
+    std::cout.flush();  // the table first when --json is this process's stdout (/dev/stdout)
+    AtomicWriteOptions w;
+    w.overwrite = o.overwrite;
+    write_file_atomic(o.json, to_json(r) + "\n", w);
   }
   progress_stop();
   return r.ok() ? 0 : 2;

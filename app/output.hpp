@@ -6,7 +6,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "frictionlab/identify/result.hpp"
 
@@ -20,29 +23,63 @@ struct OutputOptions {
   CLI::App* command = nullptr;  ///< the subcommand (set by add_output_options), for the report's options
 };
 
-/// Adds --json, --plot, --report and --overwrite to `cmd` (identify methods and validate).
+/// Adds --json, --plot, --report and --overwrite to `cmd` (identify methods and validate), and
+/// registers --json with register_json_output (method: the subcommand's name).
 void add_output_options(CLI::App* cmd, OutputOptions& o);
+
+/// Registers `cmd`'s --json option (owned by the subcommand) so that a failed run still prints
+/// its error JSON: `method` gives the "method" the JSON names (called when the error is reported;
+/// it may read parsed positionals). This registry lets fail() build the error JSON in one place.
+void register_json_output(CLI::App* cmd, CLI::Option* json, std::function<std::string()> method);
+
+/// The one place a failed run is reported (main's catch blocks; emit prints the same line for a
+/// result whose data gave no answer): one line "frictionlab: error: MESSAGE" (or "internal
+/// error" when `internal`) on stderr; and when the subcommand that ran was given `--json -`, the
+/// JSON {"schema": 1, "status": "error", "message": MESSAGE, "method": ...} as one line on stdout.
+/// A --json FILE is not written: a run that failed leaves no file behind. Never throws. Returns
+/// `status`.
+int fail(const std::string& message, int status, bool internal = false);
+
+/// The error line alone: "frictionlab: error: MESSAGE" on stderr (the progress line cleared).
+void print_error(const std::string& message, bool internal = false);
+
+/// Refuses an output file before any work (check_output_path of io/atomic_write.hpp), the
+/// message naming `option`: a directory, an existing regular file without --overwrite, a
+/// missing directory, a block device or socket. "-" (stdout) and "" (none) pass. Devices and
+/// FIFOs pass: they are written through, never replaced.
+/// \throws std::invalid_argument "OPTION PATH ...".
+void check_output_file(const std::string& path, bool overwrite, const std::string& option);
+
+/// Refuses two outputs of one run that are the same file (--json and --plot, or a figure's
+/// .dat/.gp): the second would fail after the first was written. `paths` pairs option and path.
+/// \throws std::invalid_argument naming both options.
+void check_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& paths);
 
 /// Adds --plot FILE to `cmd` (simulate, analyze: they have their own other output options).
 void add_plot_option(CLI::App* cmd, std::string& plot);
 
 /// Refuses, before any work, outputs that cannot be written: an existing --json file, a --plot
 /// path with an unsupported extension (svg, png, pdf) or an existing figure, a --report
-/// directory that exists and is not empty, all without --overwrite. Also checks that gnuplot is
-/// there when a figure is asked for, and starts the progress line.
+/// directory that exists and is not empty, all without --overwrite; a --json or --plot path that
+/// is a directory (with or without --overwrite); two outputs that are the same file. Also checks
+/// that gnuplot is there when a figure is asked for, and starts the progress line.
 /// \throws std::invalid_argument (exit 2) naming the option and path; std::runtime_error when
 ///         gnuplot is missing ("gnuplot not found: install Debian package gnuplot-nox").
 void check_outputs(const OutputOptions& o);
 
-/// The --plot part of check_outputs, for commands with their own output options.
+/// The --plot part of check_outputs, for commands with their own output options: also refuses
+/// a figure, .dat or .gp path that exists and is not a regular file (a figure is three files
+/// renamed into place: a device or directory there is never replaced).
 void check_plot(const std::string& plot, bool overwrite);
 
 /// The result as an aligned text table with units, fit figures, validation and warnings.
 std::string result_text(const Result& r);
 
-/// Prints the text, writes the JSON, the figure and the report, and returns the exit status: 0
-/// when the result is ok, 2 when its status is error (the data could not give an answer; the
-/// JSON and the report still say why; no figure is drawn).
+/// Prints the text, writes the figure, the report and the JSON (in that order: the JSON, the
+/// simplest to write, last, so that a failed figure leaves no JSON saying ok), and returns the
+/// exit status: 0 when the result is ok, 2 when its status is error (the data could not give an
+/// answer: one error line on stderr as fail() prints it; the JSON and the report still say why;
+/// no figure is drawn).
 int emit(const Result& r, const OutputOptions& o, const std::string& text_override = "");
 
 /// A progress line on stderr for long runs, only when stderr is a terminal (and

@@ -2,9 +2,17 @@
 from . import _core
 
 
-def _columns(t, names):
+def _columns(function, t, names, second):
     # A Trajectory or a dict of columns in place of the arrays.
-    return [t[n] for n in names]
+    if t is None or isinstance(t, (str, bytes)) or not (hasattr(t, "keys") and hasattr(t, "__getitem__")):
+        if t is not None and not isinstance(t, (str, bytes)):
+            raise _core.ArgumentTypeError(
+                f"{function}: argument {second} is None; expected a 1-D array of numbers (or pass a Trajectory / "
+                f"dict with columns {', '.join(names)} as t)")
+        raise _core.ArgumentTypeError(
+            f"{function}: argument t: expected a 1-D array of times, or a Trajectory / dict with columns "
+            f"{', '.join(names)}; got {type(t).__name__}")
+    return [t[n] if n in t else None for n in names] if names[-1] == "friction" else [t[n] for n in names]
 
 
 def decay_envelope(t, x=None, *, none_tolerance=0.02, mixed_gain=0.5, fit_tolerance=0.01,
@@ -20,7 +28,7 @@ def decay_envelope(t, x=None, *, none_tolerance=0.02, mixed_gain=0.5, fit_tolera
     Raises ValueError when fewer than 4 extremes are found.
     """
     if x is None:
-        t, x = _columns(t, ("time", "position"))
+        t, x = _columns("decay_envelope", t, ("time", "position"), "x")
     o = _core.EnvelopeOptions()
     o.none_tolerance = none_tolerance
     o.mixed_gain = mixed_gain
@@ -37,7 +45,7 @@ def detect_stick_slip(t, v=None, force=None, *, velocity_threshold=0.0, min_slip
     arrays in s, period s, peak_slip_velocity, breakaway / re-stick forces, mean_force_drop).
     """
     if v is None:
-        t, v, force = _columns(t, ("time", "velocity", "friction"))
+        t, v, force = _columns("detect_stick_slip", t, ("time", "velocity", "friction"), "v")
     o = _core.StickSlipOptions()
     o.velocity_threshold = velocity_threshold
     o.min_slip_duration = min_slip_duration

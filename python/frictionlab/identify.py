@@ -26,8 +26,16 @@ def _source(source):
     return getattr(source, "file", ""), getattr(source, "sha256", "")
 
 
-def _nan(x):
-    return math.nan if x is None else float(x)
+def _nan(function, name, x):
+    """An optional number option: None gives NaN (the library's "not given"); anything else must be
+    a finite real number, or ArgumentTypeError / ValueError naming the argument."""
+    if x is None:
+        return math.nan
+    if isinstance(x, (bool, str, bytes)) or not isinstance(x, (int, float, np.integer, np.floating)):
+        raise _core.ArgumentTypeError(f"{function}: argument {name}: expected a number or None, got {type(x).__name__}")
+    if not math.isfinite(x):
+        raise ValueError(f"{function}: argument {name} is {x}; expected a finite number (or None)")
+    return float(x)
 
 
 def _idim_options(terms=_IDIM_DEFAULT_TERMS, cutoff_hz=100.0, filter_order=4, padlen=12, input_delay=0, skip=49,
@@ -162,8 +170,8 @@ def identify_breakaway(time, force, velocity, *, inertia=None, velocity_threshol
     ("rotary" default). ``diagnostics.groups['readoff']`` holds the lecture's read-offs.
     """
     o = _core.BreakawayOptions()
-    o.inertia = _nan(inertia)
-    o.velocity_threshold = _nan(velocity_threshold)
+    o.inertia = _nan("identify_breakaway", "inertia", inertia)
+    o.velocity_threshold = _nan("identify_breakaway", "velocity_threshold", velocity_threshold)
     o.edge_samples = edge_samples
     o.axis = axis
     r = _core._identify_breakaway(time, force, velocity, o)
@@ -235,11 +243,11 @@ def identify_decay(time, position, *, stiffness=None, inertia=None, natural_freq
     the motion stopped; default 1e-6 max |v|), ``axis`` ("linear" default).
     """
     o = _core.DecayOptions()
-    o.stiffness = _nan(stiffness)
-    o.inertia = _nan(inertia)
-    o.natural_frequency = _nan(natural_frequency)
+    o.stiffness = _nan("identify_decay", "stiffness", stiffness)
+    o.inertia = _nan("identify_decay", "inertia", inertia)
+    o.natural_frequency = _nan("identify_decay", "natural_frequency", natural_frequency)
     o.pendulum = bool(pendulum)
-    o.stop_threshold = _nan(stop_threshold)
+    o.stop_threshold = _nan("identify_decay", "stop_threshold", stop_threshold)
     o.axis = axis
     r = _core._identify_decay(time, position, o)
     r._stamp(*_source(source))

@@ -109,11 +109,16 @@ void init_analysis(py::module_& m) {
       });
 
   m.def("_decay_envelope", [](py::object t, py::object x, const EnvelopeOptions& o) {
-    const std::vector<double> tv = std_vector_arg(t, "t"), xv = std_vector_arg(x, "x");
+    // Unequal lengths: the library's own message ("decay envelope: time has ... samples").
+    const std::vector<double> tv = std_vector_arg(t, "decay_envelope", "t"), xv = std_vector_arg(x, "decay_envelope", "x");
     return decay_envelope(tv, xv, o);
   });
   m.def("_detect_stick_slip", [](py::object t, py::object v, py::object force, const StickSlipOptions& o) {
-    const std::vector<double> tv = std_vector_arg(t, "t"), vv = std_vector_arg(v, "v"), fv = std_vector_arg(force, "force");
+    ArraySpec optional;
+    optional.optional = true;
+    const std::vector<double> tv = std_vector_arg(t, "detect_stick_slip", "t"), vv = std_vector_arg(v, "detect_stick_slip", "v"),
+                              fv = std_vector_arg(force, "detect_stick_slip", "force", optional);
+    same_length("detect_stick_slip", {{"t", tv.size()}, {"v", vv.size()}, {"force", fv.size()}});
     return detect_stick_slip(tv, vv, fv, o);
   });
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 #include "common.hpp"
 #include "frictionlab/identify/breakaway.hpp"
@@ -80,16 +81,30 @@ std::string result_repr(const Result& r) {
 
 py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
-IdimData idim_data(const py::object& time, const py::object& force, const py::object& position,
+IdimData idim_data(const char* function, const py::object& time, const py::object& force, const py::object& position,
                    const py::object& velocity, const std::string& file, const std::string& sha256) {
   IdimData d;
-  d.time = vector_arg(time, "time");
-  d.force = vector_arg(force, "force");
-  d.position = vector_arg(position, "position");
-  d.velocity = vector_arg(velocity, "velocity");
+  d.time = vector_arg(time, function, "time");
+  d.force = vector_arg(force, function, "force");
+  ArraySpec optional;
+  optional.optional = true;
+  d.position = vector_arg(position, function, "position", optional);
+  d.velocity = vector_arg(velocity, function, "velocity", optional);
+  same_length(function, {{"time", d.time.size()}, {"force", d.force.size()}, {"position", d.position.size()},
+                         {"velocity", d.velocity.size()}});
   d.file = file;
   d.sha256 = sha256;
   return d;
+}
+
+// time, force and velocity of the breakaway and sweep methods, checked, of equal lengths.
+std::tuple<Eigen::VectorXd, Eigen::VectorXd, Eigen::VectorXd> three_arrays(const char* function, const py::object& time,
+                                                                          const py::object& force,
+                                                                          const py::object& velocity) {
+  Eigen::VectorXd t = vector_arg(time, function, "time"), f = vector_arg(force, function, "force"),
+                  v = vector_arg(velocity, function, "velocity");
+  same_length(function, {{"time", t.size()}, {"force", f.size()}, {"velocity", v.size()}});
+  return {std::move(t), std::move(f), std::move(v)};
 }
 
 template <class Options>
@@ -219,7 +234,7 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
       .def("save", [](const Result& r, const py::object& path, bool overwrite) {
         AtomicWriteOptions o;
         o.overwrite = overwrite;
-        write_file_atomic(path_arg(path), to_json(r) + "\n", o);
+        write_file_atomic(path_arg(path, "Result.save"), to_json(r) + "\n", o);
       }, py::arg("path"), py::arg("overwrite") = false,
          "Writes the MODEL.json atomically. ValueError when the file exists and overwrite is False.")
       .def("_stamp", [](Result& r, const std::string& file, const std::string& sha256) {
@@ -242,6 +257,12 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
       .def_readwrite("skip", &IdimOptions::skip, "Samples dropped at the start (49).")
       .def_readwrite("skip_end", &IdimOptions::skip_end, "Samples dropped at the end (0).")
       .def_readwrite("decimation", &IdimOptions::decimation, "Decimation factor (10; 1 = none).")
+      .def_readwrite("auto_cutoff", &IdimOptions::auto_cutoff,
+                     "Take cutoff_hz from the sample rate fs: min(100 Hz, fs/10) (False).")
+      .def_readwrite("auto_decimation", &IdimOptions::auto_decimation,
+                     "Take decimation from fs: floor(fs/100 Hz), 1 to 10 (False).")
+      .def_readwrite("auto_skip", &IdimOptions::auto_skip,
+                     "Take skip from fs: five periods of the cut-off less one sample (False).")
       .def_readwrite("stribeck_vs", &IdimOptions::stribeck_vs, "Stribeck velocity of the stribeck term, m/s or rad/s (0.01).")
       .def_readwrite("search_stribeck_vs", &IdimOptions::search_stribeck_vs, "Search the Stribeck velocity (False).")
       .def_readwrite("stribeck_delta", &IdimOptions::stribeck_delta, "Stribeck exponent (2).")
@@ -274,7 +295,12 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
       .def_readwrite("relative_tolerance", &SweepOptions::relative_tolerance, "Relative steady band (0.01).")
       .def_readwrite("min_duration", &SweepOptions::min_duration, "Shortest steady segment, s (0.5).")
       .def_readwrite("settle_fraction", &SweepOptions::settle_fraction, "Fraction dropped at each segment's start (0.2).")
-      .def_readwrite("min_speed", &SweepOptions::min_speed, "Slower segments are standstill, m/s or rad/s (-1: 1e-3 max |v|).")
+      .def_readwrite("min_speed", &SweepOptions::min_speed, "Slower segments are standstill, m/s or rad/s (-1: 1e-6 max |v|).")
+      .def_readwrite("noise_band", &SweepOptions::noise_band, "Steady band half-width in smoothed-noise std (5).")
+      .def_readwrite("smoothing_fraction", &SweepOptions::smoothing_fraction,
+                     "Moving-average window as a fraction of min_duration (0.1).")
+      .def_readwrite("reference", &SweepOptions::reference,
+                     "Commanded velocity (length N) to find the steady segments on; empty: the measured velocity.")
       .def_readwrite("min_segments", &SweepOptions::min_segments, "Fewer segments is an error (-1: parameters + 1).")
       .def_property("windows", [](const SweepOptions& o) {
         py::list l;
@@ -298,19 +324,19 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
   // ---- methods ----------------------------------------------------------------------------
   m.def("_identify_idim", [](py::object time, py::object force, py::object position, py::object velocity,
                              const IdimOptions& o, const std::string& file, const std::string& sha256) {
-    const IdimData d = idim_data(time, force, position, velocity, file, sha256);
+    const IdimData d = idim_data("identify_idim", time, force, position, velocity, file, sha256);
     py::gil_scoped_release release;
     return identify_idim(d, o);
   });
   m.def("_cross_test", [](const Result& r, py::object time, py::object force, py::object position, py::object velocity,
                           const IdimOptions& o, const std::string& file, const std::string& sha256) {
-    const IdimData d = idim_data(time, force, position, velocity, file, sha256);
+    const IdimData d = idim_data("cross_test", time, force, position, velocity, file, sha256);
     py::gil_scoped_release release;
     return cross_test(r, d, o);
   });
   m.def("_idim_regression", [](py::object time, py::object force, py::object position, py::object velocity,
                                const IdimOptions& o) {
-    const IdimRegression reg = idim_regression(idim_data(time, force, position, velocity, "", ""), o);
+    const IdimRegression reg = idim_regression(idim_data("idim_regression", time, force, position, velocity, "", ""), o);
     py::dict d;
     d["X"] = reg.X;
     d["y"] = reg.y;
@@ -322,17 +348,20 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
     return d;
   });
   m.def("_identify_breakaway", [](py::object time, py::object force, py::object velocity, const BreakawayOptions& o) {
-    const BreakawayData d{vector_arg(time, "time"), vector_arg(force, "force"), vector_arg(velocity, "velocity")};
+    const auto [t, f, v] = three_arrays("identify_breakaway", time, force, velocity);
+    const BreakawayData d{t, f, v};
     py::gil_scoped_release release;
     return identify_breakaway(d, o);
   });
   m.def("_identify_sweep", [](py::object time, py::object force, py::object velocity, const SweepOptions& o) {
-    const SweepData d{vector_arg(time, "time"), vector_arg(force, "force"), vector_arg(velocity, "velocity")};
+    const auto [t, f, v] = three_arrays("identify_sweep", time, force, velocity);
+    const SweepData d{t, f, v};
     py::gil_scoped_release release;
     return identify_sweep(d, o);
   });
   m.def("_sweep_points", [](py::object time, py::object force, py::object velocity, const SweepOptions& o) {
-    const SweepData d{vector_arg(time, "time"), vector_arg(force, "force"), vector_arg(velocity, "velocity")};
+    const auto [tt, ff, vv] = three_arrays("sweep_points", time, force, velocity);
+    const SweepData d{tt, ff, vv};
     const std::vector<SweepPoint> pts = sweep_points(d, o);
     std::vector<double> v, vs, f, fs, tb, te, n;
     for (const auto& p : pts) {
@@ -350,7 +379,8 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
     return out;
   });
   m.def("_identify_decay", [](py::object time, py::object position, const DecayOptions& o) {
-    const DecayData d{vector_arg(time, "time"), vector_arg(position, "position")};
+    const DecayData d{vector_arg(time, "identify_decay", "time"), vector_arg(position, "identify_decay", "position")};
+    same_length("identify_decay", {{"time", d.time.size()}, {"position", d.position.size()}});
     py::gil_scoped_release release;
     return identify_decay(d, o);
   });
@@ -367,7 +397,7 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
         const Axis a = parse_axis(axis);
         py::dict d;
         for (const auto& p : f.parameters)
-          d[py::str(p.name)] = ParameterEstimate{p.name, p.value, p.std, std::string(unit(p.quantity, a))};
+          d[py::str(p.name)] = ParameterEstimate{p.name, p.value, p.std, std::string(unit(p.quantity, a)), ""};
         return d;
       }, py::arg("axis") = "linear", "Fitted parameters by name: Parameter(name, value, std, unit) with units of the axis.")
       .def_property_readonly("values", [](const StaticFit& f) {
@@ -387,7 +417,7 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
       })
       .def("__repr__", [](const StaticFit& f) {
         std::vector<ParameterEstimate> ps;
-        for (const auto& p : f.parameters) ps.push_back({p.name, p.value, p.std, std::string(unit(p.quantity, Axis::linear))});
+        for (const auto& p : f.parameters) ps.push_back({p.name, p.value, p.std, std::string(unit(p.quantity, Axis::linear)), p.flag});
         std::string s = "<frictionlab.StaticFit law='" + f.law.name() + "' converged=" + (f.converged ? "True" : "False") + ">\n" +
                         parameter_table(ps) + "  relative error " + num(f.relative_error_percent, 4) + " %, rmse " +
                         num(f.rmse, 4) + ", " + std::to_string(f.samples) + " points\n";
@@ -395,7 +425,8 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
         return s;
       });
   m.def("_fit_static_law", [](py::object velocity, py::object force, const StaticFitOptions& o) {
-    const Eigen::VectorXd v = vector_arg(velocity, "velocity"), f = vector_arg(force, "force");
+    // Unequal lengths: the library's own message ("friction fit: velocity has ... points").
+    const Eigen::VectorXd v = vector_arg(velocity, "fit_static_law", "velocity"), f = vector_arg(force, "fit_static_law", "force");
     py::gil_scoped_release release;
     return fit_static_law(v, f, o);
   });

@@ -2,6 +2,7 @@
 #include <pybind11/stl.h>
 
 #include "common.hpp"
+#include "frictionlab/io/columns.hpp"
 #include "frictionlab/io/law_file.hpp"
 #include "frictionlab/io/load.hpp"
 #include "frictionlab/io/sha256.hpp"
@@ -9,29 +10,72 @@
 namespace frictionlab::python {
 
 void init_io(py::module_& m) {
-  m.def("_load_dataset", [](const py::object& path, const std::string& delimiter, bool drop_invalid, const std::string& comment) {
-        if (delimiter.size() != 1) throw std::invalid_argument("delimiter '" + delimiter + "': expected one character");
-        if (comment.size() > 1) throw std::invalid_argument("comment '" + comment + "': expected one character or ''");
-        CsvOptions o;
-        o.delimiter = delimiter[0];
-        o.drop_invalid = drop_invalid;
-        o.comment = comment.empty() ? '\0' : comment[0];
-        const Dataset d = load_dataset(path_arg(path), o);
-        py::list columns;  // (name, array) pairs in file order
-        for (const auto& name : d.column_names()) columns.append(py::make_tuple(name, to_array(d.column(name))));
-        py::dict scalars;
-        for (const auto& [k, v] : d.scalars) scalars[py::str(k)] = v;
-        std::vector<double> lines(d.lines.begin(), d.lines.end());
-        return py::make_tuple(columns, scalars, d.file, d.sha256, to_array(lines));
-      },
-      py::arg("path"), py::arg("delimiter") = ",", py::arg("drop_invalid") = false, py::arg("comment") = "#",
-      "Reads a CSV (header row) or MAT file: ([(name, column)], {scalar: value}, file, sha256, csv line numbers).");
+  m.def("_load_dataset",
+        [](const py::object& path, const std::string& delimiter, bool drop_invalid, const std::string& comment,
+           const std::vector<std::string>& names, bool resample, double dt, double max_gap, const std::string& time) {
+          if (delimiter.size() > 1) throw std::invalid_argument("delimiter '" + delimiter + "': expected one character, or None to detect it");
+          if (comment.size() > 1) throw std::invalid_argument("comment '" + comment + "': expected one character or ''");
+          CsvOptions o;
+          o.delimiter = delimiter.empty() ? '\0' : delimiter[0];
+          o.drop_invalid = drop_invalid;
+          o.comment = comment.empty() ? '\0' : comment[0];
+          o.header = CsvHeader::detect;
+          o.names = names;
+          o.names_option = "names";
+          Dataset d = load_dataset(path_arg(path, "load"), o);
+          if (!names.empty() && d.lines.empty()) {
+            throw std::invalid_argument(d.where() + "names: names the columns of a CSV file; a MAT file's variables have their own "
+                                        "names: " + d.describe_contents());
+          }
+          if (resample) {
+            // The time column: as given, else "time" when the file has one, else the first column.
+            std::string t = time;
+            if (t.empty()) t = d.has_column("time") || d.column_names().empty() ? "time" : d.column_names().front();
+            ResampleOptions r;
+            r.dt = dt;
+            r.max_gap = max_gap;
+            r.dt_name = "resample";
+            r.max_gap_name = "max_gap";
+            resample_dataset(d, t, r);
+          }
+          py::list columns;  // (name, array) pairs in file order
+          for (const auto& name : d.column_names()) columns.append(py::make_tuple(name, to_array(d.column(name))));
+          py::dict scalars;
+          for (const auto& [k, v] : d.scalars) scalars[py::str(k)] = v;
+          std::vector<double> lines(d.lines.begin(), d.lines.end());
+          py::dict info;
+          info["header_row"] = d.header_row;
+          info["warnings"] = d.warnings;
+          info["unusable"] = d.unusable;
+          info["contents"] = d.describe_contents();
+          if (d.resampling) {
+            const ResampleReport& s = *d.resampling;
+            py::dict r;
+            r["dt_min"] = s.dt_min;
+            r["dt_median"] = s.dt_median;
+            r["dt_max"] = s.dt_max;
+            r["dt"] = s.dt;
+            r["max_gap"] = s.max_gap;
+            r["samples_in"] = s.samples_in;
+            r["samples_out"] = s.samples_out;
+            r["merged"] = s.merged;
+            info["resampling"] = r;
+          } else {
+            info["resampling"] = py::none();
+          }
+          return py::make_tuple(columns, scalars, d.file, d.sha256, to_array(lines), info);
+        },
+        py::arg("path"), py::arg("delimiter") = "", py::arg("drop_invalid") = false, py::arg("comment") = "#",
+        py::arg("names") = std::vector<std::string>{}, py::arg("resample") = false, py::arg("dt") = 0.0,
+        py::arg("max_gap") = 0.0, py::arg("time") = "",
+        "Reads a CSV (header row or none) or MAT file, optionally resampled onto a uniform grid: ([(name, column)], "
+        "{scalar: value}, file, sha256, csv line numbers, {header_row, warnings, unusable, contents, resampling}).");
 
-  m.def("load_law", [](const py::object& p) { return load_law(path_arg(p)); }, py::arg("path"),
+  m.def("load_law", [](const py::object& p) { return load_law(path_arg(p, "load_law")); }, py::arg("path"),
         "Reads a friction law from a .yaml/.yml file ({law: NAME, params...}) or a .json file (the same, or the "
         "MODEL.json an identification writes). Raises ValueError naming the file and key on bad content.");
 
-  m.def("sha256_file", [](const py::object& p) { return sha256_file(path_arg(p)); }, py::arg("path"), "Lowercase hex SHA-256 of a file's bytes (as in results' data.sha256).");
+  m.def("sha256_file", [](const py::object& p) { return sha256_file(path_arg(p, "sha256_file")); }, py::arg("path"), "Lowercase hex SHA-256 of a file's bytes (as in results' data.sha256).");
 }
 
 }  // namespace frictionlab::python

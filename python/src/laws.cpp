@@ -1,6 +1,7 @@
 // Friction laws: construction from a dict, evaluation on numpy arrays, dynamic stepping.
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <optional>
 #include <span>
 #include <sstream>
@@ -19,24 +20,40 @@ FrictionLaw law_from_dict(const py::dict& d) {
   for (auto item : d) {
     const std::string key = py::cast<std::string>(py::str(item.first));
     py::handle value = item.second;
-    if (key == "law") {
-      spec.name = py::cast<std::string>(py::str(value));
-    } else if (py::isinstance<py::str>(value)) {
-      spec.strings[key] = py::cast<std::string>(value);
-    } else if (py::isinstance<py::bool_>(value)) {
-      throw std::invalid_argument("law parameter '" + key + "': expected a number or a list of numbers");
+    // Text only where the law takes a name ('law', 'shape'); everywhere else a number or a
+    // list of numbers, so that {'Fc': 'a'} is "must be a number", not "missing".
+    const std::string expected = "FrictionLaw: law parameter '" + key + "': expected a number or a list of numbers";
+    auto got = [&] { return value.is_none() ? std::string("None") : py::cast<std::string>(py::repr(value)); };
+    if (key == "law" || key == "shape") {
+      if (!py::isinstance<py::str>(value))
+        throw argument_type_error("FrictionLaw: '" + key + "': expected a name (str), got " + got());
+      if (key == "law") spec.name = py::cast<std::string>(value);
+      else spec.strings[key] = py::cast<std::string>(value);
+    } else if (py::isinstance<py::bool_>(value) || py::isinstance<py::str>(value) || value.is_none()) {
+      throw argument_type_error(expected + ", got " + got());
     } else if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) ||
                (py::isinstance<py::array>(value) && py::cast<py::array>(value).ndim() == 0)) {
-      spec.scalars[key] = py::cast<double>(value);
-    } else {
+      double x;
       try {
-        spec.arrays[key] = std_vector_arg(value, "law parameter '" + key + "'");
-      } catch (const std::invalid_argument&) {
-        throw std::invalid_argument("law parameter '" + key + "': expected a number or a list of numbers");
+        x = py::cast<double>(value);
+      } catch (const py::cast_error&) {
+        throw argument_type_error(expected + ", got " + got());
+      }
+      if (!std::isfinite(x))
+        throw std::invalid_argument("FrictionLaw: law parameter '" + key + "' is " + (std::isnan(x) ? "NaN" : "infinite") +
+                                    "; expected a finite number");
+      spec.scalars[key] = x;
+    } else {
+      ArraySpec list;
+      list.min_size = 1;
+      try {
+        spec.arrays[key] = std_vector_arg(value, "FrictionLaw", "law parameter '" + key + "'", list);
+      } catch (const argument_type_error&) {
+        throw argument_type_error(expected + ", got " + got());
       }
     }
   }
-  if (spec.name.empty()) throw std::invalid_argument("missing 'law' (one of frictionlab.law_names())");
+  if (spec.name.empty()) throw std::invalid_argument("FrictionLaw: missing 'law' (one of frictionlab.law_names())");
   return FrictionLaw::from_spec(spec);
 }
 
@@ -52,10 +69,20 @@ std::string law_repr(const FrictionLaw& law) {
 // for anything array-like, computed by one batch call (FrictionLaw::sliding(v, F): one dispatch,
 // vector kernels) on v itself when it is a C-contiguous float64 array, on a float64 copy otherwise.
 py::object sliding_of(const FrictionLaw& law, const py::object& v) {
-  if (py::isinstance<py::float_>(v) || py::isinstance<py::int_>(v)) return py::float_(law.sliding(py::cast<double>(v)));
-  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(v);
-  if (!a || v.is_none())  // numpy reads None as NaN
-    throw std::invalid_argument("v: expected a number or an array of numbers (m/s or rad/s)");
+  if ((py::isinstance<py::float_>(v) || py::isinstance<py::int_>(v)) && !py::isinstance<py::bool_>(v))
+    return py::float_(law.sliding(number_arg(v, "FrictionLaw.sliding", "v")));
+  ArraySpec any;
+  any.min_size = 0;
+  any.any_shape = true;
+  py::array_t<double, py::array::c_style> a;
+  try {
+    a = check_array(v, "FrictionLaw.sliding", "v", any);
+  } catch (const argument_type_error& e) {
+    const std::string w = e.what();
+    const auto got = w.find(", got ");
+    throw argument_type_error("FrictionLaw.sliding: argument v: expected a number or an array of numbers (m/s or rad/s)" +
+                              (got == std::string::npos ? std::string() : w.substr(got)));
+  }
   if (a.ndim() == 0) return py::float_(law.sliding(*a.data()));
   py::array_t<double> F(std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()));
   const auto n = static_cast<std::size_t>(a.size());
@@ -109,18 +136,30 @@ Raises ValueError naming the law and parameter for an unknown name, a missing or
       .def("__call__", &sliding_of, py::arg("v"),
            "Same as sliding(v): friction force (N or N m) at velocity v (m/s or rad/s).")
       .def("force", [](const FrictionLaw& l, py::object v, py::object applied) {
-        return py::vectorize([&l](double x, double a) { return l.force(x, a); })(v, applied);
+        ArraySpec any;
+        any.min_size = 0;
+        any.any_shape = true;
+        const auto va = check_array(v, "FrictionLaw.force", "v", any);
+        const auto aa = check_array(applied, "FrictionLaw.force", "applied", any);
+        return py::vectorize([&l](double x, double a) { return l.force(x, a); })(va, aa);
       }, py::arg("v"), py::arg("applied"),
            "Static law force with stiction (N or N m): at v == 0 it balances `applied` up to the breakaway level.")
       .def_property_readonly("breakaway", [](const FrictionLaw& l) {
         return py::make_tuple(l.breakaway_positive(), l.breakaway_negative());
       }, "(positive, negative) breakaway levels (N or N m) a stuck contact holds.")
-      .def("step", [](const FrictionLaw& l, py::object v, double dt, std::optional<std::vector<double>> z0) {
-        std::vector<double> z = z0.value_or(std::vector<double>(static_cast<std::size_t>(l.num_states()), 0.0));
+      .def("step", [](const FrictionLaw& l, py::object v, py::object dt_arg, py::object z0_arg) {
+        const double dt = number_arg(dt_arg, "FrictionLaw.step", "dt");
+        ArraySpec states;
+        states.min_size = 0;
+        states.optional = true;
+        std::vector<double> z = std_vector_arg(z0_arg, "FrictionLaw.step", "z0", states);
+        if (z0_arg.is_none()) z.assign(static_cast<std::size_t>(l.num_states()), 0.0);
         if (static_cast<int>(z.size()) != l.num_states())
           throw std::invalid_argument("z0 has " + std::to_string(z.size()) + " entries; " + l.name() + " has " +
                                       std::to_string(l.num_states()) + " states");
-        const std::vector<double> vin = std_vector_arg(v, "v");
+        ArraySpec any_length;
+        any_length.min_size = 0;
+        const std::vector<double> vin = std_vector_arg(v, "FrictionLaw.step", "v", any_length);
         py::array_t<double> out(static_cast<py::ssize_t>(vin.size()));
         double* o = out.mutable_data();
         for (std::size_t i = 0; i < vin.size(); ++i) o[i] = l.step(z, vin[i], dt);

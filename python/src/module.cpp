@@ -4,6 +4,7 @@
 // The bindings live in one file per library layer (laws.cpp, io.cpp, identify.cpp,
 // simulate.cpp, analysis.cpp); the friendly keyword API and the plots are pure Python
 // (python/frictionlab/*.py).
+#include <cmath>
 #include <stdexcept>
 
 #include "common.hpp"
@@ -11,31 +12,117 @@
 
 namespace frictionlab::python {
 
-Eigen::VectorXd vector_arg(const py::handle& x, const std::string& name) {
-  const std::vector<double> v = std_vector_arg(x, name);
-  return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+namespace {
+
+std::string type_name(const py::handle& x) { return py::cast<std::string>(py::str(py::type::of(x).attr("__name__"))); }
+
+std::string prefix(const std::string& function) { return function.empty() ? std::string() : function + ": "; }
+
+std::string shape_text(const py::array& a) {
+  if (a.ndim() == 0) return "a number (0-d)";
+  std::string s = "a " + std::to_string(a.ndim()) + "-D array of shape (";
+  for (py::ssize_t i = 0; i < a.ndim(); ++i) s += (i ? ", " : "") + std::to_string(a.shape(i));
+  return s + ")";
 }
 
-std::vector<double> std_vector_arg(const py::handle& x, const std::string& name) {
-  if (x.is_none()) return {};
-  py::array_t<double, py::array::c_style | py::array::forcecast> a;
+}  // namespace
+
+py::array_t<double, py::array::c_style> check_array(const py::handle& x, const std::string& function,
+                                                     const std::string& name, const ArraySpec& spec) {
+  const std::string arg = prefix(function) + "argument " + name;
+  const std::string expected = spec.any_shape ? "a number or an array of numbers" : "a 1-D array of numbers";
+  if (x.is_none()) {
+    if (spec.optional) return py::array_t<double, py::array::c_style>(0);
+    throw argument_type_error(arg + ": expected " + expected + ", got None");
+  }
+  // Strings, bytes, dicts, sets, bools: numpy would make a 0-d or object array of them.
+  if (py::isinstance<py::str>(x) || py::isinstance<py::bytes>(x) || py::isinstance<py::dict>(x) ||
+      py::isinstance<py::set>(x) || py::isinstance<py::bool_>(x))
+    throw argument_type_error(arg + ": expected " + expected + ", got " + type_name(x));
+  py::array a;
   try {
-    a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(x);
-  } catch (const py::error_already_set&) {
+    a = py::module_::import("numpy").attr("asarray")(x);
+  } catch (const py::error_already_set&) {  // a ragged list, an object numpy cannot read
+    throw argument_type_error(arg + ": expected " + expected + ", got a " + type_name(x) + " that is not an array of numbers");
   }
-  if (!a) {
+  const char kind = py::cast<std::string>(a.dtype().attr("kind"))[0];
+  if (kind != 'i' && kind != 'u' && kind != 'f') {
+    const std::string what = kind == 'b'                  ? "bool"
+                             : kind == 'c'                ? "complex"
+                             : kind == 'O'                ? "object"
+                             : (kind == 'U' || kind == 'S') ? "string"
+                             : (kind == 'M' || kind == 'm') ? "datetime"
+                                                          : "not numbers";
+    throw argument_type_error(arg + ": expected " + expected + ", got " +
+                              (a.ndim() == 0 ? type_name(x)
+                                             : "an array of dtype " + py::cast<std::string>(py::str(a.dtype())) + " (" + what + ")"));
+  }
+  if (!spec.any_shape && a.ndim() != 1) throw std::invalid_argument(arg + ": expected " + expected + ", got " + shape_text(a));
+  // A contiguous float64 copy when the layout or dtype differ (strided slices, int arrays).
+  auto out = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  if (!out) {
     PyErr_Clear();
-    throw std::invalid_argument(name + ": expected a 1-D array of numbers, got " +
-                                py::cast<std::string>(py::str(py::type::of(x).attr("__name__"))));
+    throw argument_type_error(arg + ": expected " + expected + ", got " + type_name(x));
   }
-  if (a.ndim() != 1) {
-    throw std::invalid_argument(name + ": expected a 1-D array of numbers, got an array with " +
-                                std::to_string(a.ndim()) + " dimensions");
+  const auto n = static_cast<std::size_t>(out.size());
+  if (n < spec.min_size) {
+    if (n == 0) throw std::invalid_argument(arg + " is empty; expected at least " + std::to_string(spec.min_size) + " samples");
+    throw std::invalid_argument(arg + " has " + std::to_string(n) + " sample" + (n == 1 ? "" : "s") + "; expected at least " +
+                                std::to_string(spec.min_size));
   }
-  return std::vector<double>(a.data(), a.data() + a.shape(0));
+  if (spec.finite) {
+    const double* d = out.data();
+    for (std::size_t i = 0; i < n; ++i)
+      if (!std::isfinite(d[i]))
+        throw std::invalid_argument(arg + " has " + (std::isnan(d[i]) ? "NaN" : d[i] > 0 ? "inf" : "-inf") + " at index " +
+                                    std::to_string(i) + "; expected finite numbers");
+  }
+  return out;
 }
 
-std::string path_arg(const py::handle& p) {
+Eigen::VectorXd vector_arg(const py::handle& x, const std::string& function, const std::string& name, const ArraySpec& spec) {
+  const auto a = check_array(x, function, name, spec);
+  return Eigen::Map<const Eigen::VectorXd>(a.data(), static_cast<Eigen::Index>(a.size()));
+}
+
+std::vector<double> std_vector_arg(const py::handle& x, const std::string& function, const std::string& name,
+                                   const ArraySpec& spec) {
+  const auto a = check_array(x, function, name, spec);
+  return std::vector<double>(a.data(), a.data() + a.size());
+}
+
+void same_length(const std::string& function, std::initializer_list<NamedLength> arrays) {
+  const NamedLength* first = nullptr;
+  for (const auto& a : arrays) {
+    if (a.size == 0) continue;
+    if (!first) {
+      first = &a;
+    } else if (a.size != first->size) {
+      throw std::invalid_argument(prefix(function) + "arguments " + first->name + " (" + std::to_string(first->size) +
+                                  " samples) and " + a.name + " (" + std::to_string(a.size) +
+                                  " samples) differ in length; expected equal lengths");
+    }
+  }
+}
+
+double number_arg(const py::handle& x, const std::string& function, const std::string& name) {
+  const std::string arg = prefix(function) + "argument " + name;
+  if (x.is_none() || py::isinstance<py::bool_>(x) || py::isinstance<py::str>(x))
+    throw argument_type_error(arg + ": expected a number, got " + (x.is_none() ? std::string("None") : type_name(x)));
+  double v;
+  try {
+    v = py::cast<double>(py::float_(py::reinterpret_borrow<py::object>(x)));
+  } catch (const py::error_already_set&) {
+    throw argument_type_error(arg + ": expected a number, got " + type_name(x));
+  }
+  if (!std::isfinite(v)) throw std::invalid_argument(arg + " is " + (std::isnan(v) ? "NaN" : "infinite") + "; expected a finite number");
+  return v;
+}
+
+std::string path_arg(const py::handle& p, const std::string& function, const std::string& name) {
+  if (!py::isinstance<py::str>(p) && !py::hasattr(p, "__fspath__"))
+    throw argument_type_error(prefix(function) + "argument " + name + ": expected a file path (str or os.PathLike), got " +
+                              (p.is_none() ? std::string("None") : type_name(p)));
   return py::cast<std::string>(py::module_::import("os").attr("fspath")(p));
 }
 
@@ -52,9 +139,21 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "frictionlab: friction models, simulation and identification (SI units throughout).";
   m.attr("__version__") = frictionlab::kVersion;
 
+  // Wrong-type arguments: a TypeError that is also a ValueError (code catching either works).
+  static pybind11::handle argument_type_error_class;
+  {
+    pybind11::tuple bases = pybind11::make_tuple(pybind11::handle(PyExc_TypeError), pybind11::handle(PyExc_ValueError));
+    argument_type_error_class = PyErr_NewExceptionWithDoc(
+        "frictionlab._core.ArgumentTypeError",
+        "An argument of the wrong type (None, a string, an object or complex array); a TypeError and a ValueError.",
+        bases.ptr(), nullptr);
+    m.attr("ArgumentTypeError") = pybind11::handle(argument_type_error_class);
+  }
   pybind11::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const fp::argument_type_error& e) {
+      PyErr_SetString(argument_type_error_class.ptr(), e.what());
     } catch (const std::logic_error& e) {
       // invalid_argument derives from logic_error: both are the caller's mistake.
       PyErr_SetString(PyExc_ValueError, e.what());

@@ -61,7 +61,7 @@ A simulation problem: plant, friction law, input and options, read from a scenar
            }),
            py::arg("spec"), py::arg("where") = "scenario",
            "From a dict of the scenario-file form; `where` prefixes error messages.")
-      .def_static("load", [](const py::object& p) { return load_scenario(path_arg(p)); }, py::arg("path"),
+      .def_static("load", [](const py::object& p) { return load_scenario(path_arg(p, "Scenario.load")); }, py::arg("path"),
                   "Reads a scenario YAML file; ValueError naming the file, key and value on bad content.")
       .def_property("law", [](const Scenario& s) { return s.law; },
                     [](Scenario& s, const py::object& law) { s.law = law_arg(law); },

@@ -12,8 +12,15 @@ namespace frictionlab::python {
 void init_validate(py::module_& m) {
   m.def(
       "_validate",
-      [](const Result& identified, const std::string& data_path, const std::string& scenario_path, const py::handle& time,
+      [](const Result& identified, const py::handle& data_arg, const py::handle& scenario_arg, const py::handle& time,
          const py::handle& position, const py::handle& force) {
+        const std::string data_path = path_arg(data_arg, "validate", "data"),
+                          scenario_path = path_arg(scenario_arg, "validate", "scenario");
+        ValidationData v;
+        v.time = vector_arg(time, "validate", "time");
+        v.position = vector_arg(position, "validate", "position");
+        v.force = vector_arg(force, "validate", "force");
+        same_length("validate", {{"time", v.time.size()}, {"position", v.position.size()}, {"force", v.force.size()}});
         IdentifiedModel model = model_from_result(identified);
         auto data = std::make_shared<const Dataset>(load_dataset(data_path));
         ScenarioOptions so;
@@ -21,10 +28,6 @@ void init_validate(py::module_& m) {
         so.law = model.law;
         so.axis = model.axis;
         const Scenario scenario = load_scenario(scenario_path, so);
-        ValidationData v;
-        v.time = vector_arg(time, "time");
-        v.position = vector_arg(position, "position");
-        v.force = vector_arg(force, "force");
         v.file = data->file;
         v.sha256 = data->sha256;
         Result r = validate_model(model, scenario, v, {});
@@ -37,23 +40,26 @@ void init_validate(py::module_& m) {
 
   m.def(
       "_identify_lugre",
-      [](const py::handle& time, const py::handle& force, const py::handle& position, double inertia,
-         const py::handle& static_law, double delta, double stribeck_velocity, int substeps, int max_iterations,
-         const std::string& axis) {
-        LugreData d{vector_arg(time, "time"), vector_arg(force, "force"), vector_arg(position, "position")};
+      [](const py::handle& time, const py::handle& force, const py::handle& position, const py::handle& inertia,
+         const py::handle& static_law, const py::handle& delta, const py::handle& stribeck_velocity, int substeps,
+         int max_iterations, const std::string& axis, const py::handle& vd) {
+        const char* fn = "identify_lugre";
+        LugreData d{vector_arg(time, fn, "time"), vector_arg(force, fn, "force"), vector_arg(position, fn, "position")};
+        same_length(fn, {{"time", d.time.size()}, {"force", d.force.size()}, {"position", d.position.size()}});
         LugreOptions o;
-        o.inertia = inertia;
+        o.inertia = number_arg(inertia, fn, "inertia");
         if (!static_law.is_none()) o.static_law = law_arg(static_law);
-        o.delta = delta;
-        o.stribeck_velocity = stribeck_velocity;
+        o.delta = number_arg(delta, fn, "delta");
+        o.stribeck_velocity = number_arg(stribeck_velocity, fn, "stribeck_velocity");
         o.substeps = substeps;
         o.max_iterations = max_iterations;
         o.axis = parse_axis(axis);
+        o.vd = number_arg(vd, fn, "vd");
         py::gil_scoped_release release;  // the fit takes a while; let other Python threads run
         return identify_lugre(d, o);
       },
       py::arg("time"), py::arg("force"), py::arg("position"), py::arg("inertia"), py::arg("static_law"),
-      py::arg("delta"), py::arg("stribeck_velocity"), py::arg("substeps"), py::arg("max_iterations"), py::arg("axis"));
+      py::arg("delta"), py::arg("stribeck_velocity"), py::arg("substeps"), py::arg("max_iterations"), py::arg("axis"), py::arg("vd") = 0.0);
 }
 
 }  // namespace frictionlab::python

@@ -66,6 +66,15 @@ StickSlipResult detect_stick_slip(std::span<const double> t, std::span<const dou
   std::vector<double> starts;
   for (const Run& run : runs)
     if (run.i0 > 0) starts.push_back(t[run.i0]);
+  if (runs.empty()) {
+    r.message = "no slip found: velocity never exceeded " + std::to_string(thr) +
+                " m/s (rad/s on a rotary axis; the stuck threshold" +
+                (options.velocity_threshold > 0 ? std::string(" given") : std::string(", 1 % of the largest |v|")) +
+                ", largest |v| = " + std::to_string(vmax) + ")";
+  } else if (starts.empty()) {
+    r.message = "no slip from stick found: the record slides from its start (|v| above " + std::to_string(thr) +
+                " m/s or rad/s) and never sticks then slips again";
+  }
   if (starts.size() < 2) {
     r.period = std::numeric_limits<double>::quiet_NaN();
   } else {

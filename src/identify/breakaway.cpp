@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "frictionlab/identify/uncertainty.hpp"
 #include "method_support.hpp"
 #include "frictionlab/signal/differentiate.hpp"
 #include "frictionlab/signal/segments.hpp"
@@ -134,7 +135,12 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
   add("Fc", Fc, fit.stdev[0], Quantity::force);
   add("Fv", Fv, fit.stdev[1], Quantity::viscous);
   if (fit_inertia) add("M", M, fit.stdev[2], Quantity::inertia);
+  // Fs keeps its propagated std; the regression's parameters get the common rules.
+  set_uncertainty_from_information(r, fit_inertia ? std::vector<std::string>{"Fc", "Fv", "M"} : std::vector<std::string>{"Fc", "Fv"},
+                                   fit.information, fit.residual_variance);
   set_fit(r, y, X * fit.beta);
+  if (!std::isfinite(r.fit.relative_error_percent) || !std::isfinite(Fs))
+    return fail(r, "the fit gave figures that are not finite numbers (force zero throughout?); the data cannot give an answer");
   r.diagnostics.condition_number = fit.condition_number;
   r.diagnostics.groups["readoff"] = {{"Fs", Fs_readoff}, {"Fc", Fc_readoff}, {"Fv", Fv_readoff}};
   auto& num = r.diagnostics.numbers;

@@ -1,10 +1,12 @@
 #include "frictionlab/identify/decay.hpp"
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
 #include "frictionlab/signal/differentiate.hpp"
+#include "frictionlab/identify/uncertainty.hpp"
 #include "method_support.hpp"
 
 namespace frictionlab {
@@ -151,7 +153,20 @@ Result identify_decay(const DecayData& d, const DecayOptions& o) {
     add_parameter(r, "Fc", fit.beta[0], stdev[0], Quantity::force, axis);
     add_parameter(r, "Fv", fit.beta[1], stdev[1], Quantity::viscous, axis);
   }
+  {  // Covariance with the statistical correlation and the std widened by the discretisation error.
+    const Eigen::MatrixXd cb = fit.residual_variance * fit.information.inverse();
+    Eigen::Matrix2d cov;
+    const double scale1 = relative ? o.natural_frequency / 2 : 1.0;
+    const Eigen::Vector2d sd(stdev[0], stdev[1] * scale1);
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        cov(i, j) = i == j ? sd[i] * sd[i] : sd[i] * sd[j] * cb(i, j) / std::sqrt(cb(i, i) * cb(j, j));
+    if (!cov.allFinite()) cov = Eigen::Vector2d(sd.array().square()).asDiagonal();
+    set_uncertainty_from_covariance(r, {r.parameters[0].name, r.parameters[1].name}, cov);
+  }
   set_fit(r, y, X * fit.beta);
+  if (!std::isfinite(r.fit.relative_error_percent))
+    return fail(r, "the energy balance gave figures that are not finite numbers; the data cannot give an answer");
   r.diagnostics.condition_number = fit.condition_number;
   r.diagnostics.numbers["half_cycles"] = static_cast<double>(tp.size() - 1);
   r.diagnostics.numbers["first_amplitude"] = std::abs(tp.front().position);
@@ -166,7 +181,7 @@ Result identify_decay(const DecayData& d, const DecayOptions& o) {
   if (!relative && fit.beta[0] >= 0 && fit.beta[1] >= 0)
     r.law = FrictionLaw(CoulombViscous{fit.beta[0], fit.beta[1]}).to_spec();
   for (const auto& p : r.parameters)
-    if (std::abs(p.value) <= 2 * p.std)
+    if (p.flag.empty() && std::abs(p.value) <= 2 * p.std)
       r.diagnostics.warnings.push_back(p.name + " = " + format_number(p.value) + " is zero within 2 std (" +
                                        format_number(2 * p.std) + "): that friction is not detected");
   return r;

@@ -10,10 +10,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "frictionlab/identify/uncertainty.hpp"
 #include "frictionlab/signal/butterworth.hpp"
 #include "frictionlab/signal/decimate.hpp"
 #include "frictionlab/signal/differentiate.hpp"
 #include "frictionlab/signal/filtfilt.hpp"
+#include "frictionlab/signal/sampling.hpp"
 #include "../signal/scratch.hpp"
 
 namespace frictionlab {
@@ -40,40 +42,10 @@ void check_signal(const IdimData& d, const Vec& v, const char* name, Eigen::Inde
 
 // Mean sample step after checking time is finite, strictly increasing and regular (1 %).
 double checked_step(const IdimData& d) {
-  const Vec& t = d.time;
-  const Eigen::Index n = t.size();
-  if (n < 2) throw std::invalid_argument(where(d) + "time has " + std::to_string(n) + " samples; expected many");
-  check_signal(d, t, "time", n);
-  for (Eigen::Index k = 1; k < n; ++k) {
-    if (!(t(k) > t(k - 1))) {
-      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time " + detail::format_value(t(k), 6) +
-                                  " s is not greater than the previous " + detail::format_value(t(k - 1), 6) +
-                                  " s; expected strictly increasing time");
-    }
-  }
-  const double dt = (t(n - 1) - t(0)) / static_cast<double>(n - 1);
-  constexpr double kRegularTol = 0.01;  // relative step jitter accepted (EMPS: 2.4e-5)
-  // Quick pass: all steps within kRegularTol of the smallest are within it of the median too.
-  double smallest = t(1) - t(0), largest = smallest;
-  for (Eigen::Index k = 2; k < n; ++k) {
-    smallest = std::min(smallest, t(k) - t(k - 1));
-    largest = std::max(largest, t(k) - t(k - 1));
-  }
-  if (largest - smallest <= kRegularTol * smallest) return dt;
-  // Steps are compared with the median step, so a gap is reported where it is.
-  std::vector<double> steps(static_cast<std::size_t>(n - 1));
-  for (Eigen::Index k = 1; k < n; ++k) steps[static_cast<std::size_t>(k - 1)] = t(k) - t(k - 1);
-  auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
-  std::nth_element(steps.begin(), mid, steps.end());
-  const double median = *mid;
-  for (Eigen::Index k = 1; k < n; ++k) {
-    if (std::abs(t(k) - t(k - 1) - median) > kRegularTol * median) {
-      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time step " +
-                                  detail::format_value(t(k) - t(k - 1), 6) + " s differs from the median step " + detail::format_value(median, 6) +
-                                  " s by more than 1 %; IDIM needs regularly sampled data");
-    }
-  }
-  return dt;
+  RegularSamplingCheck check;  // the one rule of signal/sampling.hpp: 1 % of the median step
+  check.where = where(d);
+  check.requirement = "IDIM needs regularly sampled data";
+  return check_regular_sampling(d.time, check).mean;
 }
 
 // A built-in term from its value at one sample, f(qd, qdd), in both forms: written into a
@@ -137,6 +109,31 @@ Result error_result(Result r, std::string message) {
 
 }  // namespace
 
+IdimRateDefaults idim_rate_defaults(double fs) {
+  if (!(fs > 0) || !std::isfinite(fs))
+    throw std::invalid_argument("idim: sample rate = " + detail::format_value(fs, 6) + " Hz must be a positive finite number");
+  IdimRateDefaults d;
+  // A rate within 1e-6 of 1 kHz (a mean step with rounding) is 1 kHz: exactly the recipe's 100 Hz.
+  d.cutoff_hz = fs / 10.0 >= 100.0 * (1 - 1e-6) ? 100.0 : fs / 10.0;
+  d.decimation = static_cast<int>(std::clamp(std::floor(fs / 100.0 * (1 + 1e-6)), 1.0, 10.0));
+  d.skip = static_cast<Eigen::Index>(std::lround(5.0 * fs / d.cutoff_hz)) - 1;
+  return d;
+}
+
+namespace {
+// `o` with the rate-dependent settings it asks for filled in from the data's mean step dt (s).
+IdimOptions resolved(const IdimOptions& o, double dt) {
+  if (!o.auto_cutoff && !o.auto_decimation && !o.auto_skip) return o;
+  const IdimRateDefaults d = idim_rate_defaults(1.0 / dt);
+  IdimOptions r = o;
+  if (o.auto_cutoff) r.cutoff_hz = d.cutoff_hz;
+  if (o.auto_decimation) r.decimation = d.decimation;
+  if (o.auto_skip) r.skip = d.skip;
+  r.auto_cutoff = r.auto_decimation = r.auto_skip = false;
+  return r;
+}
+}  // namespace
+
 std::vector<IdimTerm> idim_terms(const IdimOptions& options) {
   std::vector<IdimTerm> out;
   for (const auto& name : options.terms) {
@@ -188,12 +185,13 @@ thread_local int IdimBuffers::active_ = 0;
 
 }  // namespace
 
-IdimRegression idim_regression(const IdimData& data, const IdimOptions& options) {
+IdimRegression idim_regression(const IdimData& data, const IdimOptions& options_in) {
   IdimBuffers buffers;
   IdimRegression reg;
-  reg.terms = idim_terms(options);
+  reg.terms = idim_terms(options_in);
   const Eigen::Index n = data.time.size();
   reg.dt = checked_step(data);
+  const IdimOptions options = resolved(options_in, reg.dt);
   check_signal(data, data.force, "force", n);
   if (options.decimation < 1) {
     throw std::invalid_argument("idim: decimation = " + std::to_string(options.decimation) + " must be >= 1");
@@ -213,7 +211,13 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options)
   // 1-2: zero-phase low-pass and central differences, in this thread's work buffers.
   const TransferFunction lp = butter(options.filter_order, normalized_cutoff(options.cutoff_hz, reg.dt));
   const Vec* measured = nullptr;
-  if (data.position.size() > 0) {
+  const bool want_velocity = options.source == IdimSource::velocity ||
+                             (options.source == IdimSource::automatic && data.position.size() == 0);
+  if (options.source == IdimSource::position && data.position.size() == 0)
+    throw std::invalid_argument(where(data) + "no position given; the regressors were asked to be built from the position");
+  if (options.source == IdimSource::velocity && data.velocity.size() == 0)
+    throw std::invalid_argument(where(data) + "no velocity given; the regressors were asked to be built from the velocity");
+  if (!want_velocity && data.position.size() > 0) {
     check_signal(data, data.position, "position", n);
     measured = &data.position;
   } else if (data.velocity.size() > 0) {
@@ -335,8 +339,9 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options);
 
 }  // namespace
 
-Result identify_idim(const IdimData& data, const IdimOptions& options) {
+Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
   const detail::ScratchScope scope;  // the regressions of a vs search share the buffers
+  const IdimOptions options = resolved(options_in, checked_step(data));
   const auto terms = idim_terms(options);
   const bool has_stribeck = std::any_of(terms.begin(), terms.end(), [](const IdimTerm& t) { return t.parameter == "Fs_minus_Fc"; });
   IdimOptions o = options;
@@ -358,7 +363,38 @@ Result identify_idim(const IdimData& data, const IdimOptions& options) {
   Result r = identify_idim_fixed(data, o);
   if (has_stribeck) r.diagnostics.numbers["stribeck_vs"] = o.stribeck_vs;
   if (options.input_delay > 0) r.diagnostics.numbers["input_delay"] = static_cast<double>(options.input_delay);
-  if (r.ok()) attach_law(r, o, o.stribeck_vs);
+  {
+    auto& defaults = r.diagnostics.groups["defaults"];  // the settings chosen from the sample rate
+    if (options_in.auto_cutoff) defaults["cutoff_hz"] = options.cutoff_hz;
+    if (options_in.auto_decimation) defaults["decimation"] = options.decimation;
+    if (options_in.auto_skip) defaults["skip"] = static_cast<double>(options.skip);
+    if (defaults.empty()) r.diagnostics.groups.erase("defaults");
+  }
+  if (r.ok()) {
+    attach_law(r, o, o.stribeck_vs);
+    // The filtered velocity at the fitted samples (the viscous term's column), for the friction map.
+    IdimOptions ov = o;
+    ov.terms = {"viscous"};
+    ov.extra_terms.clear();
+    const Vec v = idim_regression(data, ov).X.col(0);
+    r.series["velocity"].assign(v.data(), v.data() + v.size());
+    // The identified friction terms as a curve over +-max |v| (denser near 0, where Stribeck
+    // terms bend), evaluated on the velocity itself, not on decimated columns.
+    constexpr int kSide = 150;
+    Vec grid(2 * kSide), zero = Vec::Zero(2 * kSide), curve = Vec::Zero(2 * kSide);
+    for (int i = 0; i < kSide; ++i) {
+      const double a = v.cwiseAbs().maxCoeff() * std::pow((i + 1.0) / kSide, 2.0);
+      grid(kSide - 1 - i) = -a;
+      grid(kSide + i) = a;
+    }
+    const IdimKinematics k{IdimKinematics::View(nullptr, 0), IdimKinematics::View(grid.data(), grid.size()),
+                           IdimKinematics::View(zero.data(), zero.size())};
+    ov.terms = o.terms;  // the built-in terms only (a user's term may need the position)
+    for (const auto& t : idim_terms(ov))
+      if (t.parameter != "M" && t.parameter != "offset") curve += r.value(t.parameter) * t.column(k);
+    r.series["law_velocity"].assign(grid.data(), grid.data() + grid.size());
+    r.series["law_force"].assign(curve.data(), curve.data() + curve.size());
+  }
   return r;
 }
 
@@ -377,6 +413,9 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
   r.diagnostics.numbers["decimation"] = options.decimation;
   r.diagnostics.numbers["skipped_samples"] = static_cast<double>(options.skip);
   r.diagnostics.numbers["max_speed"] = reg.max_speed;
+  const bool from_velocity = options.source == IdimSource::velocity ||
+                             (options.source == IdimSource::automatic && data.position.size() == 0);
+  r.diagnostics.texts["regressors_from"] = from_velocity ? "velocity" : "position";
 
   if (nobs <= p) {
     return error_result(r, where(data) + std::to_string(nobs) + " samples after decimation for " + std::to_string(p) +
@@ -384,11 +423,18 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
   }
   // Velocities at the rounding level of the position (a constant record filtered and
   // differentiated) are no motion at all.
-  const double velocity_floor = 1e-9 * data.position.cwiseAbs().maxCoeff() / reg.dt;
+  const double velocity_floor =
+      from_velocity ? 0.0 : 1e-9 * data.position.cwiseAbs().maxCoeff() / reg.dt;
   if (!(reg.max_speed > std::max(options.min_velocity, velocity_floor))) {
     return error_result(r, where(data) + "no excitation: the velocity never exceeds " + detail::format_value(options.min_velocity, 6) +
                                " (max |qd| = " + detail::format_value(reg.max_speed, 6) +
                                "); IDIM needs a trajectory that moves in both directions");
+  }
+  // A force that is zero throughout (a drive gain of 0, an unconnected channel) explains nothing.
+  if (!(reg.y.cwiseAbs().maxCoeff() > 0.0)) {
+    return error_result(r, where(data) + "the force is zero throughout (max |force| = 0" +
+                               std::string(options.input_delay > 0 ? " after the delay" : "") +
+                               "): check the force column or the drive gain (--gain); the data cannot give an answer");
   }
   // A zero column (no motion in one direction, no acceleration) cannot be identified.
   const Vec norms = reg.X.colwise().norm();
@@ -417,28 +463,45 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
   const Vec e = reg.y - reg.X * theta;
   const double ee = e.squaredNorm();
   const double s2 = ee / static_cast<double>(nobs - p);
-  // (X'X)^-1 = V S^-2 V'.
-  const Eigen::MatrixXd vs = svd.matrixV() * sv.cwiseInverse().asDiagonal();
-  const Vec var = s2 * vs.rowwise().squaredNorm();
-  for (Eigen::Index j = 0; j < p; ++j) {
-    const auto& t = reg.terms[static_cast<std::size_t>(j)];
-    r.parameters.push_back({t.parameter, theta(j), std::sqrt(var(j)), std::string(unit(t.quantity, options.axis))});
-  }
   r.fit.relative_error_percent = 100.0 * std::sqrt(ee) / reg.y.norm();
   r.fit.rmse = std::sqrt(ee / static_cast<double>(nobs));
   r.fit.samples = static_cast<std::size_t>(nobs);
+  if (!theta.allFinite() || !std::isfinite(r.fit.relative_error_percent) || !std::isfinite(r.fit.rmse)) {
+    return error_result(r, where(data) + "the least-squares fit gave figures that are not finite numbers; "
+                               "the data cannot give an answer (check the force and motion columns)");
+  }
+  std::vector<std::string> names;
+  for (Eigen::Index j = 0; j < p; ++j) {
+    const auto& t = reg.terms[static_cast<std::size_t>(j)];
+    r.parameters.push_back({t.parameter, theta(j), 0.0, std::string(unit(t.quantity, options.axis)), ""});
+    names.push_back(t.parameter);
+  }
+  // std = s sqrt(diag((X'X)^-1)) over the determined parameters; X'X = V S^2 V'.
+  const Eigen::MatrixXd vsq = svd.matrixV() * sv.asDiagonal();
+  set_uncertainty_from_information(r, names, vsq * vsq.transpose(), s2);
   {  // figure signals: the decimated samples keep every decimation-th sample after the skip
     const Vec model = reg.X * theta;
     auto& t = r.series["time"];
     for (Eigen::Index k = 0; k < nobs; ++k) t.push_back(data.time[options.skip + k * std::max(1, options.decimation)]);
     r.series["force"].assign(reg.y.data(), reg.y.data() + nobs);
     r.series["force_model"].assign(model.data(), model.data() + nobs);
+    // The friction map: the force less the non-friction terms (inertia, offset, user terms)
+    // against velocity, and the friction terms alone.
+    Vec friction = reg.y, friction_model = Vec::Zero(nobs);
+    for (Eigen::Index j = 0; j < p; ++j) {
+      const std::string& name = reg.terms[static_cast<std::size_t>(j)].parameter;
+      const bool is_friction = j < p - static_cast<Eigen::Index>(options.extra_terms.size()) && name != "M" && name != "offset";
+      if (is_friction) friction_model += reg.X.col(j) * theta(j);
+      else friction -= reg.X.col(j) * theta(j);
+    }
+    r.series["friction"].assign(friction.data(), friction.data() + nobs);
+    r.series["friction_model"].assign(friction_model.data(), friction_model.data() + nobs);
   }
   r.diagnostics.numbers["residual_std"] = std::sqrt(s2);
 
   for (const auto& q : r.parameters) {
     constexpr double kPoorlyIdentified = 0.5;  // std above half the value: the estimate is not trustworthy
-    if (std::abs(q.std) > kPoorlyIdentified * std::abs(q.value)) {
+    if (q.flag.empty() && std::abs(q.std) > kPoorlyIdentified * std::abs(q.value)) {
       r.diagnostics.warnings.push_back(q.name + " = " + detail::format_value(q.value, 6) + " " + q.unit + " is poorly identified (std " +
                                        detail::format_value(q.std, 6) + ")");
     }
@@ -456,7 +519,7 @@ ValidationFigures cross_test(const Result& identified, const IdimData& data, con
   if (!identified.ok()) {
     throw std::invalid_argument("cross_test: the identification failed (" + identified.message + "); nothing to test");
   }
-  IdimOptions o = options;
+  IdimOptions o = resolved(options, checked_step(data));
   if (const auto it = identified.diagnostics.numbers.find("stribeck_vs"); it != identified.diagnostics.numbers.end())
     o.stribeck_vs = it->second;  // the value the identification used (searched or given)
   const IdimRegression reg = idim_regression(data, o);
@@ -469,6 +532,13 @@ ValidationFigures cross_test(const Result& identified, const IdimData& data, con
   v.relative_error_percent = 100.0 * e.norm() / reg.y.norm();
   v.rmse = std::sqrt(e.squaredNorm() / static_cast<double>(e.size()));
   v.samples = static_cast<std::size_t>(e.size());
+  {  // figure signals, sampled as the identification's (see identify_idim_fixed)
+    const Vec model = reg.X * theta;
+    auto& t = v.series["time"];
+    for (Eigen::Index k = 0; k < e.size(); ++k) t.push_back(data.time[o.skip + k * std::max(1, o.decimation)]);
+    v.series["force"].assign(reg.y.data(), reg.y.data() + reg.y.size());
+    v.series["force_model"].assign(model.data(), model.data() + model.size());
+  }
   return v;
 }
 

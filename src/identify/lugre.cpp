@@ -4,15 +4,19 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "frictionlab/identify/static_fit.hpp"
+#include "frictionlab/identify/uncertainty.hpp"
+#include "frictionlab/models/lugre.hpp"
 #include "frictionlab/models/scalar.hpp"
 #include "frictionlab/signal/differentiate.hpp"
 #include "method_support.hpp"
@@ -35,7 +39,8 @@ struct Record {
   double dt = 0;              // sample time (s)
   int substeps = 1;
   double M = 1;               // inertia (kg)
-  double delta = 2;           // Stribeck exponent
+  double delta = 2;           // Stribeck exponent (held)
+  double vd = 0;              // damping decay velocity (m/s; held, 0 = constant damping)
   double scale = 1;           // residuals are (x_sim - x) / scale (m / m)
 };
 
@@ -49,39 +54,38 @@ struct Window {
   int residuals() const { return end - begin; }
 };
 
-// Bristle state over one substep h at constant velocity v, from z: the exact solution of
-// dz/dt = v - rate z, rate = sigma0 |v| / g(v), as LuGreT::step, at h/2 (for the corrector's
-// force) and at h (the new state), with dz/dt at both. One g(v) and one exponential serve both:
-// exp(-rate h) = exp(-rate h / 2)^2.
-template <class T>
-struct Relaxed {
-  T z, zdot;
-};
-template <class T>
-struct RelaxedStep {
-  Relaxed<T> mid, end;
-};
+// The law of a trial parameter vector: [log sigma0, log sigma1] and [sigma2, log Fc, dF, log vs]
+// with delta and vd held. Every force, level and bristle rate of the fit's simulation comes from
+// this LuGreT<T> (T = double or a Ceres Jet), so the fit simulates exactly the law the library
+// simulates, vd (the damping that decays with speed) included.
 template <class T, class S>
-RelaxedStep<T> relax(const T& z, const T& v, double h, const T& s0, const S& Fc, const S& dF, const S& vs, double delta) {
-  using std::abs;
+LuGreT<T> trial_law(const T* dyn, const S* sta, const Record& r) {
   using std::exp;
-  const double vv = value_of(v);
-  if (vv == 0.0) return {{z, v}, {z, v}};
-  const T g = Fc + dF * stribeck_decay(v, vs, delta);
-  const T rate = s0 * abs(v) / g;
-  const T zss = (vv > 0 ? g : -g) / s0;
-  const T e_half = exp(-rate * (0.5 * h));
-  const T z_mid = zss + (z - zss) * e_half;
-  const T z_end = zss + (z - zss) * (e_half * e_half);
-  return {{z_mid, v - rate * z_mid}, {z_end, v - rate * z_end}};
+  LuGreT<T> lg;
+  lg.sigma0 = exp(dyn[kLogS0]);
+  lg.sigma1 = exp(dyn[kLogS1]);
+  lg.sigma2 = T(sta[kS2]);
+  lg.Fc = T(exp(sta[kLogFc]));
+  lg.Fs = lg.Fc + T(sta[kDF]);
+  lg.vs = T(exp(sta[kLogVs]));
+  lg.delta = T(r.delta);
+  lg.vd = T(r.vd);
+  return lg;
 }
 
-// dz/dt = v - sigma0 |v| z / g(v) (m/s).
-template <class T, class S>
-T state_rate(const T& z, const T& v, const T& s0, const S& Fc, const S& dF, const S& vs, double delta) {
+// Bristle state at the middle and the end of one substep h at constant velocity v, from z: the
+// exact solution of dz/dt = v - rate z, rate = sigma0 |v| / g(v) (as LuGreT::step, which serves
+// doubles only). One g(v) and one exponential serve both: exp(-rate h) = exp(-rate h / 2)^2.
+template <class T>
+std::pair<T, T> relax(const LuGreT<T>& lg, const T& z, const T& v, double h) {
   using std::abs;
-  if (value_of(v) == 0.0) return v;
-  return v - s0 * abs(v) * z / (Fc + dF * stribeck_decay(v, vs, delta));
+  using std::exp;
+  if (value_of(v) == 0.0) return {z, z};
+  const T g = lg.level(v);
+  const T rate = lg.sigma0 * abs(v) / g;
+  const T zss = sgn(v) * g / lg.sigma0;
+  const T e_half = exp(-rate * (0.5 * h));
+  return {zss + (z - zss) * e_half, zss + (z - zss) * (e_half * e_half)};
 }
 
 // Simulates M x'' = u - F_lugre over window w and writes (x_sim[k] - x[k]) / scale for
@@ -96,60 +100,68 @@ T state_rate(const T& z, const T& v, const T& s0, const S& Fc, const S& dF, cons
 // non-smooth function of the parameters, and Ceres needs its derivative. A first-order version
 // (explicit v, exact z) was 70 um off CVODE per 1 s window of Table I sliding at 8 substeps,
 // enough to bias sigma1 by far more than 5 %.
-// S is T when the static part is fitted, double when it is given (then the Jets carry only the
-// two dynamic derivatives, not six).
-template <class T, class S>
-void simulate_residuals(const T* dyn, const S* sta, const Record& r, const Window& w, T* out) {
-  using std::exp;
-  const T s0 = exp(dyn[kLogS0]), s1 = exp(dyn[kLogS1]);
-  const S s2 = sta[kS2], Fc = exp(sta[kLogFc]), dF = sta[kDF], vs = exp(sta[kLogVs]);
+// `start` is the window's initial state [x, v] (m, m/s): the bristles start unloaded at rest or in
+// their steady state g(v) sign(v) / sigma0 (windows start at velocity peaks, in steady sliding).
+template <class T, class X>
+void simulate_residuals(const LuGreT<T>& lg, const Record& r, const Window& w, const X* start, T* out) {
   const double h = r.dt / r.substeps;
   const double inv_m = 1.0 / r.M;
-  const double v0 = w.at_rest ? 0.0 : r.v[w.begin];
-  T x(r.x[w.begin]), v(v0), z(0.0);
-  if (v0 != 0.0) z = T(v0 > 0 ? 1.0 : -1.0) * (Fc + dF * stribeck_decay(v, vs, r.delta)) / s0;
-  T zdot = state_rate(z, v, s0, Fc, dF, vs, r.delta);
+  T x(start[0]), v(start[1]), z(0.0);
+  if (!w.at_rest && value_of(v) != 0.0) z = sgn(v) * lg.level(v) / lg.sigma0;
   for (int k = w.begin; k < w.end; ++k) {
     const double u0 = r.u[k], du = r.u[k + 1] - r.u[k];
     for (int j = 0; j < r.substeps; ++j) {
       const double ua = u0 + du * (static_cast<double>(j) / r.substeps);
       const double um = u0 + du * ((j + 0.5) / r.substeps);
-      const T F0 = s0 * z + s1 * zdot + s2 * v;
-      const T vp = v + h * inv_m * (ua - F0);
+      const T vp = v + h * inv_m * (ua - lg.force(z, v));
       const T vm = 0.5 * (v + vp);
-      const RelaxedStep<T> zr = relax(z, vm, h, s0, Fc, dF, vs, r.delta);
-      const T Fm = s0 * zr.mid.z + s1 * zr.mid.zdot + s2 * vm;
-      const T vn = v + h * inv_m * (um - Fm);
+      const auto [z_mid, z_end] = relax(lg, z, vm, h);
+      const T vn = v + h * inv_m * (um - lg.force(z_mid, vm));
       x += (0.5 * h) * (v + vn);
       v = vn;
-      z = zr.end.z;
-      zdot = state_rate(z, v, s0, Fc, dF, vs, r.delta);
+      z = z_end;
     }
     out[k - w.begin] = (x - r.x[k + 1]) / r.scale;
   }
 }
 
+template <class T, class S, class X>
+void simulate_residuals(const T* dyn, const S* sta, const Record& r, const Window& w, const X* start, T* out) {
+  simulate_residuals(trial_law(dyn, sta, r), r, w, start, out);
+}
+
+// The output error of one window. Parameters: the law's [log sigma0, log sigma1], its static
+// part, and the window's own initial state [x, v] (m, m/s). The initial state is estimated with
+// the law: taken from the measured samples it carries their noise (central differences of a
+// position with 0.2 um noise at 1 kHz are 1.4e-4 m/s off), which grows linearly over the window
+// into tens of micrometres of error, far above the noise itself, and biases the static levels.
 struct OutputError {
   const Record* r;
   Window w;
   template <class T>
-  bool operator()(const T* dyn, const T* sta, T* residuals) const {
-    simulate_residuals(dyn, sta, *r, w, residuals);
+  bool operator()(const T* dyn, const T* sta, const T* start, T* residuals) const {
+    simulate_residuals(dyn, sta, *r, w, start, residuals);
     return true;
   }
 };
 
-// The same with the static part given: only [log sigma0, log sigma1] are parameters.
+// The same with the static part given: [log sigma0, log sigma1] and the initial state.
 struct OutputErrorStaticGiven {
   const Record* r;
   Window w;
   const double* sta;  // [sigma2, log Fc, dF, log vs], fixed
   template <class T>
-  bool operator()(const T* dyn, T* residuals) const {
-    simulate_residuals(dyn, sta, *r, w, residuals);
+  bool operator()(const T* dyn, const T* start, T* residuals) const {
+    simulate_residuals(dyn, sta, *r, w, start, residuals);
     return true;
   }
 };
+
+// The initial state [x, v] of window w from the measured samples: the position, and the velocity
+// by central differences (zero for a window that starts at rest).
+std::array<double, 2> measured_start(const Record& r, const Window& w) {
+  return {r.x[w.begin], w.at_rest ? 0.0 : r.v[w.begin]};
+}
 
 // Windows of the output error: from the record's start to the first velocity peak, then from
 // each peak to the next (one reversal each), then to the end. A peak is the sample of largest
@@ -201,7 +213,7 @@ class Progress final : public ceres::IterationCallback {
 
 // The static part of a given law: Fc, Fs, vs, delta, sigma2.
 struct StaticPart {
-  double Fc = 0, Fs = 0, vs = 0, delta = 2, sigma2 = 0;
+  double Fc = 0, Fs = 0, vs = 0, delta = 2, sigma2 = 0, vd = 0;
 };
 
 StaticPart static_part_of(const FrictionLaw& law, const LugreOptions& o) {
@@ -209,13 +221,13 @@ StaticPart static_part_of(const FrictionLaw& law, const LugreOptions& o) {
   const auto get = [&](const char* name) { return s.scalars.at(name); };
   StaticPart p;
   if (s.name == "stribeck") {
-    p = {get("Fc"), get("Fs"), get("vs"), get("delta"), get("Fv")};
+    p = {get("Fc"), get("Fs"), get("vs"), get("delta"), get("Fv"), o.vd};
   } else if (s.name == "lugre") {
-    p = {get("Fc"), get("Fs"), get("vs"), get("delta"), get("sigma2")};
+    p = {get("Fc"), get("Fs"), get("vs"), get("delta"), get("sigma2"), s.scalars.count("vd") && get("vd") > 0 ? get("vd") : o.vd};
   } else if (s.name == "static-coulomb-viscous") {
-    p = {get("Fc"), get("Fs"), o.stribeck_velocity, o.delta, get("Fv")};
+    p = {get("Fc"), get("Fs"), o.stribeck_velocity, o.delta, get("Fv"), o.vd};
   } else if (s.name == "coulomb-viscous") {
-    p = {get("Fc"), get("Fc"), o.stribeck_velocity, o.delta, get("Fv")};
+    p = {get("Fc"), get("Fc"), o.stribeck_velocity, o.delta, get("Fv"), o.vd};
   } else {
     throw std::invalid_argument("lugre: the static law '" + s.name +
                                 "' cannot give the LuGre static part; expected stribeck, lugre, static-coulomb-viscous "
@@ -240,6 +252,8 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   if (o.substeps < 1) throw std::invalid_argument("lugre: substeps = " + std::to_string(o.substeps) + " must be >= 1");
   if (!(std::isfinite(o.delta) && o.delta > 0))
     throw std::invalid_argument("lugre: delta = " + format_number(o.delta) + " must be > 0");
+  if (!(std::isfinite(o.vd) && o.vd >= 0))
+    throw std::invalid_argument("lugre: vd = " + format_number(o.vd) + " must be >= 0 (m/s or rad/s; 0 = constant damping)");
   const double dt = regular_time_step(d.time, "lugre");
   for (Eigen::Index k = 0; k < n; ++k) {
     if (!std::isfinite(d.force[k]))
@@ -249,6 +263,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   }
   const bool given = o.static_law.has_value();
   StaticPart st;
+  st.vd = o.vd;
   if (given) st = static_part_of(*o.static_law, o);
 
   Result r = make_result("lugre", "lugre");
@@ -331,21 +346,26 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   // sliding: quasi-static loading from rest gives x - x0 = -(Fs / sigma0) ln(1 - u / Fs)
   // (dz/dx = 1 - sigma0 z / Fs), so sigma0 is the least-squares slope of -Fs ln(1 - u / Fs)
   // against the displacement, on the samples with |u| below half the static level.
-  double sigma0 = std::numeric_limits<double>::quiet_NaN();
-  {
-    const Eigen::Index first_slide = sliding.empty() ? n : sliding.front();
+  // A function of the static level, as the multi-start below tries several.
+  const Eigen::Index first_slide = sliding.empty() ? n : sliding.front();
+  const auto presliding_sigma0 = [&](double Fs, int& used) {
     double sxy = 0, sxx = 0;
-    int used = 0;
+    used = 0;
     for (Eigen::Index k = 1; k < first_slide; ++k) {
       const double u = d.force[k], dx = d.position[k] - d.position[0];
-      if (std::abs(u) > 0.5 * st.Fs) break;
-      const double a = -(u > 0 ? 1.0 : -1.0) * st.Fs * std::log1p(-std::abs(u) / st.Fs);
+      if (std::abs(u) > 0.5 * Fs) break;
+      const double a = -(u > 0 ? 1.0 : -1.0) * Fs * std::log1p(-std::abs(u) / Fs);
       sxy += a * dx;
       sxx += dx * dx;
       ++used;
     }
     constexpr int kMinPresliding = 10;
-    if (used >= kMinPresliding && sxx > 0 && sxy > 0) sigma0 = sxy / sxx;
+    return used >= kMinPresliding && sxx > 0 && sxy > 0 ? sxy / sxx : std::numeric_limits<double>::quiet_NaN();
+  };
+  double sigma0 = std::numeric_limits<double>::quiet_NaN();
+  {
+    int used = 0;
+    sigma0 = presliding_sigma0(st.Fs, used);
     r.diagnostics.numbers["presliding_samples"] = used;
   }
   if (!std::isfinite(sigma0)) {
@@ -375,26 +395,95 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   rec.substeps = o.substeps;
   rec.M = M;
   rec.delta = st.delta;
+  rec.vd = st.vd;
   // Residuals relative to a micrometre-sized unit: Ceres's gradient tolerance is absolute, and
   // presliding displacements are micrometres.
   constexpr double kResidualUnit = 1e-6;  // m
   rec.scale = kResidualUnit;
+  // Stability limits of the fit's explicit velocity update (see the bounds below).
+  const double s0_limit = 0.5 * M / ((dt / o.substeps) * (dt / o.substeps)), s1_limit = 0.5 * M * o.substeps / dt;
   // Windows start at velocity peaks in steady sliding only: below a tenth of the top speed, or
   // below a few Stribeck velocities, the bristles lag behind their steady state (presliding creep
   // has velocity peaks too).
   constexpr double kPeakFraction = 0.1, kPeakStribeck = 3.0;
-  const std::vector<Window> windows =
-      make_windows(vel, std::max(kPeakFraction * vmax, kPeakStribeck * st.vs), std::abs(vel[0]) <= threshold);
+  const bool starts_at_rest = std::abs(vel[0]) <= threshold;
+  const auto windows_for = [&](double vs) {
+    return make_windows(vel, std::max(kPeakFraction * vmax, kPeakStribeck * vs), starts_at_rest);
+  };
+
+  // (2b) Multi-start of the static levels (static part identified only). The sliding samples of a
+  // record driven fast, the usual case, lie far above vs, where the Stribeck fit above cannot see
+  // Fs and vs: its vs collapses to a sliver of the slowest speed (or runs to a bound) and a fit
+  // started there never recovers, as Fs and vs decide where and how the simulated axis breaks
+  // away and the output error is far from quadratic in them. So each pair of a grid (Fs / Fc from
+  // 1.1 to 3, vs from 1e-4 to 0.1 of the top speed) and the Stribeck fit's own pair is simulated
+  // once over the record, with sigma0 from the presliding at that Fs and sigma1 critical, and the
+  // fit starts from the pair of least output error. About 60 simulations of the record in double:
+  // a fraction of one iteration of the fit.
+  struct Start {
+    double Fs, vs, sigma0, cost;
+  };
+  std::vector<Start> candidates;  // starting points of the fit, best-ranked first
+  if (!given) {
+    const auto start_cost = [&](double Fs, double vs, double s0) {
+      const double s1 = std::min(2 * std::sqrt(s0 * M), s1_limit);
+      const double dy[kNd] = {std::log(std::min(s0, s0_limit)), std::log(s1)};
+      const double sa[kNs] = {st.sigma2, std::log(st.Fc), Fs - st.Fc, std::log(vs)};
+      double cost = 0;
+      Eigen::VectorXd e;
+      for (const Window& w : windows_for(vs)) {
+        const int m = w.residuals();
+        e.resize(m);
+        simulate_residuals(dy, sa, rec, w, measured_start(rec, w).data(), e.data());
+        // The measured start of a window carries the position noise, and its velocity error grows
+        // into a drift over the window: the line a + b t that best fits the residuals is taken out
+        // (to first order what fitting the start, as the fit below does, would remove), so that the
+        // candidates are ranked on what the law explains.
+        Eigen::MatrixXd X(m, 2);
+        X.col(0).setOnes();
+        X.col(1) = Eigen::VectorXd::LinSpaced(m, 1.0, static_cast<double>(m));
+        if (w.at_rest) X.col(1).setZero();
+        const Eigen::VectorXd coef = X.colPivHouseholderQr().solve(e);
+        cost += (e - X * coef).squaredNorm();
+      }
+      return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
+    };
+    const double deflection_s0 = sigma0 * st.Fs;  // sigma0 = this / Fs when no presliding is seen
+    const auto s0_at = [&](double Fs) {
+      int used = 0;
+      const double s0 = presliding_sigma0(Fs, used);
+      return std::isfinite(s0) ? s0 : deflection_s0 / Fs;
+    };
+    candidates.push_back({st.Fs, st.vs, sigma0, start_cost(st.Fs, st.vs, sigma0)});
+    const double fit_cost = candidates.back().cost;
+    constexpr double kFsRatios[] = {1.1, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0};
+    constexpr double kVsFractions[] = {1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 0.1};
+    for (double ratio : kFsRatios) {
+      const double Fs = ratio * st.Fc, s0 = s0_at(Fs);
+      for (double fraction : kVsFractions) candidates.push_back({Fs, fraction * vmax, s0, start_cost(Fs, fraction * vmax, s0)});
+    }
+    std::sort(candidates.begin(), candidates.end(), [](const Start& a, const Start& b) { return a.cost < b.cost; });
+    constexpr std::size_t kStarts = 2;  // fits tried at most, best-ranked first (see the stop rule below)
+    candidates.resize(std::min(candidates.size(), kStarts));
+    const Start& best = candidates.front();
+    r.diagnostics.groups["multistart"] = {{"Fs", best.Fs}, {"vs", best.vs}, {"sigma0", best.sigma0},
+                                          {"cost", best.cost * kResidualUnit * kResidualUnit},
+                                          {"cost_static_fit_start", fit_cost * kResidualUnit * kResidualUnit}};
+    st.Fs = best.Fs;
+    st.vs = best.vs;
+    sigma0 = best.sigma0;
+    sigma1 = 2 * std::sqrt(sigma0 * M);
+  }
+  const std::vector<Window> windows = windows_for(st.vs);
 
   // Starts inside the stability bounds set below (a stiffer contact than the sample rate and
   // substeps can follow: the warning says so).
   {
-    const double h = dt / o.substeps;
-    if (sigma0 > 0.5 * M / (h * h) || sigma1 > 0.5 * M / h)
+    if (sigma0 > s0_limit || sigma1 > s1_limit)
       warn("the starting sigma0 = " + format_number(sigma0) + " or sigma1 = " + format_number(sigma1) +
            " is beyond what the fit's simulation step resolves; raise --substeps or the sample rate");
-    sigma0 = std::min(sigma0, 0.5 * M / (h * h));
-    sigma1 = std::min(sigma1, 0.5 * M / h);
+    sigma0 = std::min(sigma0, s0_limit);
+    sigma1 = std::min(sigma1, s1_limit);
   }
   double dyn[kNd] = {std::log(sigma0), std::log(sigma1)};
   double sta[kNs] = {st.sigma2, std::log(st.Fc), st.Fs - st.Fc, std::log(st.vs)};
@@ -403,15 +492,22 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
 
   ceres::Problem problem;
   std::vector<ceres::CostFunction*> costs;
+  std::vector<std::array<double, 2>> starts;  // initial state [x, v] of each window
+  starts.reserve(windows.size());
   for (const Window& w : windows) {
+    starts.push_back(measured_start(rec, w));
+    double* start = starts.back().data();
     if (given) {
-      costs.push_back(new ceres::AutoDiffCostFunction<OutputErrorStaticGiven, ceres::DYNAMIC, kNd>(
+      costs.push_back(new ceres::AutoDiffCostFunction<OutputErrorStaticGiven, ceres::DYNAMIC, kNd, 2>(
           new OutputErrorStaticGiven{&rec, w, sta}, w.residuals()));
-      problem.AddResidualBlock(costs.back(), nullptr, dyn);
+      problem.AddResidualBlock(costs.back(), nullptr, dyn, start);
     } else {
-      costs.push_back(new ceres::AutoDiffCostFunction<OutputError, ceres::DYNAMIC, kNd, kNs>(new OutputError{&rec, w}, w.residuals()));
-      problem.AddResidualBlock(costs.back(), nullptr, dyn, sta);
+      costs.push_back(new ceres::AutoDiffCostFunction<OutputError, ceres::DYNAMIC, kNd, kNs, 2>(new OutputError{&rec, w},
+                                                                                                w.residuals()));
+      problem.AddResidualBlock(costs.back(), nullptr, dyn, sta, start);
     }
+    // A window from rest starts at rest: only its position is free.
+    if (w.at_rest) problem.SetManifold(start, new ceres::SubsetManifold(2, {1}));
   }
   const double h = dt / o.substeps;
   // The explicit velocity update is stable for sigma1 h / M < 2 and sqrt(sigma0 / M) h < 2; keep a
@@ -444,81 +540,185 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
     so.callbacks.push_back(progress.get());
   }
   ceres::Solver::Summary summary;
-  int iterations = 0;
-  if (!given) {
-    // Stage 1: the static part alone, the dynamic one held at its start. The static levels decide
-    // where the axis slides at all, and with them off, sigma0 and sigma1 would first be bent to
-    // explain sliding they have no say in (a local minimum the joint fit does not leave).
-    problem.SetParameterBlockConstant(dyn);
+  int iterations = 0, fits = 0;
+  double initial_cost = 0;
+  // One fit from a start `c` (null: the values in place, the static part given), joint or staged.
+  // Staged: stage 1 fits sigma0, sigma1 and the windows' starts with the static part held at the
+  // start's pair (sigma1 starts at critical damping, up to several times off, and a joint first
+  // step from there can push the static levels far away to make up for it: sigma1 then collapses
+  // and vs runs to its bound, as seen on a light axis driven at 1 Hz); stage 2 fits everything.
+  const auto fit_from = [&](const Start* c, bool staged) {
+    if (c != nullptr) {
+      dyn[kLogS0] = std::log(std::min(c->sigma0, s0_limit));
+      dyn[kLogS1] = std::log(std::min(2 * std::sqrt(c->sigma0 * M), s1_limit));
+      sta[kDF] = c->Fs - st.Fc;
+      sta[kLogVs] = std::log(c->vs);
+      sta[kS2] = st.sigma2;
+      sta[kLogFc] = std::log(st.Fc);
+      for (std::size_t i = 0; i < windows.size(); ++i) starts[i] = measured_start(rec, windows[i]);
+    }
+    if (staged) {
+      problem.SetParameterBlockConstant(sta);
+      ceres::Solve(so, &problem, &summary);
+      iterations += static_cast<int>(summary.iterations.size()) - 1;
+      initial_cost = summary.initial_cost;
+      problem.SetParameterBlockVariable(sta);
+    }
     ceres::Solve(so, &problem, &summary);
+    if (!staged) initial_cost = summary.initial_cost;
     iterations += static_cast<int>(summary.iterations.size()) - 1;
-    r.diagnostics.numbers["cost_initial"] = summary.initial_cost * kResidualUnit * kResidualUnit;
-    problem.SetParameterBlockVariable(dyn);
+    ++fits;
+    return summary.final_cost;
+  };
+  if (given) {
+    fit_from(nullptr, false);
+  } else {
+    // Multi-start: the fits from the best-ranked starts, until one reproduces the record to its
+    // noise: the residual RMS within twice the position noise, estimated from the fourth
+    // differences of the position (white noise of variance s^2 gives 70 s^2 there; the motion
+    // itself adds its fourth derivative times dt^4, negligible at the sample rates this method
+    // needs), or within 1e-4 of the position's RMS excursion for noise-free records (the fixed
+    // step's own error). The best fit of those tried is kept.
+    Eigen::VectorXd d4(std::max<Eigen::Index>(n - 4, 1));
+    d4.setZero();
+    for (Eigen::Index k = 0; k + 4 < n; ++k)
+      d4[k] = std::abs(d.position[k] - 4 * d.position[k + 1] + 6 * d.position[k + 2] - 4 * d.position[k + 3] +
+                       d.position[k + 4]);
+    std::nth_element(d4.data(), d4.data() + d4.size() / 2, d4.data() + d4.size());
+    constexpr double kMadToStd = 1.4826;  // median absolute deviation to std of a normal distribution
+    const double noise_std = kMadToStd * d4[d4.size() / 2] / std::sqrt(70.0);
+    const double excursion = std::sqrt((d.position.array() - d.position.mean()).square().mean());
+    constexpr double kNoiseFactor = 2.0, kNoiseFreeFraction = 1e-4;
+    const double good_rms = std::max(kNoiseFactor * noise_std, kNoiseFreeFraction * excursion);
+    r.diagnostics.numbers["position_noise_std"] = noise_std;
+    double best_cost = std::numeric_limits<double>::infinity();
+    std::array<double, kNd> best_dyn{};
+    std::array<double, kNs> best_sta{};
+    std::vector<std::array<double, 2>> best_starts;
+    ceres::Solver::Summary best_summary;
+    double best_initial = 0;
+    // Each start is fitted jointly, then staged when that fails: neither alone reached the noise
+    // on every record tried. At most kMaxFits fits.
+    constexpr int kMaxFits = 4;
+    for (int attempt = 0; attempt < kMaxFits && attempt / 2 < static_cast<int>(candidates.size()); ++attempt) {
+      const double cost = fit_from(&candidates[static_cast<std::size_t>(attempt / 2)], attempt % 2 == 1);
+      if (cost < best_cost) {
+        best_cost = cost;
+        std::copy(dyn, dyn + kNd, best_dyn.begin());
+        std::copy(sta, sta + kNs, best_sta.begin());
+        best_starts = starts;
+        best_summary = summary;
+        best_initial = initial_cost;
+      }
+      const double rms = kResidualUnit * std::sqrt(2 * cost / static_cast<double>(n - 1));
+      if (rms <= good_rms) break;
+    }
+    std::copy(best_dyn.begin(), best_dyn.end(), dyn);
+    std::copy(best_sta.begin(), best_sta.end(), sta);
+    starts = best_starts;
+    summary = best_summary;
+    initial_cost = best_initial;
+    r.diagnostics.numbers["fits"] = fits;
   }
-  const double initial_cost = given ? 0.0 : summary.initial_cost;
-  ceres::Solve(so, &problem, &summary);
-  iterations += static_cast<int>(summary.iterations.size()) - 1;
 
-  // Jacobian at the solution: standard deviations s^2 (J'J)^-1 over the free parameters.
+  // Jacobian at the solution: standard deviations s^2 A^-1 over the free law parameters, where
+  // A is J'J with the windows' initial states eliminated (their Schur complement: the law's
+  // parameters must explain the record whatever each window's start).
   // Residuals (m) and Jacobian (m per internal unit) over all windows; sample 0 has none.
   const Eigen::Index nr = n - 1;
+  const int p_free = given ? kNd : kNd + kNs;
   Eigen::VectorXd e(nr);
-  Eigen::Matrix<double, Eigen::Dynamic, kNd + kNs> J(nr, kNd + kNs);
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nr, p_free);
+  Eigen::MatrixXd A_int = Eigen::MatrixXd::Zero(p_free, p_free);
+  int nuisance = 0;
   for (std::size_t i = 0; i < windows.size(); ++i) {
     const Window& w = windows[i];
     const int m = w.residuals();
     Eigen::Matrix<double, Eigen::Dynamic, kNd, Eigen::RowMajor> Jd(m, kNd);
     Eigen::Matrix<double, Eigen::Dynamic, kNs, Eigen::RowMajor> Js = Eigen::MatrixXd::Zero(m, kNs);
-    const double* params[2] = {dyn, sta};  // the given-static cost reads only the first
-    double* jac[2] = {Jd.data(), Js.data()};
-    if (!costs[i]->Evaluate(params, e.data() + w.begin, jac)) return fail(r, "the simulation of the identified model failed");
-    J.block(w.begin, 0, m, kNd) = Jd;
-    J.block(w.begin, kNd, m, kNs) = Js;
+    Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> Jx(m, 2);
+    const double* params_full[3] = {dyn, sta, starts[i].data()};
+    const double* params_given[2] = {dyn, starts[i].data()};
+    double* jac_full[3] = {Jd.data(), Js.data(), Jx.data()};
+    double* jac_given[2] = {Jd.data(), Jx.data()};
+    if (!costs[i]->Evaluate(given ? params_given : params_full, e.data() + w.begin, given ? jac_given : jac_full))
+      return fail(r, "the simulation of the identified model failed");
+    Eigen::MatrixXd Jw(m, p_free);
+    Jw.leftCols(kNd) = Jd;
+    if (!given) Jw.rightCols(kNs) = Js;
+    J.middleRows(w.begin, m) = Jw;
+    const Eigen::MatrixXd Jn = w.at_rest ? Eigen::MatrixXd(Jx.leftCols(1)) : Eigen::MatrixXd(Jx);
+    nuisance += static_cast<int>(Jn.cols());
+    const Eigen::MatrixXd cross = Jw.transpose() * Jn;
+    A_int += Jw.transpose() * Jw - cross * (Jn.transpose() * Jn).ldlt().solve(cross.transpose());
   }
   e *= kResidualUnit;
   J *= kResidualUnit;
-  const int p_free = given ? kNd : kNd + kNs;
-  const Eigen::MatrixXd Jf = J.leftCols(p_free);
-  const double dof = std::max<double>(1.0, static_cast<double>(nr - p_free));
+  A_int *= kResidualUnit * kResidualUnit;
+  const double dof = std::max<double>(1.0, static_cast<double>(nr - p_free - nuisance));
   const double s2 = e.squaredNorm() / dof;
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jf, Eigen::ComputeThinV);
-  const auto& sv = svd.singularValues();
-  Eigen::MatrixXd cov_int = Eigen::MatrixXd::Zero(p_free, p_free);
-  bool singular = false;
-  for (int i = 0; i < p_free; ++i) {
-    if (!(sv[i] > 1e-12 * sv[0])) {
-      singular = true;
-      continue;
-    }
-    cov_int += svd.matrixV().col(i) * svd.matrixV().col(i).transpose() / (sv[i] * sv[i]);
+  {
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J);
+    const auto& sv = svd.singularValues();
+    r.diagnostics.condition_number = sv[p_free - 1] > 0 ? sv[0] / sv[p_free - 1] : std::numeric_limits<double>::infinity();
   }
-  cov_int *= s2;
-  r.diagnostics.condition_number = sv[p_free - 1] > 0 ? sv[0] / sv[p_free - 1] : std::numeric_limits<double>::infinity();
-  if (singular) warn("the position does not depend on every parameter (rank-deficient Jacobian): some std are understated");
 
-  // Physical values [sigma0, sigma1, sigma2, Fc, Fs, vs] and the Jacobian D of the map.
+  // Physical values, and the map T from them to the internal parameters (d internal / d physical;
+  // the internal ones are logs and dF = Fs - Fc): the information in [sigma0, sigma1, sigma2, Fc,
+  // Fs, vs] is T' A T.
   const double S0 = std::exp(dyn[kLogS0]), S1 = std::exp(dyn[kLogS1]);
   const double S2 = sta[kS2], FC = std::exp(sta[kLogFc]), FS = FC + sta[kDF], VS = std::exp(sta[kLogVs]);
-  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(6, p_free);
-  D(0, kLogS0) = S0;
-  D(1, kLogS1) = S1;
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(p_free, p_free);
+  T(kLogS0, 0) = 1 / S0;
+  T(kLogS1, 1) = 1 / S1;
   if (!given) {
-    D(2, kNd + kS2) = 1;
-    D(3, kNd + kLogFc) = FC;
-    D(4, kNd + kLogFc) = FC;
-    D(4, kNd + kDF) = 1;
-    D(5, kNd + kLogVs) = VS;
+    T(kNd + kS2, 2) = 1;
+    T(kNd + kLogFc, 3) = 1 / FC;
+    T(kNd + kDF, 3) = -1;
+    T(kNd + kDF, 4) = 1;
+    T(kNd + kLogVs, 5) = 1 / VS;
   }
-  const Eigen::VectorXd stdev = (D * cov_int * D.transpose()).diagonal().cwiseMax(0.0).cwiseSqrt();
+  const Eigen::MatrixXd information = T.transpose() * A_int * T;
 
-  const auto add = [&](const std::string& name, double v, double s, Quantity q) { add_parameter(r, name, v, s, q, o.axis); };
-  add("sigma0", S0, stdev[0], Quantity::stiffness);
-  add("sigma1", S1, stdev[1], Quantity::viscous);
-  add("sigma2", S2, stdev[2], Quantity::viscous);
-  add("Fc", FC, stdev[3], Quantity::force);
-  add("Fs", FS, stdev[4], Quantity::force);
-  add("vs", VS, stdev[5], Quantity::velocity);
-  add("delta", st.delta, 0.0, Quantity::dimensionless);
+  // Parameters held from `static_law` (and delta, vd) keep std 0.
+  const auto add = [&](const std::string& name, double v, Quantity q) { add_parameter(r, name, v, 0.0, q, o.axis); };
+  add("sigma0", S0, Quantity::stiffness);
+  add("sigma1", S1, Quantity::viscous);
+  add("sigma2", S2, Quantity::viscous);
+  add("Fc", FC, Quantity::force);
+  add("Fs", FS, Quantity::force);
+  add("vs", VS, Quantity::velocity);
+  add("delta", st.delta, Quantity::dimensionless);
+  if (st.vd > 0) add("vd", st.vd, Quantity::velocity);
+  {
+    // Standard deviations s^2 (T' A T)^-1 through the shared rule (identify/uncertainty.hpp): a
+    // parameter at a bound of the fit or not determined by the record gets std NaN and a warning.
+    const std::vector<std::string> all = {"sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs"};
+    const std::vector<std::string> names(all.begin(), all.begin() + p_free);
+    std::vector<ParameterState> states(names.size());
+    // Each internal parameter against its bounds (Ceres stops exactly on a bound it hits); the
+    // scale sets the tolerance at a bound of 0: sigma2 against the viscous coefficient that would
+    // carry Fc at the top speed, dF = Fs - Fc against Fc. Internal i is physical i.
+    for (int i = 0; i < p_free; ++i) {
+      double* block = i < kNd ? dyn : sta;
+      const int j = i < kNd ? i : i - kNd;
+      const double scale = i == kNd + kS2 ? FC / vmax : (i == kNd + kDF ? FC : 1.0);
+      if (is_at_bound(block[j], problem.GetParameterLowerBound(block, j), problem.GetParameterUpperBound(block, j), scale))
+        states[static_cast<std::size_t>(i)].at_bound = true;
+    }
+    // A first pass finds the parameters whose std would exceed their value: the record does not
+    // give even their order of magnitude (all six are >= 0), so they count as undetermined.
+    Result probe = r;
+    set_uncertainty_from_information(probe, names, information, s2, states);
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const ParameterEstimate* p = probe.find(names[i]);
+      if (!states[i].at_bound && std::isfinite(p->std) && p->std > std::abs(p->value)) {
+        states[i].undetermined = true;
+        states[i].reason = "its linearised std " + format_number(p->std) + " exceeds its value";
+      }
+    }
+    set_uncertainty_from_information(r, names, information, s2, states);
+  }
 
   Eigen::VectorXd x_sim = d.position;
   x_sim.tail(nr) += e;
@@ -526,7 +726,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
 
   auto& num = r.diagnostics.numbers;
   num["iterations"] = iterations;
-  num["cost_initial"] = (given ? summary.initial_cost : initial_cost) * kResidualUnit * kResidualUnit;
+  num["cost_initial"] = initial_cost * kResidualUnit * kResidualUnit;
   num["cost_final"] = summary.final_cost * kResidualUnit * kResidualUnit;
   num["substeps"] = o.substeps;
   num["windows"] = static_cast<double>(windows.size());
@@ -547,6 +747,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   lg.Fs = FS;
   lg.vs = VS;
   lg.delta = st.delta;
+  lg.vd = st.vd;
   try {
     r.law = FrictionLaw(lg).to_spec();
     const Passivity pv = lg.passivity();
@@ -565,7 +766,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
     // stricter figure, since errors carry over from reversal to reversal.
     const Window whole{0, static_cast<int>(n) - 1, windows.front().at_rest};
     Eigen::VectorXd free_run = d.position;
-    simulate_residuals(dyn, sta, rec, whole, free_run.data() + 1);
+    simulate_residuals(dyn, sta, rec, whole, starts.front().data(), free_run.data() + 1);
     free_run.tail(nr) = free_run.tail(nr) * kResidualUnit + d.position.tail(nr);
     const Eigen::VectorXd dx = d.position.array() - d.position[0];
     num["free_run_relative_error_percent"] = 100.0 * (free_run - d.position).norm() / dx.norm();

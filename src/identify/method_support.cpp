@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "frictionlab/signal/sampling.hpp"
+
 namespace frictionlab::detail {
 
 Result make_result(const std::string& method, const std::string& model) {
@@ -22,7 +24,7 @@ Result fail(Result& r, const std::string& message) {
 }
 
 void add_parameter(Result& r, const std::string& name, double value, double std, Quantity q, Axis axis) {
-  r.parameters.push_back({name, value, std, std::string(unit(q, axis))});
+  r.parameters.push_back({name, value, std, std::string(unit(q, axis)), ""});
 }
 
 void set_fit(Result& r, const Eigen::VectorXd& y, const Eigen::VectorXd& y_hat) {
@@ -63,25 +65,19 @@ LinearFit least_squares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y) {
     f.stdev[i] = std::sqrt(s2 * d);
   }
   f.rmse = std::sqrt(e.squaredNorm() / static_cast<double>(n));
+  const Eigen::MatrixXd vs = V * s.head(p).asDiagonal();
+  f.information = vs * vs.transpose();
+  f.residual_variance = s2;
   f.ok = true;
   return f;
 }
 
 double regular_time_step(const Eigen::VectorXd& t, const std::string& method) {
-  const Eigen::Index n = t.size();
-  if (n < 3) throw std::invalid_argument(method + ": " + std::to_string(n) + " samples are too few (need at least 3)");
-  const double dt = (t[n - 1] - t[0]) / static_cast<double>(n - 1);
-  for (Eigen::Index k = 0; k < n; ++k) {
-    if (!std::isfinite(t[k]))
-      throw std::invalid_argument(method + ": time at sample " + std::to_string(k) + " is not finite");
-    if (k > 0 && !(t[k] > t[k - 1]))
-      throw std::invalid_argument(method + ": time must increase; sample " + std::to_string(k) + " (" + format_number(t[k]) +
-                                  " s) is not after sample " + std::to_string(k - 1) + " (" + format_number(t[k - 1]) + " s)");
-    if (k > 0 && std::abs(t[k] - t[k - 1] - dt) > 0.01 * dt)
-      throw std::invalid_argument(method + ": time is not regularly sampled; step " + std::to_string(k) + " is " +
-                                  format_number(t[k] - t[k - 1]) + " s, the mean step " + format_number(dt) + " s");
-  }
-  return dt;
+  RegularSamplingCheck check;  // the one rule of signal/sampling.hpp: 1 % of the median step
+  check.min_samples = 3;
+  check.where = method + ": ";
+  check.requirement = method + " needs regularly sampled data";
+  return check_regular_sampling(t, check).mean;
 }
 
 }  // namespace frictionlab::detail

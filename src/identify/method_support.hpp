@@ -31,14 +31,18 @@ struct LinearFit {
   bool ok = false;
   std::string message;
   Eigen::VectorXd beta, stdev;
+  Eigen::MatrixXd information;   ///< X'X (parameter units^-2 times the unit of y squared)
+  double residual_variance = 0;  ///< s^2
   double rmse = 0;
   double condition_number = 0;
 };
 LinearFit least_squares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y);
 
-/// Mean step of a strictly increasing, regular time vector (s).
-/// \throws std::invalid_argument "METHOD: time ..." naming the sample index (0-based) of the
-///         first non-finite, non-increasing or irregular (more than 1 % off the mean) step.
+/// Mean step of a strictly increasing, regular time vector (s): check_regular_sampling of
+/// signal/sampling.hpp with at least 3 samples.
+/// \throws SamplingError (a std::invalid_argument) "METHOD: sample K: ..." naming the sample
+///         (1-based) of the first non-finite, non-increasing or irregular (more than 1 % off the
+///         median step) time stamp.
 double regular_time_step(const Eigen::VectorXd& time, const std::string& method);
 
 }  // namespace frictionlab::detail

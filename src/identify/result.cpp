@@ -68,7 +68,19 @@ std::string to_json(const Result& r, int indent) {
     }
     d[key] = arr;
   }
+  for (const auto& [key, word] : r.diagnostics.texts) d[key] = word;
   d["condition_number"] = number(r.diagnostics.condition_number);
+  d["undetermined"] = r.diagnostics.undetermined;
+  d["at_bound"] = r.diagnostics.at_bound;
+  if (!r.diagnostics.correlation.names.empty()) {
+    nlohmann::json m = nlohmann::json::array();
+    for (const auto& row : r.diagnostics.correlation.matrix) {
+      nlohmann::json jr = nlohmann::json::array();
+      for (double x : row) jr.push_back(number(x));
+      m.push_back(jr);
+    }
+    d["correlation"] = {{"names", r.diagnostics.correlation.names}, {"matrix", m}};
+  }
   d["warnings"] = r.diagnostics.warnings;
   j["diagnostics"] = d;
   if (r.law) {

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "frictionlab/identify/uncertainty.hpp"
+
 namespace frictionlab {
 
 StaticFitModel parse_static_fit_model(const std::string& name) {
@@ -171,6 +173,11 @@ struct OneSided {
   Eigen::Matrix<double, kNp + 1, kNp + 1> G = Eigen::Matrix<double, kNp + 1, kNp + 1>::Zero();  // [J r]'[J r] at p
   int iterations = 0;
   bool converged = false;
+  double s2 = 0;           // residual variance
+  double vmax = 0;         // fastest |v|, m/s or rad/s (sets vs's bounds)
+  double slowest = 0;      // slowest |v|
+  double force_scale = 0;  // max |F|, sets the tolerance of the bounds at 0
+  int below_vs = 0;        // points slower than the fitted vs
 };
 
 // Linear least squares F = Fc sign(v) + Fv v: exact, no start needed.
@@ -330,6 +337,11 @@ OneSided fit_one_sided(const Eigen::VectorXd& v, const Eigen::VectorXd& f, const
   best.cov.setZero();
   for (int a = 0; a < nf; ++a)
     for (int b = 0; b < nf; ++b) best.cov(free_idx[a], free_idx[b]) = s2 * Ainv(a, b);
+  best.s2 = s2;
+  best.vmax = vmax;
+  best.slowest = d.a.minCoeff();
+  best.force_scale = d.g.abs().maxCoeff();
+  best.below_vs = static_cast<int>((d.a < best.p[kVs]).count());
   return best;
 }
 
@@ -389,11 +401,81 @@ void finish(StaticFit& fit, const Eigen::VectorXd& v, const Eigen::VectorXd& f, 
 std::vector<FittedParameter> stribeck_parameters(const OneSided& s, const std::string& suffix) {
   auto sd = [&](int k) { return std::sqrt(std::max(0.0, s.cov(k, k))); };
   const double var_fs = s.cov(kFc, kFc) + s.cov(kDF, kDF) + 2 * s.cov(kFc, kDF);
-  return {{"Fc" + suffix, s.p[kFc], sd(kFc), Quantity::force},
-          {"Fs" + suffix, s.p[kFc] + s.p[kDF], std::sqrt(std::max(0.0, var_fs)), Quantity::force},
-          {"vs" + suffix, s.p[kVs], sd(kVs), Quantity::velocity},
-          {"delta" + suffix, s.p[kDelta], sd(kDelta), Quantity::dimensionless},
-          {"Fv" + suffix, s.p[kFv], sd(kFv), Quantity::viscous}};
+  return {{"Fc" + suffix, s.p[kFc], sd(kFc), Quantity::force, ""},
+          {"Fs" + suffix, s.p[kFc] + s.p[kDF], std::sqrt(std::max(0.0, var_fs)), Quantity::force, ""},
+          {"vs" + suffix, s.p[kVs], sd(kVs), Quantity::velocity, ""},
+          {"delta" + suffix, s.p[kDelta], sd(kDelta), Quantity::dimensionless, ""},
+          {"Fv" + suffix, s.p[kFv], sd(kFv), Quantity::viscous, ""}};
+}
+
+// Information (J'J / s^2) of one side's reported parameters (Fc, Fs, vs, delta, Fv; delta left
+// out when held), their names and states (bounds; the Stribeck part undetermined without slow
+// enough points), appended to the whole fit's.
+struct Information {
+  std::vector<std::string> names;
+  std::vector<ParameterState> states;
+  Eigen::MatrixXd A = Eigen::MatrixXd(0, 0);
+};
+
+void add_side_information(const OneSided& s, const std::string& suffix, const StaticFitOptions& o, Information& info) {
+  // Reported = T internal with Fs = Fc + dF; J_reported = J_internal T^-1.
+  Eigen::Matrix<double, kNp, kNp> Tinv = Eigen::Matrix<double, kNp, kNp>::Identity();
+  Tinv(kDF, kFc) = -1.0;
+  const Eigen::Matrix<double, kNp, kNp> JtJ = s.G.topLeftCorner<kNp, kNp>();
+  const double s2 = s.s2 > 0 ? s.s2 : std::numeric_limits<double>::min();
+  const Eigen::Matrix<double, kNp, kNp> A = Tinv.transpose() * JtJ * Tinv / s2;
+  const bool held = o.fixed_delta > 0;
+  const double inf = std::numeric_limits<double>::infinity();
+  const double fscale = std::max(s.force_scale, std::numeric_limits<double>::min());
+  std::vector<int> idx;
+  for (int k = 0; k < kNp; ++k) {
+    if (k == kDelta && held) continue;
+    idx.push_back(k);
+    ParameterState st;
+    switch (k) {
+      case kFc: st.at_bound = is_at_bound(s.p[kFc], 0.0, inf, fscale); break;
+      case kDF:
+        st.at_bound = is_at_bound(s.p[kDF], 0.0, inf, fscale);
+        if (st.at_bound) st.reason = "Fs = Fc: the points show no Stribeck peak";
+        break;
+      case kVs: st.at_bound = is_at_bound(s.p[kVs], 1e-6 * s.vmax, 10 * s.vmax, s.vmax); break;
+      case kDelta: st.at_bound = is_at_bound(s.p[kDelta], o.delta_min, o.delta_max, 1.0); break;
+      case kFv: st.at_bound = is_at_bound(s.p[kFv], 0.0, inf, fscale / std::max(s.vmax, 1e-300)); break;
+    }
+    // The Stribeck curve is the slow points' business: without them vs and delta are guesses.
+    if ((k == kVs || k == kDelta) && !st.at_bound &&
+        (s.slowest > 2 * s.p[kVs] || s.below_vs < o.min_points_below_vs)) {
+      st.undetermined = true;
+      st.reason = "the slowest point is at " + detail::format_value(s.slowest, 3) + ", " +
+                  std::to_string(s.below_vs) + " point(s) lie below vs; the Stribeck part needs points below vs";
+    }
+    info.states.push_back(st);
+  }
+  static const char* kNames[kNp] = {"Fc", "Fs", "vs", "delta", "Fv"};
+  const auto base = info.A.rows();
+  const auto m = static_cast<Eigen::Index>(idx.size());
+  Eigen::MatrixXd grown = Eigen::MatrixXd::Zero(base + m, base + m);
+  grown.topLeftCorner(base, base) = info.A;
+  for (Eigen::Index a = 0; a < m; ++a) {
+    info.names.push_back(kNames[idx[static_cast<std::size_t>(a)]] + suffix);
+    for (Eigen::Index b = 0; b < m; ++b) grown(base + a, base + b) = A(idx[static_cast<std::size_t>(a)], idx[static_cast<std::size_t>(b)]);
+  }
+  info.A = grown;
+}
+
+// Applies the honest-uncertainty rules to the fit's parameters (identify/uncertainty.hpp).
+void apply_uncertainty(StaticFit& fit, const Information& info, Axis axis = Axis::linear) {
+  Result r;
+  for (const auto& q : fit.parameters) r.parameters.push_back({q.name, q.value, q.std, std::string(unit(q.quantity, axis)), ""});
+  set_uncertainty_from_information(r, info.names, info.A, 1.0, info.states);
+  for (std::size_t i = 0; i < fit.parameters.size(); ++i) {
+    fit.parameters[i].std = r.parameters[i].std;
+    fit.parameters[i].flag = r.parameters[i].flag;
+  }
+  for (auto& w : r.diagnostics.warnings) fit.warnings.push_back(std::move(w));
+  fit.undetermined = r.diagnostics.undetermined;
+  fit.at_bound = r.diagnostics.at_bound;
+  fit.correlation = r.diagnostics.correlation;
 }
 
 void stribeck_warnings(const OneSided& s, const std::string& side, std::vector<std::string>& w) {
@@ -419,9 +501,13 @@ StaticFit fit_static_law(const Eigen::VectorXd& velocity, const Eigen::VectorXd&
       Eigen::Matrix2d cov;
       linear_coulomb_viscous(velocity, force, Fc, Fv, &cov, &ssr);
       fit.law = CoulombViscous{std::max(Fc, 0.0), std::max(Fv, 0.0)};
-      fit.parameters = {{"Fc", Fc, std::sqrt(cov(0, 0)), Quantity::force}, {"Fv", Fv, std::sqrt(cov(1, 1)), Quantity::viscous}};
+      fit.parameters = {{"Fc", Fc, std::sqrt(cov(0, 0)), Quantity::force, ""}, {"Fv", Fv, std::sqrt(cov(1, 1)), Quantity::viscous, ""}};
       fit.iterations = 1;
       fit.converged = true;
+      if (cov.allFinite() && cov.determinant() > 0) {
+        Information info{{"Fc", "Fv"}, {}, cov.inverse()};
+        apply_uncertainty(fit, info);
+      }
       break;
     }
     case StaticFitModel::coulomb_viscous_asymmetric: {
@@ -437,10 +523,16 @@ StaticFit fit_static_law(const Eigen::VectorXd& velocity, const Eigen::VectorXd&
       // One direction only: F = Fc + Fv v with v > 0 (the sign column is constant 1).
       linear_coulomb_viscous(vp, fp, law.pos.Fc, law.pos.Fv, &cp, &ssr);
       linear_coulomb_viscous(vn, fn, law.neg.Fc, law.neg.Fv, &cn, &ssr);
-      fit.parameters = {{"Fc_pos", law.pos.Fc, std::sqrt(cp(0, 0)), Quantity::force},
-                        {"Fv_pos", law.pos.Fv, std::sqrt(cp(1, 1)), Quantity::viscous},
-                        {"Fc_neg", law.neg.Fc, std::sqrt(cn(0, 0)), Quantity::force},
-                        {"Fv_neg", law.neg.Fv, std::sqrt(cn(1, 1)), Quantity::viscous}};
+      fit.parameters = {{"Fc_pos", law.pos.Fc, std::sqrt(cp(0, 0)), Quantity::force, ""},
+                        {"Fv_pos", law.pos.Fv, std::sqrt(cp(1, 1)), Quantity::viscous, ""},
+                        {"Fc_neg", law.neg.Fc, std::sqrt(cn(0, 0)), Quantity::force, ""},
+                        {"Fv_neg", law.neg.Fv, std::sqrt(cn(1, 1)), Quantity::viscous, ""}};
+      if (cp.allFinite() && cn.allFinite() && cp.determinant() > 0 && cn.determinant() > 0) {
+        Information info{{"Fc_pos", "Fv_pos", "Fc_neg", "Fv_neg"}, {}, Eigen::MatrixXd::Zero(4, 4)};
+        info.A.topLeftCorner(2, 2) = cp.inverse();
+        info.A.bottomRightCorner(2, 2) = cn.inverse();
+        apply_uncertainty(fit, info);
+      }
       law.pos.Fc = std::max(law.pos.Fc, 0.0);
       law.pos.Fv = std::max(law.pos.Fv, 0.0);
       law.neg.Fc = std::max(law.neg.Fc, 0.0);
@@ -458,6 +550,9 @@ StaticFit fit_static_law(const Eigen::VectorXd& velocity, const Eigen::VectorXd&
       fit.iterations = s.iterations;
       fit.converged = s.converged;
       stribeck_warnings(s, "", fit.warnings);
+      Information info;
+      add_side_information(s, "", o, info);
+      apply_uncertainty(fit, info);
       known_ssr = s.point_ssr;
       break;
     }
@@ -481,6 +576,10 @@ StaticFit fit_static_law(const Eigen::VectorXd& velocity, const Eigen::VectorXd&
       fit.converged = p.converged && n.converged;
       stribeck_warnings(p, " (positive direction)", fit.warnings);
       stribeck_warnings(n, " (negative direction)", fit.warnings);
+      Information info;
+      add_side_information(p, "_pos", o, info);
+      add_side_information(n, "_neg", o, info);
+      apply_uncertainty(fit, info);
       known_ssr = p.point_ssr + n.point_ssr;
       break;
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "frictionlab/signal/segments.hpp"
@@ -59,16 +60,59 @@ std::vector<SweepPoint> sweep_points(const SweepData& d, const SweepOptions& o) 
     }
     return points;
   }
+  const bool by_reference = o.reference.size() > 0;
+  if (by_reference && o.reference.size() != n)
+    throw std::invalid_argument("sweep: the reference velocity has " + std::to_string(o.reference.size()) +
+                                " samples; expected " + std::to_string(n) + " like time");
+  if (by_reference && !o.reference.allFinite())
+    throw std::invalid_argument("sweep: the reference velocity has a sample that is not finite");
+  if (n < 2) throw std::invalid_argument("sweep: " + std::to_string(n) + " samples are too few");
+  const double dt = (d.time[n - 1] - d.time[0]) / static_cast<double>(n - 1);
+  // Segments are found on the reference as given, or on the smoothed measured velocity with a
+  // band that covers its measured noise.
+  const auto window = by_reference ? Eigen::Index{1}
+                                   : std::max<Eigen::Index>(1, std::lround(o.smoothing_fraction * o.min_duration / dt));
+  const Eigen::VectorXd track = by_reference ? o.reference : moving_average(d.velocity, window);
+  const double noise = by_reference ? 0.0 : difference_noise_std(d.velocity);
+  const double band = std::max(o.velocity_tolerance, o.noise_band * noise / std::sqrt(static_cast<double>(window)));
   SteadySegmentOptions so;
-  const double vmax = d.velocity.cwiseAbs().maxCoeff();
-  so.velocity_tolerance = o.velocity_tolerance;
+  const double vmax = track.cwiseAbs().maxCoeff();
+  so.velocity_tolerance = band;
   so.relative_tolerance = o.relative_tolerance;
+  if (!(so.velocity_tolerance > 0) && !(so.relative_tolerance > 0)) so.relative_tolerance = 0.01;
   so.min_duration = o.min_duration;
-  so.min_speed = o.min_speed >= 0 ? o.min_speed : 1e-3 * vmax;
-  for (const auto& seg : steady_segments(d.time, d.velocity, so)) {
-    const auto len = static_cast<Eigen::Index>(seg.size());
-    const auto skip = static_cast<Eigen::Index>(o.settle_fraction * static_cast<double>(len));
-    points.push_back(point_of(d, static_cast<Eigen::Index>(seg.begin) + skip, static_cast<Eigen::Index>(seg.end)));
+  // Standstill is told apart by the noise band below (a mean within its band of zero), so the
+  // floor is only against rounding: a slow level of a wide sweep (0.05 % of full speed) stays.
+  so.min_speed = o.min_speed >= 0 ? o.min_speed : 1e-6 * vmax;
+  const auto trim = by_reference ? Eigen::Index{0} : window / 2;  // the average blurs each edge by half a window
+  struct Range {
+    Eigen::Index b, e;
+    double mean;
+  };
+  std::vector<Range> ranges;
+  for (const auto& seg : steady_segments(d.time, track, so)) {
+    const auto b0 = static_cast<Eigen::Index>(seg.begin) + trim, e0 = static_cast<Eigen::Index>(seg.end) - trim;
+    if (e0 - b0 < 2) continue;
+    const double mean = track.segment(b0, e0 - b0).mean();
+    // Within its band of zero it cannot be told from standstill.
+    if (std::abs(mean) <= std::max(band, o.relative_tolerance * std::abs(mean))) continue;
+    // A level whose band broke once (its start still in the settling tail, a noise excursion)
+    // comes out as two segments in a row at the same speed: one level, one point.
+    if (!ranges.empty()) {
+      Range& last = ranges.back();
+      const double half = std::max(band, o.relative_tolerance * std::max(std::abs(mean), std::abs(last.mean)));
+      const double gap = d.time[b0] - d.time[last.e - 1];
+      if (std::abs(mean - last.mean) <= half && gap <= o.min_duration) {
+        last.e = e0;
+        last.mean = track.segment(last.b, last.e - last.b).mean();
+        continue;
+      }
+    }
+    ranges.push_back({b0, e0, mean});
+  }
+  for (const auto& g : ranges) {
+    const auto skip = static_cast<Eigen::Index>(o.settle_fraction * static_cast<double>(g.e - g.b));
+    points.push_back(point_of(d, g.b + skip, g.e));
   }
   return points;
 }
@@ -80,11 +124,21 @@ Result identify_sweep(const SweepData& d, const SweepOptions& o) {
                             : o.fit.model == StaticFitModel::coulomb_viscous ? "coulomb-viscous"
                                                                               : "coulomb-viscous-asymmetric";
   Result r = make_result("sweep", model);
+  if (d.time.size() >= 2 && o.windows.empty()) {
+    const double dt = (d.time[d.time.size() - 1] - d.time[0]) / static_cast<double>(d.time.size() - 1);
+    r.diagnostics.numbers["smoothing_samples"] =
+        o.reference.size() > 0 ? 1.0 : std::max(1.0, std::round(o.smoothing_fraction * o.min_duration / dt));
+    r.diagnostics.numbers["velocity_noise_std"] = difference_noise_std(d.velocity);
+    r.diagnostics.texts["segmented_on"] = o.reference.size() > 0 ? "reference" : "velocity";
+  }
   auto& list = r.diagnostics.lists["points"];
-  for (const auto& p : points)
+  auto& levels = r.diagnostics.lists["levels"];
+  for (const auto& p : points) {
     list.push_back({{"velocity", p.velocity}, {"velocity_std", p.velocity_std}, {"force", p.force},
                     {"force_std", p.force_std}, {"t_begin", p.t_begin}, {"t_end", p.t_end},
                     {"samples", static_cast<double>(p.samples)}});
+    levels.push_back({{"speed", p.velocity}, {"duration", p.t_end - p.t_begin}, {"samples", static_cast<double>(p.samples)}});
+  }
   r.diagnostics.numbers["segments"] = static_cast<double>(points.size());
   const int p = parameter_count(o.fit.model, o.fit.fixed_delta > 0);
   const int need = o.min_segments > 0 ? o.min_segments : p + 1;
@@ -107,11 +161,41 @@ Result identify_sweep(const SweepData& d, const SweepOptions& o) {
   } catch (const std::invalid_argument& e) {
     return fail(r, std::string("the segment means cannot be fitted: ") + e.what());
   }
-  for (const auto& q : fit.parameters) add_parameter(r, q.name, q.value, q.std, q.quantity, o.axis);
+  for (const auto& q : fit.parameters) {
+    add_parameter(r, q.name, q.value, q.std, q.quantity, o.axis);
+    r.parameters.back().flag = q.flag;
+  }
+  if (!std::isfinite(fit.relative_error_percent) || !std::isfinite(fit.rmse))
+    return fail(r, "the fit of the segment means gave figures that are not finite numbers (force zero throughout?); "
+                   "the data cannot give an answer");
   r.fit.relative_error_percent = fit.relative_error_percent;
   r.fit.rmse = fit.rmse;
   r.fit.samples = fit.samples;
+  // The Stribeck part needs slow points: say so in the terms of the sweep (its levels).
+  const bool stribeck = o.fit.model == StaticFitModel::stribeck || o.fit.model == StaticFitModel::stribeck_asymmetric;
+  if (stribeck) {
+    for (const char* side : {"", "_pos", "_neg"}) {
+      const auto* vs = r.find(std::string("vs") + side);
+      if (!vs) continue;
+      const double sgn = std::string(side) == "_neg" ? -1.0 : 1.0;
+      double slowest = std::numeric_limits<double>::infinity();
+      int below = 0;
+      for (const auto& q : points) {
+        if (*side && q.velocity * sgn <= 0) continue;
+        slowest = std::min(slowest, std::abs(q.velocity));
+        below += std::abs(q.velocity) < vs->value ? 1 : 0;
+      }
+      if (slowest > 2 * vs->value || below < o.fit.min_points_below_vs)
+        r.diagnostics.warnings.push_back(
+            "the Stribeck part" + std::string(*side ? (sgn > 0 ? " (positive direction)" : " (negative direction)") : "") +
+            " is not determined by the data: the slowest segment is at " + format_number(slowest) + " " + vs->unit + " (vs = " +
+            format_number(vs->value) + "), " + std::to_string(below) + " segment(s) below vs; add slower speeds");
+    }
+  }
   for (auto& w : fit.warnings) r.diagnostics.warnings.push_back(w);
+  r.diagnostics.undetermined = fit.undetermined;
+  r.diagnostics.at_bound = fit.at_bound;
+  r.diagnostics.correlation = fit.correlation;
   r.diagnostics.numbers["iterations"] = fit.iterations;
   for (const auto& q : points) {  // figure signals: the measured map and the fitted law over it
     r.series["velocity"].push_back(q.velocity);

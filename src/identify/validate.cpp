@@ -12,6 +12,7 @@
 #include "frictionlab/signal/decimate.hpp"
 #include "frictionlab/signal/differentiate.hpp"
 #include "frictionlab/signal/filtfilt.hpp"
+#include "frictionlab/signal/sampling.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 namespace frictionlab {
@@ -34,26 +35,10 @@ void check_signal(const ValidationData& d, const Vec& v, const char* name, Eigen
 
 // Mean step (s) after checking time is increasing and regular within 1 % of the median step.
 double checked_step(const ValidationData& d) {
-  const Vec& t = d.time;
-  const Eigen::Index n = t.size();
-  if (n < 2) throw std::invalid_argument(where(d) + "time has " + std::to_string(n) + " samples; expected many");
-  check_signal(d, t, "time", n);
-  std::vector<double> steps(static_cast<std::size_t>(n - 1));
-  for (Eigen::Index k = 1; k < n; ++k) {
-    if (!(t(k) > t(k - 1)))
-      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time " + detail::format_value(t(k), 6) +
-                                  " s is not greater than the previous " + detail::format_value(t(k - 1), 6) + " s");
-    steps[static_cast<std::size_t>(k - 1)] = t(k) - t(k - 1);
-  }
-  auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
-  std::nth_element(steps.begin(), mid, steps.end());
-  constexpr double kRegularTol = 0.01;  // relative step jitter accepted (EMPS: 2.4e-5)
-  for (Eigen::Index k = 1; k < n; ++k)
-    if (std::abs(t(k) - t(k - 1) - *mid) > kRegularTol * *mid)
-      throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": time step " + detail::format_value(t(k) - t(k - 1), 6) +
-                                  " s differs from the median step " + detail::format_value(*mid, 6) +
-                                  " s by more than 1 %; validation needs regularly sampled data");
-  return (t(n - 1) - t(0)) / static_cast<double>(n - 1);
+  RegularSamplingCheck check;  // the one rule of signal/sampling.hpp
+  check.where = where(d);
+  check.requirement = "validation needs regularly sampled data";
+  return check_regular_sampling(d.time, check).mean;
 }
 
 struct Motion {
@@ -163,13 +148,13 @@ Result validate_model(const IdentifiedModel& model, const Scenario& scenario, co
   r.diagnostics.numbers["mode_switches"] = static_cast<double>(tr.switches.size());
 
   const Axis axis = po.axis;
-  r.parameters.push_back({"M", model.axis.M, std::numeric_limits<double>::quiet_NaN(), std::string(unit(Quantity::inertia, axis))});
-  r.parameters.push_back({"offset", model.axis.offset, std::numeric_limits<double>::quiet_NaN(), std::string(unit(Quantity::force, axis))});
+  r.parameters.push_back({"M", model.axis.M, std::numeric_limits<double>::quiet_NaN(), std::string(unit(Quantity::inertia, axis)), ""});
+  r.parameters.push_back({"offset", model.axis.offset, std::numeric_limits<double>::quiet_NaN(), std::string(unit(Quantity::force, axis)), ""});
   for (const auto& [name, value] : model.law.to_spec().scalars) {
     const bool viscous = name.rfind("Fv", 0) == 0 || name == "sigma1" || name == "sigma2";
     const bool force = !viscous && name.rfind("F", 0) == 0;
     const std::string u = viscous ? std::string(unit(Quantity::viscous, axis)) : force ? std::string(unit(Quantity::force, axis)) : "";
-    r.parameters.push_back({name, value, std::numeric_limits<double>::quiet_NaN(), u});
+    r.parameters.push_back({name, value, std::numeric_limits<double>::quiet_NaN(), u, ""});
   }
 
   r.series["time"] = to_std(data.time);

@@ -1,7 +1,10 @@
 #include "frictionlab/io/atomic_write.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -10,16 +13,102 @@
 #include <unistd.h>
 
 namespace frictionlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// /dev and /proc hold devices and this process's descriptors (/dev/stdout, /proc/self/fd/1):
+// nothing there is ever renamed over or created.
+// (/dev/shm is a plain file system for shared memory: its files follow the usual rules.)
+bool system_path(const std::string& path) {
+  const std::string p = fs::path(path).lexically_normal().string();
+  return (p.rfind("/dev/", 0) == 0 && p.rfind("/dev/shm/", 0) != 0) || p.rfind("/proc/", 0) == 0;
+}
+
+struct Target {
+  OutputKind kind;
+  std::string path;  // where the rename goes (the symbolic link's target), or the path to open
+};
+
+// Classifies `path`. Missing parent directories are reported only when `parent_check` (the
+// early check); write_file_atomic lets mkstemp report them as an I/O failure.
+Target classify(const std::string& path, bool overwrite, bool parent_check) {
+  if (path.empty()) throw std::invalid_argument("output file name is empty");
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);  // follows symbolic links
+  const fs::file_type type = st.type();
+  if (type == fs::file_type::not_found || type == fs::file_type::none) {
+    if (system_path(path))
+      throw std::invalid_argument(path + ": no such file under /dev or /proc (frictionlab creates no files there)");
+    if (parent_check) {
+      const fs::path parent = fs::path(path).parent_path();
+      if (!parent.empty() && !fs::is_directory(parent, ec))
+        throw std::invalid_argument(path + ": directory " + parent.string() + " does not exist");
+    }
+    // A dangling symbolic link: the new file replaces the link (its target directory may not exist).
+    return {OutputKind::create, path};
+  }
+  switch (type) {
+    case fs::file_type::directory:
+      throw std::invalid_argument(path + " is a directory; expected a file name");
+    case fs::file_type::character:
+    case fs::file_type::fifo:
+      return {OutputKind::write_through, path};
+    case fs::file_type::regular: {
+      if (system_path(path)) return {OutputKind::write_through, path};
+      if (!overwrite) throw std::invalid_argument(path + " exists; pass --overwrite to replace it");
+      // Replace the file a symbolic link points to, not the link.
+      std::string target = path;
+      if (fs::is_symlink(fs::symlink_status(path, ec))) {
+        const fs::path resolved = fs::canonical(path, ec);
+        if (!ec) target = resolved.string();
+      }
+      return {OutputKind::replace, target};
+    }
+    case fs::file_type::block:
+      throw std::invalid_argument(path + " is a block device; expected a regular file, a character device or a FIFO");
+    case fs::file_type::socket:
+      throw std::invalid_argument(path + " is a socket; expected a regular file, a character device or a FIFO");
+    default:
+      throw std::invalid_argument(path + " is not a regular file, a character device or a FIFO");
+  }
+}
+
+// `cat > PATH`: open the existing device or FIFO and write it all. A regular file reached
+// through /dev or /proc is one of this process's descriptors (--json /dev/stdout > out.txt): it
+// is appended to, after what was already written there (the text table), never truncated.
+void write_through(const std::string& path, std::string_view content) {
+  std::error_code ec;
+  const bool regular = fs::is_regular_file(path, ec);
+  const int fd = ::open(path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC | (regular ? O_APPEND : 0));
+  if (fd < 0) throw std::runtime_error(path + ": cannot open for writing: " + std::strerror(errno));
+  std::size_t written = 0;
+  while (written < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = errno;
+      ::close(fd);
+      throw std::runtime_error(path + ": write failed: " + std::strerror(err));
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0 && errno != EINTR) throw std::runtime_error(path + ": write failed on close: " + std::strerror(errno));
+}
+
+}  // namespace
+
+OutputKind check_output_path(const std::string& path, bool overwrite) { return classify(path, overwrite, true).kind; }
 
 void write_file_atomic(const std::string& path, std::string_view content, const AtomicWriteOptions& options) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!options.overwrite && fs::exists(path, ec)) {
-    throw std::invalid_argument(path + " exists; pass --overwrite to replace it");
+  const Target target = classify(path, options.overwrite, false);
+  if (target.kind == OutputKind::write_through) {
+    write_through(target.path, content);
+    return;
   }
   // mkstemp gives a unique temporary in the target's directory, so the rename stays on one
   // file system and is atomic.
-  std::string tmpl = path + ".tmp-XXXXXX";
+  std::string tmpl = target.path + ".tmp-XXXXXX";
   const int fd = ::mkstemp(tmpl.data());
   if (fd < 0) {
     throw std::runtime_error(path + ": cannot create a temporary file next to it (does the directory exist "
@@ -33,6 +122,7 @@ void write_file_atomic(const std::string& path, std::string_view content, const 
   std::size_t written = 0;
   while (written < content.size()) {
     const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
+    if (n < 0 && errno == EINTR) continue;
     if (n <= 0) fail("write failed (disk full?)");
     written += static_cast<std::size_t>(n);
   }
@@ -45,13 +135,19 @@ void write_file_atomic(const std::string& path, std::string_view content, const 
     std::remove(tmpl.c_str());
     throw std::runtime_error(path + ": cannot close the temporary file");
   }
-  if (!options.overwrite && fs::exists(path, ec)) {
+  // The path may have changed while the content was written: check again just before renaming
+  // (a file that appeared without overwrite, a directory or a device put in its place).
+  try {
+    const Target now = classify(path, options.overwrite, false);
+    if (now.kind == OutputKind::write_through) throw std::invalid_argument(path + " became a device or FIFO while writing");
+  } catch (...) {
     std::remove(tmpl.c_str());
-    throw std::invalid_argument(path + " exists; pass --overwrite to replace it");
+    throw;
   }
-  if (std::rename(tmpl.c_str(), path.c_str()) != 0) {
+  if (std::rename(tmpl.c_str(), target.path.c_str()) != 0) {
+    const int err = errno;
     std::remove(tmpl.c_str());
-    throw std::runtime_error(path + ": cannot rename the temporary file into place");
+    throw std::runtime_error(path + ": cannot rename the temporary file into place: " + std::strerror(err));
   }
 }
 

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+
+#include "frictionlab/models/parameter.hpp"
 
 namespace frictionlab {
 namespace {
@@ -27,11 +30,18 @@ std::string scalar_list(const Dataset& data) {
 }  // namespace
 
 const Eigen::VectorXd& select_column(const Dataset& data, const std::string& name, const std::string& role) {
-  if (!data.has_column(name)) {
-    throw std::invalid_argument(data.where() + "no column '" + name + "'" + (role.empty() ? "" : " (" + role + ")") +
-                                "; the file has columns: " + data.describe_contents());
-  }
+  if (!data.has_column(name)) throw std::invalid_argument(data.missing_column_message(name, role));
   return data.column(name);
+}
+
+const Eigen::VectorXd& finite_column(const Dataset& data, const std::string& name, const std::string& role) {
+  const Eigen::VectorXd& x = select_column(data, name, role);
+  for (Eigen::Index k = 0; k < x.size(); ++k) {
+    if (!std::isfinite(x(k))) {
+      throw std::invalid_argument(data.where() + data.row_label(k) + ", column '" + name + "': value is not a finite number");
+    }
+  }
+  return x;
 }
 
 double resolve_constant(const Dataset& data, const std::string& text, const std::string& parameter) {
@@ -62,49 +72,51 @@ void apply_scales(Dataset& data, const std::vector<std::string>& specs) {
   for (const auto& spec : specs) {
     const ScaleFactor s = parse_scale(spec);
     if (!data.has_column(s.column)) {
-      throw std::invalid_argument(data.where() + "--scale '" + spec + "': no column '" + s.column +
-                                  "'; the file has columns: " + data.describe_contents());
+      throw std::invalid_argument(data.missing_column_message(s.column, "--scale '" + spec + "'"));
     }
     data.column(s.column) *= s.factor;
   }
 }
 
 double check_time(const Dataset& data, const Eigen::VectorXd& time, const TimeCheckOptions& options) {
-  const Eigen::Index n = time.size();
-  if (n < 2) {
-    throw std::invalid_argument(data.where() + "time has " + std::to_string(n) + " samples; expected at least 2");
+  RegularSamplingCheck c;
+  c.tolerance = options.regular_tolerance;
+  c.require_regular = options.require_regular;
+  c.where = data.where();
+  c.row_label = [&data](Eigen::Index k) { return data.row_label(k); };
+  return check_regular_sampling(time, c).mean;
+}
+
+void resample_dataset(Dataset& data, const std::string& time_column, ResampleOptions options) {
+  const Eigen::VectorXd time = select_column(data, time_column, "time");
+  options.where = data.where();
+  options.row_label = [&data](Eigen::Index k) { return data.row_label(k); };
+  const UniformResampler resampler(time, options);
+  // The resampled copy must fit in memory beside the original: refuse, rather than fail to allocate.
+  constexpr double kMaxBytes = 8e9;
+  const double bytes = 8.0 * static_cast<double>(resampler.report().samples_out) * static_cast<double>(data.column_names().size());
+  if (bytes > kMaxBytes) {
+    throw std::invalid_argument(data.where() + options.dt_name + " = " + detail::format_value(resampler.report().dt, 6) +
+                                " s: " + std::to_string(resampler.report().samples_out) + " samples x " +
+                                std::to_string(data.column_names().size()) + " columns would take " +
+                                detail::format_value(bytes / 1e9, 3) + " GB; expected at most 8 GB (a larger step)");
   }
-  std::ostringstream msg;
-  msg.precision(12);
-  for (Eigen::Index k = 0; k < n; ++k) {
-    if (!std::isfinite(time(k))) {
-      msg << data.where() << data.row_label(k) << ": time = " << time(k) << " s is not a finite number";
-      throw std::invalid_argument(msg.str());
-    }
-    if (k > 0 && !(time(k) > time(k - 1))) {
-      msg << data.where() << data.row_label(k) << ": time " << time(k) << " s is not greater than the previous "
-          << time(k - 1) << " s; expected strictly increasing time";
-      throw std::invalid_argument(msg.str());
-    }
+  // Every column is interpolated before any is replaced, so a bad value leaves `data` unchanged.
+  std::vector<std::pair<std::string, Eigen::VectorXd>> out;
+  for (const auto& name : data.column_names()) {
+    out.emplace_back(name, name == time_column ? resampler.time() : resampler.apply(data.column(name), name));
   }
-  const double dt = (time(n - 1) - time(0)) / static_cast<double>(n - 1);
-  if (options.require_regular) {
-    // Compare with the median step, so one gap is reported where it is, not at every other step.
-    std::vector<double> steps(static_cast<std::size_t>(n - 1));
-    for (Eigen::Index k = 1; k < n; ++k) steps[static_cast<std::size_t>(k - 1)] = time(k) - time(k - 1);
-    auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
-    std::nth_element(steps.begin(), mid, steps.end());
-    const double median = *mid;
-    for (Eigen::Index k = 1; k < n; ++k) {
-      const double step = time(k) - time(k - 1);
-      if (std::abs(step - median) > options.regular_tolerance * median) {
-        msg << data.where() << data.row_label(k) << ": time step " << step << " s differs from the median step " << median
-            << " s by more than " << 100 * options.regular_tolerance << " %; expected regularly sampled data";
-        throw std::invalid_argument(msg.str());
-      }
-    }
-  }
-  return dt;
+  Dataset resampled;
+  resampled.file = data.file;
+  resampled.sha256 = data.sha256;
+  resampled.scalars = data.scalars;
+  resampled.header_row = data.header_row;
+  resampled.unusable = data.unusable;
+  resampled.warnings = data.warnings;
+  for (auto& [name, values] : out) resampled.add_column(name, std::move(values));
+  resampled.resampling = resampler.report();
+  for (const auto& w : resampler.report().warnings) resampled.warnings.push_back(data.where() + w);
+  data = std::move(resampled);
 }
 
 }  // namespace frictionlab

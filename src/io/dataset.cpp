@@ -31,9 +31,7 @@ bool Dataset::has_column(const std::string& name) const {
 
 const Eigen::VectorXd& Dataset::column(const std::string& name) const {
   const auto it = std::find(names_.begin(), names_.end(), name);
-  if (it == names_.end()) {
-    throw std::invalid_argument(where() + "no column '" + name + "'; the file has columns: " + describe_contents());
-  }
+  if (it == names_.end()) throw std::invalid_argument(missing_column_message(name));
   return columns_[static_cast<std::size_t>(it - names_.begin())];
 }
 
@@ -44,6 +42,7 @@ Eigen::VectorXd& Dataset::column(const std::string& name) {
 std::string Dataset::where() const { return file.empty() ? std::string() : file + ": "; }
 
 std::string Dataset::row_label(Eigen::Index k) const {
+  if (resampling) return "sample " + std::to_string(k + 1) + " of the resampled grid";
   if (k >= 0 && static_cast<std::size_t>(k) < lines.size()) {
     return "line " + std::to_string(lines[static_cast<std::size_t>(k)]);
   }
@@ -63,7 +62,26 @@ std::string Dataset::describe_contents() const {
     }
     out += ")";
   }
+  if (!header_row) out += " (the file has no header row: its columns are c1, c2, ... from the first, unless named with --names / names=)";
+  if (!unusable.empty()) {
+    out += "; not columns:";
+    bool first = true;
+    for (const auto& [name, what] : unusable) {
+      out += std::string(first ? " " : ", ") + name + " (" + what + ")";
+      first = false;
+    }
+  }
   return out;
+}
+
+std::string Dataset::missing_column_message(const std::string& name, const std::string& role) const {
+  const std::string named = "'" + name + "'" + (role.empty() ? "" : " (" + role + ")");
+  std::string what;
+  if (const auto it = unusable.find(name); it != unusable.end()) what = it->second;
+  else if (has_scalar(name)) what = "a scalar (1x1)";
+  if (what.empty()) return where() + "no column " + named + "; the file has columns: " + describe_contents();
+  return where() + "variable " + named + " is " + what + "; expected a real numeric vector (1xN or Nx1) of " +
+         std::to_string(rows()) + " samples like the columns: " + describe_contents();
 }
 
 }  // namespace frictionlab

@@ -234,7 +234,8 @@ std::string gnuplot_script(const Figure& figure, const std::string& path) {
     << terminal(format, figure) << "\n"
     << "set output outfile\n"
     << "set encoding utf8\n"
-    << "set datafile missing 'NaN'\n"
+    // No "set datafile missing 'NaN'": declared missing, a NaN would be skipped and the line
+    // joined across it; left undeclared it breaks the line (a law's jump at v = 0, a gap).
     << "set border lw 1\n"
     << "set grid back lc rgb '#d0d0d0' lw 1 dt 1\n"
     << "set tics nomirror out\n"
@@ -256,18 +257,23 @@ std::string gnuplot_script(const Figure& figure, const std::string& path) {
       << "set autoscale\n"
       << (panel.tight_x ? "set autoscale xfix\nset offsets 0, 0, graph 0.05, graph 0.05\n"
                         : "set offsets graph 0.02, graph 0.02, graph 0.05, graph 0.05\n")
-      << (panel.zero_line ? "set xzeroaxis lt -1 lw 1 lc rgb '#606060'\n" : "unset xzeroaxis\n");
+      << (panel.zero_line ? "set xzeroaxis lt -1 lw 1 lc rgb '#606060'\n" : "unset xzeroaxis\n")
+      << (panel.zero_x_line ? "set yzeroaxis lt -1 lw 1 lc rgb '#606060'\n" : "unset yzeroaxis\n");
     std::vector<std::string> plots;
     for (const FigureSeries& s : panel.series) {
       if (!drawable(s)) continue;
       const std::string c = s.color.empty() ? kPalette[colour++ % std::size(kPalette)] : s.color;
       std::ostringstream p;
       p << (plots.empty() ? "datafile" : "''") << " index " << index++;
+      const auto size = [&](double fallback) { return number(s.point_size > 0 ? s.point_size : fallback); };
+      const auto width = [&](double fallback) { return number(s.line_width > 0 ? s.line_width : fallback); };
       switch (s.style) {
-        case SeriesStyle::lines: p << " using 1:2 with lines lw 1.6"; break;
-        case SeriesStyle::steps: p << " using 1:2 with steps lw 1.6"; break;
-        case SeriesStyle::points: p << " using 1:2 with points pt 7 ps 0.7"; break;
-        case SeriesStyle::errorbars: p << " using 1:2:3 with yerrorbars pt 7 ps 0.8 lw 1.2"; break;
+        case SeriesStyle::lines: p << " using 1:2 with lines lw " << width(1.6); break;
+        case SeriesStyle::steps: p << " using 1:2 with steps lw " << width(1.6); break;
+        case SeriesStyle::points: p << " using 1:2 with points pt 7 ps " << size(0.7); break;
+        case SeriesStyle::errorbars:
+          p << " using 1:2:3 with yerrorbars pt 7 ps " << size(0.8) << " lw " << width(1.2);
+          break;
       }
       p << " lc rgb " << gp_quote(c) << " title " << (s.name.empty() ? std::string("''") : gp_quote(s.name));
       plots.push_back(p.str());

@@ -2,9 +2,12 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+
+#include "yaml_keys.hpp"
 
 namespace frictionlab {
 namespace {
@@ -24,6 +27,7 @@ FrictionLaw with_context(const std::string& where, F&& make) {
 FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
   if (!node || !node.IsMap())
     throw std::invalid_argument(where + ": expected a mapping with 'law' and its parameters");
+  detail::check_unique_keys(node, where);
   LawSpec spec;
   for (const auto& kv : node) {
     // A list, mapping or empty key or name would make yaml-cpp throw its own bad conversion.
@@ -38,23 +42,26 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
     } else if (key == "law") {
       spec.name = value.as<std::string>();
     } else if (key == "shape") {
-      spec.strings[key] = value.as<std::string>();
+      spec.strings[key] = value.Scalar();
     } else if (value.IsSequence()) {
       std::vector<double> list;
       for (std::size_t i = 0; i < value.size(); ++i) {
         try {
+          if (!value[i].IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
           list.push_back(value[i].as<double>());
         } catch (const YAML::Exception&) {
           throw std::invalid_argument(here + "[" + std::to_string(i) + "]: expected a number, got '" +
-                                      value[i].as<std::string>("?") + "'");
+                                      (value[i].IsScalar() ? value[i].Scalar() : std::string("a list or mapping")) + "'");
         }
       }
       spec.arrays[key] = std::move(list);
     } else {
       try {
+        if (!value.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
         spec.scalars[key] = value.as<double>();
       } catch (const YAML::Exception&) {
-        throw std::invalid_argument(here + ": expected a number, got '" + value.as<std::string>("?") + "'");
+        throw std::invalid_argument(here + ": expected a number, got '" +
+                                    (value.IsScalar() ? value.Scalar() : std::string(value.IsNull() ? "nothing" : "a mapping")) + "'");
       }
     }
   }
@@ -101,25 +108,44 @@ FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
   return with_context(where, [&] { return FrictionLaw::from_spec(spec); });
 }
 
+nlohmann::json read_model_json(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw std::invalid_argument(path + " is a directory; expected a JSON model file (MODEL.json of frictionlab identify --json)");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::invalid_argument(path + ": cannot open the model file");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);  // strict: the object must end the file
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(path + ": not valid JSON (" + e.what() + ")");
+  }
+  if (!j.is_object()) throw std::invalid_argument(path + ": expected a JSON object (a friction law or MODEL.json)");
+  if (j.contains("status")) {
+    const auto& st = j["status"];
+    if (!st.is_string()) throw std::invalid_argument(path + ": status: expected \"ok\" or \"error\", got " + st.dump());
+    if (st.get<std::string>() != "ok") {
+      std::string why;
+      if (j.contains("message") && j["message"].is_string()) why = j["message"].get<std::string>();
+      throw std::invalid_argument(path + ": the identification failed (status " + st.dump() + (why.empty() ? "" : ": " + why) +
+                                  "); it holds no model to use");
+    }
+  }
+  return j;
+}
+
 FrictionLaw load_law(const std::string& path) {
   const bool is_json = path.size() >= 5 && path.substr(path.size() - 5) == ".json";
+  if (is_json) return law_from_json(read_model_json(path), path);
   std::ifstream in(path);
   if (!in) throw std::invalid_argument(path + ": cannot open the friction law file");
-  if (is_json) {
-    nlohmann::json j;
-    try {
-      in >> j;
-    } catch (const nlohmann::json::exception& e) {
-      throw std::invalid_argument(path + ": not valid JSON (" + e.what() + ")");
-    }
-    return law_from_json(j, path);
-  }
   YAML::Node node;
   try {
     node = YAML::Load(in);
   } catch (const YAML::Exception& e) {
     throw std::invalid_argument(path + ": not valid YAML (" + e.what() + ")");
   }
+  detail::check_unique_keys(node, path);
   if (node.IsMap() && node["friction"]) return law_from_yaml(node["friction"], path + ": friction");
   return law_from_yaml(node, path);
 }

@@ -15,7 +15,7 @@ Dataset load_dataset(const std::string& path, const CsvOptions& csv_options) {
   if (ext == ".csv") return read_csv(path, csv_options);
   if (ext == ".mat") return read_mat(path);
   throw std::invalid_argument(path + ": unknown data file type '" + ext +
-                              "'; expected a .csv file (with a header row) or a .mat file");
+                              "'; expected a .csv file (with or without a header row) or a .mat file");
 }
 
 }  // namespace frictionlab

@@ -1,11 +1,14 @@
 #include "frictionlab/io/mat.hpp"
 
 #include <matio.h>
+#include <zlib.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -47,29 +50,139 @@ Eigen::VectorXd convert(const void* data, std::size_t n) {
   return out;
 }
 
-// The values of a real numeric variable as doubles, or false when it is not one.
-bool numeric_values(const matvar_t& v, Eigen::VectorXd& out) {
-  if (v.isComplex || v.isLogical || v.data == nullptr || v.rank != 2) return false;
-  const std::size_t n = v.dims[0] * v.dims[1];
-  switch (v.class_type) {
-    case MAT_C_DOUBLE: out = convert<double>(v.data, n); return true;
-    case MAT_C_SINGLE: out = convert<float>(v.data, n); return true;
-    case MAT_C_INT8: out = convert<std::int8_t>(v.data, n); return true;
-    case MAT_C_UINT8: out = convert<std::uint8_t>(v.data, n); return true;
-    case MAT_C_INT16: out = convert<std::int16_t>(v.data, n); return true;
-    case MAT_C_UINT16: out = convert<std::uint16_t>(v.data, n); return true;
-    case MAT_C_INT32: out = convert<std::int32_t>(v.data, n); return true;
-    case MAT_C_UINT32: out = convert<std::uint32_t>(v.data, n); return true;
-    case MAT_C_INT64: out = convert<std::int64_t>(v.data, n); return true;
-    case MAT_C_UINT64: out = convert<std::uint64_t>(v.data, n); return true;
+std::string dims_text(const matvar_t& v) {
+  std::string out;
+  for (int d = 0; d < v.rank; ++d) {
+    if (d) out += 'x';
+    out += std::to_string(v.dims[d]);
+  }
+  return out.empty() ? "0x0" : out;
+}
+
+bool is_numeric_class(matio_classes c) {
+  switch (c) {
+    case MAT_C_DOUBLE: case MAT_C_SINGLE: case MAT_C_INT8: case MAT_C_UINT8: case MAT_C_INT16: case MAT_C_UINT16:
+    case MAT_C_INT32: case MAT_C_UINT32: case MAT_C_INT64: case MAT_C_UINT64: return true;
     default: return false;
   }
 }
 
-// matio (1.5.23) inflates a truncated compressed v5 variable without reporting it, so the
-// element structure of a v5 file is walked first: 128-byte header, then data elements each with
-// an 8-byte tag (type, byte count; small elements pack both into 8 bytes). An element reaching
-// past the end of the file means the file is truncated. v7.3 (HDF5) files are left to HDF5.
+// The one check of a variable's type and shape: what it is when it cannot be a column or a
+// scalar (a real numeric 1xN, Nx1 or 1x1 array), e.g. "a 3x4 matrix", "a 1x1 struct (fields:
+// a, b)"; "" when it can. Lengths across variables are compared afterwards (read_mat).
+std::string variable_problem(const matvar_t& v) {
+  const std::string dims = dims_text(v);
+  switch (v.class_type) {
+    case MAT_C_CELL: return "a " + dims + " cell array";
+    case MAT_C_STRUCT: {
+      std::string fields;
+      const unsigned n = Mat_VarGetNumberOfFields(const_cast<matvar_t*>(&v));
+      char* const* names = Mat_VarGetStructFieldnames(&v);
+      for (unsigned i = 0; names != nullptr && i < n && i < 10; ++i)
+        fields += std::string(i ? ", " : "") + (names[i] != nullptr ? names[i] : "?");
+      if (n > 10) fields += ", ...";
+      return "a " + dims + " struct" + (fields.empty() ? "" : " (fields: " + fields + ")");
+    }
+    case MAT_C_OBJECT: return "a " + dims + " MATLAB object";
+    case MAT_C_CHAR: return "a " + dims + " char array (text)";
+    case MAT_C_SPARSE: return "a " + dims + " sparse matrix";
+    case MAT_C_FUNCTION: return "a function handle";
+    case MAT_C_OPAQUE: return "an opaque MATLAB object (a string, table or class instance)";
+    case MAT_C_EMPTY: return "empty (" + dims + ")";
+    default: break;
+  }
+  if (!is_numeric_class(v.class_type)) return "of an unknown MATLAB class (" + std::to_string(int(v.class_type)) + ")";
+  const bool vector_shape = v.rank == 2 && (v.dims[0] == 1 || v.dims[1] == 1);
+  const std::string shape = v.rank != 2 ? "array" : vector_shape ? (v.dims[0] * v.dims[1] == 1 ? "scalar" : "vector") : "matrix";
+  if (v.isComplex) return "a " + dims + " complex " + shape + " (expected real numbers)";
+  if (v.isLogical) return "a " + dims + " logical " + shape + " (true/false, expected numbers)";
+  if (v.rank == 2 && v.dims[0] * v.dims[1] == 0) return "empty (" + dims + ")";
+  if (!vector_shape) return "a " + dims + " " + shape;
+  if (v.data == nullptr) return "a " + dims + " " + shape + " without data";
+  return "";
+}
+
+// The values of a real numeric array (variable_problem(v) empty) as doubles.
+Eigen::VectorXd numeric_values(const matvar_t& v) {
+  const std::size_t n = v.dims[0] * v.dims[1];
+  switch (v.class_type) {
+    case MAT_C_SINGLE: return convert<float>(v.data, n);
+    case MAT_C_INT8: return convert<std::int8_t>(v.data, n);
+    case MAT_C_UINT8: return convert<std::uint8_t>(v.data, n);
+    case MAT_C_INT16: return convert<std::int16_t>(v.data, n);
+    case MAT_C_UINT16: return convert<std::uint16_t>(v.data, n);
+    case MAT_C_INT32: return convert<std::int32_t>(v.data, n);
+    case MAT_C_UINT32: return convert<std::uint32_t>(v.data, n);
+    case MAT_C_INT64: return convert<std::int64_t>(v.data, n);
+    case MAT_C_UINT64: return convert<std::uint64_t>(v.data, n);
+    default: return convert<double>(v.data, n);
+  }
+}
+
+// The name of a v5 variable from the start of its (inflated) miMATRIX element: tag, array
+// flags, dimensions, then the name (a small or a normal miINT8 element). "" when cut short.
+std::string v5_variable_name(const unsigned char* p, std::size_t n, const std::function<std::uint32_t(const unsigned char*)>& u32) {
+  std::size_t at = 8;  // past the miMATRIX tag
+  for (int element = 0; element < 3; ++element) {
+    if (at + 8 > n) return "";
+    const std::uint32_t type = u32(p + at);
+    std::size_t bytes = 0, data_at = 0, next = 0;
+    if ((type >> 16) != 0) {  // small element: byte count in the upper half, data in the tag
+      bytes = type >> 16;
+      data_at = at + 4;
+      next = at + 8;
+    } else {
+      bytes = u32(p + at + 4);
+      data_at = at + 8;
+      next = data_at + (bytes + 7) / 8 * 8;
+    }
+    if (element == 2) {
+      if (bytes > 63 || data_at + bytes > n) return "";
+      return std::string(reinterpret_cast<const char*>(p + data_at), bytes);
+    }
+    at = next;
+  }
+  return "";
+}
+
+// Inflates a compressed v5 variable to its end: the zlib stream must end where the element
+// does, with a matching adler32 checksum (matio 1.5.23 reads a stream with flipped bytes without
+// a word). Returns "" when it does, else what is wrong; `name` gets the variable's name when
+// the start of the stream can be read.
+std::string check_compressed(const std::vector<unsigned char>& in, const std::function<std::uint32_t(const unsigned char*)>& u32,
+                             std::string& name) {
+  z_stream z{};
+  if (inflateInit(&z) != Z_OK) return "zlib cannot start";
+  std::vector<unsigned char> head;  // the first bytes inflated: the variable's header
+  std::vector<unsigned char> out(1 << 16);
+  z.next_in = const_cast<unsigned char*>(in.data());
+  z.avail_in = static_cast<uInt>(in.size());
+  int rc = Z_OK;
+  while (rc == Z_OK) {
+    z.next_out = out.data();
+    z.avail_out = static_cast<uInt>(out.size());
+    rc = inflate(&z, Z_NO_FLUSH);
+    const std::size_t got = out.size() - z.avail_out;
+    if (head.size() < 256) head.insert(head.end(), out.begin(), out.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(got, 256 - head.size())));
+    if (rc == Z_BUF_ERROR && z.avail_in == 0) break;  // input used up before the stream's end
+  }
+  const std::string zmsg = z.msg != nullptr ? z.msg : "";
+  const std::size_t z_left = z.avail_in;
+  inflateEnd(&z);
+  name = v5_variable_name(head.data(), head.size(), u32);
+  // A stream that ends well short of its element (more than alignment padding) was cut by damage.
+  if (rc == Z_STREAM_END && z_left > 7) return "its zlib stream ends " + std::to_string(z_left) + " bytes before its data does (corrupt)";
+  if (rc == Z_STREAM_END) return "";
+  if (rc == Z_DATA_ERROR) return "its compressed data is corrupt (zlib: " + (zmsg.empty() ? std::string("data error") : zmsg) + ")";
+  if (rc == Z_BUF_ERROR || rc == Z_OK) return "its compressed data ends before the zlib stream does (truncated)";
+  return "its compressed data cannot be inflated (zlib error " + std::to_string(rc) + (zmsg.empty() ? "" : ": " + zmsg) + ")";
+}
+
+// matio (1.5.23) inflates a truncated or corrupt compressed v5 variable without reporting it,
+// so the element structure of a v5 file is walked first: 128-byte header, then data elements
+// each with an 8-byte tag (type, byte count; small elements pack both into 8 bytes). An element
+// reaching past the end of the file means the file is truncated; each compressed element is
+// inflated to its end (check_compressed). v7.3 (HDF5) files are left to HDF5.
 std::string v5_structure_problem(const std::string& path) {
   // Only the header and the element tags are read (seeking past each element's data).
   std::ifstream in(path, std::ios::binary | std::ios::ate);
@@ -83,7 +196,7 @@ std::string v5_structure_problem(const std::string& path) {
   const bool big_endian_file = b[126] == 'M' && b[127] == 'I';
   const bool little_endian_file = b[126] == 'I' && b[127] == 'M';
   if (!big_endian_file && !little_endian_file) return "no MAT-file endian indicator";
-  const auto u32 = [&](const unsigned char* p) {
+  const std::function<std::uint32_t(const unsigned char*)> u32 = [little_endian_file](const unsigned char* p) {
     return little_endian_file ? std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
                                     std::uint32_t(p[3]) << 24
                               : std::uint32_t(p[3]) | std::uint32_t(p[2]) << 8 | std::uint32_t(p[1]) << 16 |
@@ -94,6 +207,8 @@ std::string v5_structure_problem(const std::string& path) {
   constexpr std::uint32_t kMiCompressed = 15;
   std::size_t at = 128;
   unsigned char tag[8];
+  int variable = 0;
+  std::vector<unsigned char> element;
   while (at < size) {
     if (at + 8 > size) return "truncated: a data element tag at byte " + std::to_string(at) + " is cut off";
     in.seekg(static_cast<std::streamoff>(at));
@@ -109,6 +224,19 @@ std::string v5_structure_problem(const std::string& path) {
     if (at + 8 + bytes > size) {
       return "truncated: the data element at byte " + std::to_string(at) + " needs " + std::to_string(bytes) +
              " bytes but the file has " + std::to_string(size) + " in all";
+    }
+    ++variable;
+    if (type == kMiCompressed) {
+      element.resize(bytes);
+      if (!in.read(reinterpret_cast<char*>(element.data()), static_cast<std::streamsize>(bytes)))
+        return "read error at byte " + std::to_string(at + 8);
+      std::string name;
+      if (const std::string problem = check_compressed(element, u32, name); !problem.empty()) {
+        const std::string which = name.empty() ? "variable " + std::to_string(variable) + " (its name is unreadable)"
+                                               : "variable '" + name + "'";
+        return which + ", compressed at byte " + std::to_string(at) + ": " + problem +
+               "; the file is damaged (refused rather than read with wrong values)";
+      }
     }
     at += 8 + n;
   }
@@ -171,10 +299,9 @@ Dataset read_mat(const std::string& path) {
   Mat_Rewind(mat.get());
   g_matio_log.clear();
 
-  // One pass over the variables, each read in full.
+  // One pass over the variables, each read in full and checked by variable_problem.
   std::vector<std::string> names;
   std::vector<std::pair<std::string, Eigen::VectorXd>> vectors;
-  std::vector<std::string> skipped;
   Eigen::Index longest = 0;
   while (true) {
     g_matio_log.clear();
@@ -192,24 +319,23 @@ Dataset read_mat(const std::string& path) {
     }
     const std::string name = var->name != nullptr ? var->name : "";
     names.push_back(name);
-    Eigen::VectorXd values;
-    if (!numeric_values(*var, values) || values.size() == 0) {
-      skipped.push_back(name);
+    if (const std::string problem = variable_problem(*var); !problem.empty()) {
+      data.unusable[name] = problem;
       continue;
     }
-    const bool vector = var->dims[0] == 1 || var->dims[1] == 1;
+    Eigen::VectorXd values = numeric_values(*var);
     if (values.size() == 1) {
       data.scalars[name] = values(0);
-    } else if (vector) {
+    } else {
       longest = std::max(longest, values.size());
       vectors.emplace_back(name, std::move(values));
-    } else {
-      skipped.push_back(name);
     }
   }
+  // Columns share one length: the longest vectors'. Shorter ones are named with their length.
   for (auto& [name, values] : vectors) {
     if (values.size() == longest) data.add_column(name, std::move(values));
-    else skipped.push_back(name);
+    else data.unusable[name] = "a vector of " + std::to_string(values.size()) + " samples, shorter than the other columns (" +
+                               std::to_string(longest) + ")";
   }
   if (data.rows() == 0) {
     // matio (1.5.23) opens a v7.3 file whose HDF5 part HDF5 cannot open (truncated, corrupt) and
@@ -217,7 +343,10 @@ Dataset read_mat(const std::string& path) {
     if (names.empty() && Mat_GetVersion(mat.get()) == MAT_FT_MAT73)
       fail("cannot read the MAT v7.3 (HDF5) file: no variable could be read (corrupt, truncated or empty file)");
     std::string listed;
-    for (const auto& n : names) listed += (listed.empty() ? "" : ", ") + n;
+    for (const auto& n : names) {
+      const auto it = data.unusable.find(n);
+      listed += (listed.empty() ? "" : ", ") + n + (it != data.unusable.end() ? " (" + it->second + ")" : data.has_scalar(n) ? " (a scalar)" : "");
+    }
     fail("no real numeric vector variable (expected time series saved as 1xN or Nx1 arrays); variables: " +
          (listed.empty() ? std::string("(none)") : listed));
   }

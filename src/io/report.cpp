@@ -127,13 +127,15 @@ void table_head(std::ostringstream& h, std::initializer_list<const char*> cols) 
 
 void diagnostics_html(std::ostringstream& h, const Diagnostics& d) {
   h << "<h2 id=\"diagnostics\">Diagnostics</h2>\n";
-  const bool any = std::isfinite(d.condition_number) || !d.numbers.empty() || !d.groups.empty() || !d.lists.empty();
+  const bool any = std::isfinite(d.condition_number) || !d.numbers.empty() || !d.groups.empty() || !d.lists.empty() ||
+                   !d.texts.empty();
   if (!any) {
     h << "<p class=\"note\">No diagnostics.</p>\n";
     return;
   }
-  if (std::isfinite(d.condition_number) || !d.numbers.empty()) {
+  if (std::isfinite(d.condition_number) || !d.numbers.empty() || !d.texts.empty()) {
     table_head(h, {"figure", "value"});
+    for (const auto& [k, v] : d.texts) h << "<tr><td>" << esc(k) << "</td><td>" << esc(v) << "</td></tr>\n";
     if (std::isfinite(d.condition_number))
       h << "<tr><td>condition number</td><td class=\"num\">" << general(d.condition_number, 4) << "</td></tr>\n";
     for (const auto& [k, v] : d.numbers)
@@ -233,7 +235,7 @@ std::string report_html(const Result& r, const std::vector<std::pair<std::string
       const auto [v, s] = value_and_std(p.value, p.std);
       const double rel = std::abs(p.value) > 0 ? 100.0 * p.std / std::abs(p.value) : NAN;
       h << "<tr><td><b>" << esc(p.name) << "</b></td><td class=\"num\" title=\"" << general(p.value, 17) << "\">" << v
-        << "</td><td class=\"num\">" << s << "</td><td>" << esc(p.unit) << "</td><td class=\"num\">"
+        << "</td><td class=\"num\">" << (p.flag.empty() ? s : "n/a (" + esc(p.flag) + ")") << "</td><td>" << esc(p.unit) << "</td><td class=\"num\">"
         << (std::isfinite(rel) ? general(rel, 2) + " %" : "n/a") << "</td></tr>\n";
     }
     h << "</tbody></table>\n";
@@ -322,7 +324,9 @@ std::string write_report(const Result& result, const std::vector<ReportFigure>& 
     for (const auto& f : figures) {
       const std::string path = (fs::path(work) / (f.name + ".svg")).string();
       write_figure(f.figure, path, true);
-      inlined.emplace_back(f.caption, inline_svg(read_file(path)));
+      // The caption names the file, whose data and script sit next to it.
+      inlined.emplace_back(f.caption + (f.caption.empty() ? "" : " ") + "(" + f.name + ".svg)",
+                           inline_svg(read_file(path)));
     }
     AtomicWriteOptions w;
     w.overwrite = true;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <initializer_list>
 #include <numbers>
@@ -24,6 +25,8 @@
 #include "frictionlab/plants/spring_base.hpp"
 #include "frictionlab/plants/velocity_drive.hpp"
 #include "frictionlab/simulate/simulate.hpp"
+#include "frictionlab/simulate/output_size.hpp"
+#include "yaml_keys.hpp"
 
 namespace frictionlab {
 namespace {
@@ -161,7 +164,9 @@ std::shared_ptr<const Plant> read_plant(const Section& s, const ScenarioOptions&
       throw std::invalid_argument(s.at("type") + ": plant type '" + type +
                                   "' cannot take an identified inertia and offset; expected axis");
     s.allow({"type", "M", "offset"});
-    return with_context(s.path(), [&] { return std::make_shared<const RigidAxis>(*o.axis); });
+    // M and offset come from the identified model: a bad value is the model file's.
+    const std::string source = o.model_source.empty() ? s.path() : o.model_source + ": parameters";
+    return with_context(source, [&] { return std::make_shared<const RigidAxis>(*o.axis); });
   }
   const std::string type = s.text("type", "");
   if (type.empty())
@@ -170,7 +175,7 @@ std::shared_ptr<const Plant> read_plant(const Section& s, const ScenarioOptions&
     s.allow({"type", "M", "offset"});
     AxisParams p;
     p.M = s.number("M");
-    p.offset = s.number("offset", 0.0);
+    p.offset = s.number("offset", p.offset);
     return with_context(s.path(), [&] { return std::make_shared<const RigidAxis>(p); });
   }
   if (type == "pendulum") {
@@ -178,8 +183,8 @@ std::shared_ptr<const Plant> read_plant(const Section& s, const ScenarioOptions&
     PendulumParams p;
     p.m = s.number("m");
     p.l = s.number("l");
-    p.g = s.number("g", 9.81);
-    p.B = s.number("B", 0.0);
+    p.g = s.number("g", p.g);
+    p.B = s.number("B", p.B);
     return with_context(s.path(), [&] { return std::make_shared<const Pendulum>(p); });
   }
   if (type == "spring-base") {
@@ -188,8 +193,8 @@ std::shared_ptr<const Plant> read_plant(const Section& s, const ScenarioOptions&
     p.m = s.number("m");
     p.k = s.number("k");
     p.V0 = s.number("V0");
-    p.c = s.number("c", 0.0);
-    p.x0 = s.number("x0", 0.0);
+    p.c = s.number("c", p.c);
+    p.x0 = s.number("x0", p.x0);
     return with_context(s.path(), [&] { return std::make_shared<const SpringBase>(p); });
   }
   if (type == "dc-motor") {
@@ -207,15 +212,15 @@ std::shared_ptr<const Plant> read_plant(const Section& s, const ScenarioOptions&
     p.R = s.number("R");
     p.Kt = s.number("Kt");
     p.Kb = s.number("Kb");
-    p.L = p.drive == MotorDrive::voltage ? s.number("L") : s.number("L", 1e-3);
-    p.Ka = s.number("Ka", 1.0);
-    p.load = s.number("load", 0.0);
+    p.L = p.drive == MotorDrive::voltage ? s.number("L") : s.number("L", p.L);
+    p.Ka = s.number("Ka", p.Ka);
+    p.load = s.number("load", p.load);
     return with_context(s.path(), [&] { return std::make_shared<const DcMotor>(p); });
   }
   if (type == "velocity-drive") {
     s.allow({"type", "M"});
     VelocityDriveParams p;
-    p.M = s.number("M", 0.0);
+    p.M = s.number("M", p.M);
     return with_context(s.path(), [&] { return std::make_shared<const VelocityDrive>(p); });
   }
   throw std::invalid_argument(s.at("type") + ": unknown plant type '" + type +
@@ -311,7 +316,7 @@ EmpsPdParams read_emps_pd(const Section& s, DataSource& src) {
   p.kp = src.constant(s, "kp", d);
   p.kv = src.constant(s, "kv", d);
   p.gtau = src.constant(s, "gtau", d);
-  p.limit = s.number("limit", 10.0);
+  p.limit = s.number("limit", p.limit);
   if (s.has("dt")) {
     p.dt = s.number("dt");
   } else if (src.data_step && *src.data_step > 0) {
@@ -362,10 +367,10 @@ ControllerParams read_controller(const Section& s) {
   } else {
     throw std::invalid_argument(s.at("loop") + ": unknown loop '" + loop + "'; valid loops: position, velocity");
   }
-  c.Kp = s.number("Kp", 0.0);
-  c.Ki = s.number("Ki", 0.0);
-  c.Kd = s.number("Kd", 0.0);
-  c.limit = s.number("limit", 0.0);
+  c.Kp = s.number("Kp", c.Kp);
+  c.Ki = s.number("Ki", c.Ki);
+  c.Kd = s.number("Kd", c.Kd);
+  c.limit = s.number("limit", c.limit);
   return c;
 }
 
@@ -397,7 +402,22 @@ InputSignal input_from_column(const Dataset& data, const std::string& time_colum
   return in;
 }
 
+namespace {
+Scenario read_scenario(const YAML::Node& root, const std::string& where, const ScenarioOptions& options);
+}  // namespace
+
 Scenario scenario_from_yaml(const YAML::Node& root, const std::string& where, const ScenarioOptions& options) {
+  detail::check_unique_keys(root, where);
+  try {
+    return read_scenario(root, where, options);
+  } catch (const YAML::Exception& e) {
+    // A value of the wrong kind met where the reader asked for another (a list as a name, ...).
+    throw detail::yaml_error(where, e);
+  }
+}
+
+namespace {
+Scenario read_scenario(const YAML::Node& root, const std::string& where, const ScenarioOptions& options) {
   const Section top(root, where);
   top.allow({"description", "data", "plant", "friction", "input", "controller", "duration", "output_rate", "solver",
              "initial"});
@@ -441,7 +461,21 @@ Scenario scenario_from_yaml(const YAML::Node& root, const std::string& where, co
   };
   const bool data_input = src.data_step.has_value();
   o.duration = top_positive("duration", data_input ? sc.input.times.back() : 0.0, "s", !data_input);
-  o.output_rate = top_positive("output_rate", 100.0, "Hz", false);
+  o.output_rate = top_positive("output_rate", o.output_rate, "Hz", false);
+  {
+    // Refused here, before anything is allocated, naming the keys (simulate() checks it too).
+    const double need = output_bytes(o, sc.law.is_dynamic() ? sc.law.num_states() : 0), limit = max_output_bytes();
+    if (!(need <= limit)) {
+      const bool rate_given = top.has("output_rate");
+      std::ostringstream m;
+      m << where << ": " << (rate_given ? "duration and output_rate" : "duration") << ": "
+        << detail::format_value(o.duration) << " s at " << detail::format_value(o.output_rate) << " Hz"
+        << (rate_given ? "" : " (the default output_rate)") << " gives " << std::setprecision(3) << output_rows(o)
+        << " output rows, which need " << format_bytes(need) << " of memory; the limit is half this machine's memory, "
+        << format_bytes(limit) << ": shorten duration or lower output_rate";
+      throw std::invalid_argument(m.str());
+    }
+  }
   if (top.has("solver")) {
     const Section s = section("solver");
     s.allow({"mode", "rtol", "atol", "dt", "max_step", "max_steps"});
@@ -493,14 +527,18 @@ Scenario scenario_from_yaml(const YAML::Node& root, const std::string& where, co
       if (q.size() == 0) throw std::invalid_argument(s.at("position") + ": column '" + name + "' is empty");
       o.initial_position = q[0];
     } else {
-      o.initial_position = s.number("position", 0.0);
+      o.initial_position = s.number("position", o.initial_position);
     }
-    o.initial_velocity = s.number("velocity", 0.0);
+    o.initial_velocity = s.number("velocity", o.initial_velocity);
   }
   return sc;
 }
+}  // namespace
 
 Scenario load_scenario(const std::string& path, const ScenarioOptions& options) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw std::invalid_argument(path + " is a directory; expected a scenario YAML file");
   std::ifstream file(path);
   if (!file) throw std::invalid_argument(path + ": cannot open the scenario file");
   YAML::Node root;

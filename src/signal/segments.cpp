@@ -5,6 +5,8 @@
 #include <deque>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace frictionlab {
 namespace {
@@ -107,6 +109,30 @@ std::vector<IndexRange> steady_segments(const Eigen::VectorXd& time, const Eigen
     }
   }
   keep(i, n);
+  return out;
+}
+
+double difference_noise_std(const Eigen::VectorXd& x) {
+  if (x.size() < 2) return 0.0;
+  std::vector<double> d(static_cast<std::size_t>(x.size() - 1));
+  for (Eigen::Index k = 0; k + 1 < x.size(); ++k) d[static_cast<std::size_t>(k)] = std::abs(x(k + 1) - x(k));
+  auto mid = d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2);
+  std::nth_element(d.begin(), mid, d.end());
+  constexpr double kMadToStd = 1.4826;  // std / median absolute deviation of a Gaussian
+  return kMadToStd * *mid / std::sqrt(2.0);
+}
+
+Eigen::VectorXd moving_average(const Eigen::VectorXd& x, Eigen::Index window) {
+  if (window < 1) throw std::invalid_argument("moving_average: window = " + std::to_string(window) + " samples must be >= 1");
+  const Eigen::Index n = x.size(), half = window / 2;
+  Eigen::VectorXd c(n + 1);  // prefix sums
+  c(0) = 0;
+  for (Eigen::Index k = 0; k < n; ++k) c(k + 1) = c(k) + x(k);
+  Eigen::VectorXd out(n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Eigen::Index b = std::max<Eigen::Index>(0, k - half), e = std::min(n, k - half + window);
+    out(k) = (c(e) - c(b)) / static_cast<double>(e - b);
+  }
   return out;
 }
 

@@ -1,5 +1,6 @@
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/simulate/simulate.hpp"
+#include "frictionlab/simulate/output_size.hpp"
 #include "frictionlab/simulate/stiff_system.hpp"
 #include "column_pool.hpp"
 #include "small_vector.hpp"
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -20,6 +22,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 namespace frictionlab {
 
@@ -33,8 +37,28 @@ const char* solver_mode_name(SolverMode mode) {
   return "?";
 }
 
-namespace {
+double output_rows(const SimulationOptions& o) { return std::floor(o.duration * o.output_rate * (1.0 + 1e-12) + 1e-9) + 1.0; }
 
+double output_bytes(const SimulationOptions& o, int law_states) {
+  return output_rows(o) * (9.0 + std::max(law_states, 0)) * static_cast<double>(sizeof(double));
+}
+
+double max_output_bytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return 1024.0 * 1024.0 * 1024.0;
+  return 0.5 * static_cast<double>(pages) * static_cast<double>(page);
+}
+
+std::string format_bytes(double bytes) {
+  static const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB", "EB"};
+  int u = 0;
+  while (bytes >= 1000.0 && u < 6) bytes /= 1000.0, ++u;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.3g %s", bytes, units[u]);
+  return buf;
+}
+
+namespace {
 
 bool has_stiction(const FrictionLaw& law) {
   return !law.is_dynamic() && (law.breakaway_positive() > 0.0 || law.breakaway_negative() > 0.0);
@@ -64,6 +88,19 @@ void check_options(const SimulationOptions& o, SolverMode mode) {
   }
   if (o.max_steps <= 0)
     throw std::invalid_argument("simulation option max_steps = " + std::to_string(o.max_steps) + " must be > 0");
+}
+
+// Refuses, before anything is allocated, an output larger than the memory there is.
+void check_output_size(const SimulationOptions& o, int law_states) {
+  const double need = output_bytes(o, law_states), limit = max_output_bytes();
+  if (!(need <= limit)) {
+    char rows[32];
+    std::snprintf(rows, sizeof rows, "%.3g", output_rows(o));
+    throw std::invalid_argument("simulation options duration = " + detail::format_value(o.duration) + " s and output_rate = " +
+                                detail::format_value(o.output_rate) + " Hz give " + rows + " output rows, which need " +
+                                format_bytes(need) + " of memory; the limit is half this machine's memory, " +
+                                format_bytes(limit) + ": shorten the duration or lower the output rate");
+  }
 }
 
 // Output times: k / rate for k = 0..N, N = floor(duration * rate) (with a little slack so that
@@ -672,6 +709,7 @@ Trajectory simulate(const Plant& plant, const FrictionLaw& law, const InputSigna
                     const SimulationOptions& options) {
   const SolverMode mode = resolve_solver_mode(law, options.mode);
   check_options(options, mode);
+  check_output_size(options, law.is_dynamic() ? law.num_states() : 0);
   input.validate();
   Engine engine(plant, law, input, options, mode);
   return engine.run();

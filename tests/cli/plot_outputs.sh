@@ -2,7 +2,8 @@
 # --plot on simulate, identify (idim, breakaway, sweep, decay) and analyze (envelope, stick-slip):
 # each writes a non-empty figure of the type its extension asks for (SVG text, PNG and PDF magic
 # bytes), with the data (FILE.dat) and the gnuplot script (FILE.gp) next to it, and the script
-# redraws the figure. Set FRICTIONLAB_PLOT_DIR to keep the figures (CI artefacts).
+# redraws the figure; identify --report writes the friction-velocity map next to the fit figure.
+# Set FRICTIONLAB_PLOT_DIR to keep the figures (CI artefacts).
 # Usage: plot_outputs.sh PATH_TO_frictionlab SOURCE_DIR
 set -euo pipefail
 exe="$1"
@@ -57,6 +58,29 @@ grep -q "steady segments" "$out/identify_sweep.svg" || fail "sweep figure lacks 
   --overwrite > /dev/null
 check_figure "$out/identify_decay.svg"
 grep -q "envelope" "$out/identify_decay.svg" || fail "decay figure lacks the fitted envelope"
+
+# identify --report: the fit figure and the friction-velocity map (no cross-test without --validate).
+map_check() {  # REPORT_DIR UNIT_LABEL...: the map's files and its axis labels with units
+  local dir="$1"; shift
+  check_figure "$dir/friction-map.svg"
+  grep -q "Friction map" "$dir/friction-map.svg" || fail "$dir/friction-map.svg lacks its title"
+  for l in "$@"; do grep -q "$l" "$dir/friction-map.svg" || fail "$dir/friction-map.svg lacks the label '$l'"; done
+  grep -q "friction-map.svg" "$dir/report.html" && grep -q "Friction against velocity\|Applied force against velocity" \
+    "$dir/report.html" || fail "$dir/report.html lacks the friction map's caption"
+  [ ! -e "$dir/cross-test.svg" ] || fail "$dir has a cross-test figure without --validate"
+}
+"$exe" identify idim "$emps" --time t --position qm --input vir --gain gtau --report "$out/report_idim" \
+  --overwrite > /dev/null
+check_figure "$out/report_idim/fit.svg"
+map_check "$out/report_idim" "velocity (m/s)" "friction force (N)" "per velocity bin" "identified law"
+# The binned means carry finite, positive error bars (the third column of their data block), on
+# both sides of zero velocity.
+awk '/series .mean \+- std per velocity bin/ {b = 1; next} /^# index/ {b = 0} b && NF == 3 {
+       n++; if ($3 > 0 && $3 < 1e9) ok++; if ($1 < 0) neg++; if ($1 > 0) pos++ }
+     END { exit !(n >= 10 && ok == n && neg >= 5 && pos >= 5) }' "$out/report_idim/friction-map.svg.dat" ||
+  fail "friction map: binned means without error bars on both sides of v = 0"
+"$exe" identify breakaway "$tmp/trap.csv" --kt 0.0141 --report "$out/report_breakaway" --overwrite > /dev/null
+map_check "$out/report_breakaway" "velocity (rad/s)" "applied torque (N m)" "breakaway Fs"
 
 # With --json -, stdout stays pure JSON (the figure note goes to stderr).
 "$exe" identify decay "$tmp/pend.csv" --stiffness 9.81 --pendulum --axis rotary --plot "$tmp/d2.svg" --json - \

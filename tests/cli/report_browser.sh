@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # --report in a real headless browser (Debian's chromium): identify idim on the EMPS data with a
 # cross-test writes DIR/report.html; chromium loads it from file:// (no network), the rendered DOM
-# holds the parameter table (M = 95.10 kg) and the inline SVG figure, and a screenshot is taken.
+# holds the parameter table (M = 95.10 kg) and the inline SVG figures (fit, friction map, cross-test),
+# and a screenshot is taken.
 # The screenshot is kept in $FRICTIONLAB_REPORT_SCREENSHOT, else ./report_browser.png in the
 # working directory (ctest runs in the build directory, so CI can keep it as an artefact).
 # Usage: report_browser.sh PATH_TO_frictionlab SOURCE_DIR
@@ -25,7 +26,11 @@ page="$tmp/report/report.html"
 # Self-contained: no external resource is referenced.
 ! grep -Eq '(src|href)="(https?:)?//' "$page" || fail "report.html references a network resource"
 grep -q "<svg" "$page" || fail "report.html has no inline SVG figure"
-for f in fit.svg fit.svg.dat fit.svg.gp; do [ -s "$tmp/report/$f" ] || fail "report directory lacks $f"; done
+# The fit, the friction map and (--validate) the cross-test, each with its data and script.
+for f in {fit,friction-map,cross-test}.svg{,.dat,.gp}; do [ -s "$tmp/report/$f" ] || fail "report directory lacks $f"; done
+grep -q "Cross-test" "$tmp/report/cross-test.svg" || fail "cross-test figure lacks its title"
+grep -q "DATA_EMPS_PULSES.mat" "$tmp/report/cross-test.svg" || fail "cross-test figure does not name the second file"
+grep -q "predicted" "$tmp/report/cross-test.svg" || fail "cross-test figure lacks the predicted force"
 
 run_browser() {  # extra chromium arguments; a fresh profile each time, no network, no GPU
   local profile
@@ -42,8 +47,12 @@ grep -q '>kg<' "$tmp/dom.html" || fail "rendered DOM lacks the unit kg"
 grep -q 'DATA_EMPS_PULSES.mat' "$tmp/dom.html" || fail "rendered DOM lacks the cross-test file"
 grep -q '6cf6814ae14618795da0101aae2bb97ff0c6351b0501b5492751b02b07facf7e' "$tmp/dom.html" ||
   fail "rendered DOM lacks the data file's sha256"
-[ "$(grep -o '<svg' "$tmp/dom.html" | wc -l)" -ge 1 ] || fail "rendered DOM lacks the SVG figure"
-grep -q '<figcaption>' "$tmp/dom.html" || fail "rendered DOM lacks the figure caption"
+[ "$(grep -o '<svg' "$tmp/dom.html" | wc -l)" -ge 3 ] || fail "rendered DOM lacks the three SVG figures"
+[ "$(grep -o '<figcaption>' "$tmp/dom.html" | wc -l)" -ge 3 ] || fail "rendered DOM lacks the figure captions"
+grep -q 'id="figure-2"' "$tmp/dom.html" && grep -q 'Friction against velocity' "$tmp/dom.html" ||
+  fail "rendered DOM lacks the friction map"
+grep -q 'id="figure-3"' "$tmp/dom.html" && grep -q 'Cross-test: the drive force' "$tmp/dom.html" ||
+  fail "rendered DOM lacks the cross-test figure"
 
 mkdir -p "$(dirname "$shot")"
 rm -f "$shot"

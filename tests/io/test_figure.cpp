@@ -131,6 +131,36 @@ TEST(Figure, DataBlocksAndScript) {
   EXPECT_NE(gnuplot_script(f, "m.pdf").find("set terminal pdfcairo"), std::string::npos);
 }
 
+TEST(Figure, MapStyleMarkerSizesLineWidthsAndZeroLines) {
+  // A friction map: a dense cloud of small samples, binned means with visible error bars, a
+  // heavy law curve, and both zero lines (velocity and force are signed).
+  Figure f;
+  FigurePanel p;
+  p.x_label = "velocity (m/s)";
+  p.y_label = "friction force (N)";
+  p.zero_line = true;
+  p.zero_x_line = true;
+  FigureSeries cloud{"samples", {-1, 1}, {-2, 2}, {}, SeriesStyle::points, "#a8a8a8"};
+  cloud.point_size = 0.25;
+  FigureSeries bins{"bin mean +- std", {-1, 1}, {-2, 2}, {0.3, 0.3}, SeriesStyle::errorbars, ""};
+  FigureSeries law{"law", {-1, std::nan(""), 1}, {-2, std::nan(""), 2}, {}, SeriesStyle::lines, ""};
+  law.line_width = 2.2;
+  p.series = {cloud, bins, law};
+  f.panels.push_back(p);
+  const std::string gp = gnuplot_script(f, "map.svg");
+  EXPECT_NE(gp.find("with points pt 7 ps 0.25"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("with yerrorbars pt 7 ps 0.8 lw 1.2"), std::string::npos) << gp;  // the defaults
+  EXPECT_NE(gp.find("with lines lw 2.2"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set xzeroaxis"), std::string::npos);
+  EXPECT_NE(gp.find("set yzeroaxis"), std::string::npos);
+  // Without them: the defaults, and no vertical zero line carried over from an earlier panel.
+  const std::string plain = gnuplot_script(sample_figure(), "m.svg");
+  EXPECT_NE(plain.find("with lines lw 1.6"), std::string::npos);
+  EXPECT_NE(plain.find("with points pt 7 ps 0.7"), std::string::npos);
+  EXPECT_EQ(plain.find("set yzeroaxis"), std::string::npos);
+  EXPECT_NE(plain.find("unset yzeroaxis"), std::string::npos);
+}
+
 TEST(Figure, RefusesBadFigures) {
   Figure f;
   EXPECT_THROW(gnuplot_data(f), std::invalid_argument);  // no panels
@@ -224,5 +254,37 @@ TEST(Report, WritesSelfContainedPage) {
   EXPECT_TRUE(fs::exists(dir / "rep" / "mine.txt"));
   EXPECT_THROW(write_report(sample_result(), {{"../x", "", sample_figure()}}, {}, (dir / "r2").string(), false),
                std::invalid_argument);
+  fs::remove_all(dir);
+}
+
+TEST(Report, FiguresInOrderEachWithItsFilesAndCaption) {
+  // identify's report: the fit, the friction map and the cross-test, in that order.
+  if (!have_gnuplot()) GTEST_SKIP() << "gnuplot not installed (Debian package gnuplot-nox)";
+  const fs::path dir = scratch("report3");
+  const std::string out = (dir / "rep").string();
+  Figure map = sample_figure();
+  map.panels.resize(1);
+  map.title = "Friction map";
+  Figure cross = sample_figure();
+  cross.title = "Cross-test";
+  const std::string page = write_report(sample_result(),
+                                        {{"fit", "The fit.", sample_figure()},
+                                         {"friction-map", "Friction against velocity.", map},
+                                         {"cross-test", "Measured and predicted force.", cross}},
+                                        {}, out, false);
+  const std::string h = slurp(page);
+  for (const char* name : {"fit", "friction-map", "cross-test"})
+    for (const char* ext : {".svg", ".svg.dat", ".svg.gp"})
+      EXPECT_TRUE(fs::exists(dir / "rep" / (std::string(name) + ext))) << name << ext;
+  const auto fit = h.find("The fit."), m = h.find("Friction against velocity."), c = h.find("Measured and predicted force.");
+  ASSERT_NE(fit, std::string::npos);
+  ASSERT_NE(m, std::string::npos);
+  ASSERT_NE(c, std::string::npos);
+  EXPECT_LT(fit, m);
+  EXPECT_LT(m, c);
+  EXPECT_NE(h.find("id=\"figure-3\""), std::string::npos);
+  std::size_t svgs = 0;
+  for (auto at = h.find("<svg"); at != std::string::npos; at = h.find("<svg", at + 1)) ++svgs;
+  EXPECT_EQ(svgs, 3u);
   fs::remove_all(dir);
 }

@@ -56,3 +56,129 @@ def test_load_law_yaml_json_and_model_json(tmp_path):
     (tmp_path / "bad.yaml").write_text("law: coulomb\nFc: -1\n")
     with pytest.raises(ValueError, match=r"bad.yaml.*coulomb: Fc = -1 must be >= 0"):
         fl.load_law(tmp_path / "bad.yaml")
+
+
+# ---- real rigs' logs: no header row, other delimiters, irregular time ------------------------
+
+def _robot_log(path, rows=800, seed=5, hole_after=None):
+    """A headerless joint log: 100 Hz nominal, stamps 10 to 12 ms apart, 31 columns; column 2 is
+    a 0.5 Hz sine of 1 rad (joint 1)."""
+    rng = np.random.default_rng(seed)
+    steps = rng.uniform(0.010, 0.012, rows - 1)
+    if hole_after is not None:
+        steps[hole_after - 1] += 0.5
+    t = 2.0 + np.concatenate([[0.0], np.cumsum(steps)])
+    cols = [t, np.sin(np.pi * t)] + [np.full(rows, 0.1 * j) for j in range(29)]
+    np.savetxt(path, np.column_stack(cols), delimiter=";", fmt="%.9g")
+    return t
+
+
+def test_load_headerless_log_names_and_resample(tmp_path):
+    p = tmp_path / "joints.csv"
+    t = _robot_log(p)
+    d = fl.load(p)
+    assert not d.header_row
+    assert d.columns[:3] == ["c1", "c2", "c3"] and d.columns[-1] == "c31"
+    assert d.resampling is None
+    with pytest.raises(KeyError, match=r"no column 'time'.*c31.*no header row"):
+        d["time"]
+
+    d = fl.load(p, names="t,q1", resample=True)
+    assert d.columns[:3] == ["t", "q1", "c3"]
+    r = d.resampling
+    assert 0.010 - 1e-9 <= r["dt_min"] <= r["dt_median"] <= r["dt_max"] <= 0.012 + 1e-9
+    assert r["dt"] == r["dt_median"] and r["samples_in"] == 800
+    assert r["samples_out"] == len(d["t"]) == int(np.floor((t[-1] - t[0]) / r["dt"] + 1e-9)) + 1
+    steps = np.diff(d["t"])
+    kStepRel = 1e-9  # the grid is t0 + i dt
+    assert np.all(np.abs(steps - r["dt"]) <= kStepRel * r["dt"])
+    # Linear interpolation of the sine: error <= h^2 w^2 / 8 with h <= 12 ms.
+    kInterpTol = 0.012 ** 2 * np.pi ** 2 / 8
+    assert np.max(np.abs(d["q1"] - np.sin(np.pi * d["t"]))) <= kInterpTol
+    assert len(d.lines) == 0
+
+    # A given step, names as a list; the time column chosen by name.
+    d2 = fl.load(p, names=["time", "q1"], resample=0.02, time="time")
+    assert d2.resampling["dt"] == 0.02
+
+
+def test_load_delimiters_bom_crlf_quotes_and_extremes(tmp_path):
+    p = tmp_path / "excel.csv"
+    p.write_bytes(b'\xef\xbb\xbf"time"\t"force, N"\r\n0\t1e-400\r\n0.5\t2\r\n')
+    d = fl.load(p)
+    assert d.columns == ["time", "force, N"]
+    assert d["force, N"].tolist() == [0.0, 2.0]
+    (tmp_path / "spaces.csv").write_text("0.0  1.5\n0.1  2.5\n")
+    assert fl.load(tmp_path / "spaces.csv")["c2"].tolist() == [1.5, 2.5]
+    (tmp_path / "huge.csv").write_text("t,x\n0,1e400\n")
+    with pytest.raises(ValueError, match=r"line 2, column 2 'x': '1e400' is out of the range of a double"):
+        fl.load(tmp_path / "huge.csv")
+
+
+def test_load_repeated_stamps_gap_and_max_gap(tmp_path):
+    p = tmp_path / "holes.csv"
+    p.write_text("time,f\n0,0\n0.01,1\n0.02,2\n0.02,4\n0.03,3\n0.04,4\n0.05,5\n0.06,6\n0.26,26\n0.27,27\n")
+    with pytest.raises(ValueError, match=r"holes.csv: line 9 to line 10: a gap of 0.2 s.*max_gap 0.202"):
+        fl.load(p, resample=True)
+    d = fl.load(p, resample=True, max_gap=0.25)
+    assert d.resampling["merged"] == 1 and d.resampling["max_gap"] == 0.25
+    assert len(d.warnings) == 1 and "line 5" in d.warnings[0]
+    kTol = 1e-9  # straight lines through integers
+    assert d["f"][2] == pytest.approx(3.0, abs=kTol)    # mean of the repeated stamp's rows
+    assert d["f"][16] == pytest.approx(16.0, abs=kTol)  # across the allowed hole
+
+
+def test_load_argument_errors_name_the_argument(tmp_path, source_dir):
+    p = tmp_path / "log.csv"
+    _robot_log(p, rows=50)
+    with pytest.raises(ValueError, match=r"names gives 32 names but the file has 31 columns"):
+        fl.load(p, names=[f"n{k}" for k in range(32)])
+    with pytest.raises(ValueError, match=r"names: name 2 is empty"):
+        fl.load(p, names="t,,q")
+    with pytest.raises(TypeError, match=r"names: name 2 is int"):
+        fl.load(p, names=["t", 3])
+    with pytest.raises(ValueError, match=r"resample = -0.01"):
+        fl.load(p, resample=-0.01)
+    with pytest.raises(ValueError, match=r"resample = 'fast'"):
+        fl.load(p, resample="fast")
+    with pytest.raises(ValueError, match=r"max_gap = nan"):
+        fl.load(p, resample=True, max_gap=float("nan"))
+    with pytest.raises(ValueError, match=r"max_gap = 1.0: only used with resample"):
+        fl.load(p, max_gap=1.0)
+    with pytest.raises(ValueError, match=r"resample = 100 s is longer than the record"):
+        fl.load(p, resample=100)
+    with pytest.raises(ValueError, match=r"names: names the columns of a CSV file"):
+        fl.load(source_dir / "data" / "emps" / "DATA_EMPS.mat", names="a,b")
+
+
+def test_load_mat_corrupt_compressed_variable_and_wrong_shapes(tmp_path, source_dir):
+    import struct
+    import zlib
+
+    b = bytearray((source_dir / "data" / "emps" / "DATA_EMPS.mat").read_bytes())
+    at = 128
+    while at + 8 <= len(b):  # flip bytes in the middle of qm's compressed element
+        typ, size = struct.unpack("<II", b[at:at + 8])
+        head = zlib.decompressobj().decompress(bytes(b[at + 8:at + 8 + size]), 64) if typ == 15 else b""
+        if head[44:48] == b"qm\0\0":
+            for k in range(4):
+                b[at + 8 + size // 2 + 7 * k] ^= 0x5A
+        at += 8 + size
+    bad = tmp_path / "flipped.mat"
+    bad.write_bytes(bytes(b))
+    with pytest.raises(ValueError, match=r"flipped.mat: .*variable 'qm'.*corrupt"):
+        fl.load(bad)
+
+    scipy_io = pytest.importorskip("scipy.io")
+    p = tmp_path / "odd.mat"
+    scipy_io.savemat(p, {"t": np.arange(20) * 1e-3, "qm": np.ones((3, 4)), "label": "rig 3",
+                         "info": {"rate": 100.0}, "z": np.ones(20) * (1 + 2j)})
+    d = fl.load(p)
+    assert "t" in d.columns
+    with pytest.raises(KeyError, match=r"variable 'qm' is a 3x4 matrix; expected a real numeric vector"):
+        d["qm"]
+    with pytest.raises(KeyError, match=r"variable 'info' is a 1x1 struct \(fields: rate\)"):
+        d["info"]
+    with pytest.raises(KeyError, match=r"variable 'z' is a 1x20 complex vector"):
+        d["z"]
+    assert "char array" in d.unusable["label"]

@@ -3,6 +3,7 @@
 // slip velocity, and the friction force at breakaway and at re-stick.
 
 #include <span>
+#include <string>
 #include <vector>
 
 namespace frictionlab {
@@ -42,6 +43,11 @@ struct StickSlipResult {
   double mean_breakaway_force = 0.0;
   double mean_restick_force = 0.0;
   double mean_force_drop = 0.0;  ///< mean (breakaway - re-stick) over complete slips
+  /// Why the record shows no stick-slip, empty when it does: "no slip found: velocity never
+  /// exceeded ..." (never moved) or "no slip from stick found: ..." (slides from the start and
+  /// never sticks then slips again). The figures are then not meaningful (period NaN).
+  std::string message;
+  bool found() const { return message.empty(); }
 };
 
 /// Detects stick and slip in a record.

@@ -50,6 +50,32 @@ struct IdimTerm {
   std::function<void(const IdimKinematics&, Eigen::Ref<Eigen::VectorXd> out)> fill = {};
 };
 
+/// What the regressors are built from when the data has both a position and a velocity.
+enum class IdimSource {
+  automatic,  ///< the position when given, else the velocity
+  position,   ///< the position, low-passed and differentiated twice
+  velocity,   ///< the measured velocity, low-passed like the position (not differentiated), then differentiated once
+};
+
+/// Cut-off, decimation and skip chosen from the sample rate fs (Hz), so that a record at any
+/// rate gets a working recipe and a 1 kHz record gets exactly the EMPS one (100 Hz, 10, 49):
+///   cutoff_hz  = min(100 Hz, fs / 10): the motion band of the EMPS recipe, but never above a
+///                fifth of the Nyquist frequency, where the Butterworth would shape the signal;
+///   decimation = clamp(floor(fs / 100 Hz), 1, 10): a decimated rate near 100 Hz (the EMPS
+///                one), at most 10 because one order-8 Chebyshev stage is not accurate beyond
+///                that; the decimation's own anti-alias filter (0.8 of the new Nyquist) bounds
+///                the band of both sides of the regression alike;
+///   skip       = round(5 fs / cutoff_hz) - 1: five periods of the cut-off, the filter's start
+///                transient (49 samples at 1 kHz, 100 Hz).
+/// E.g. 100 Hz: 10 Hz, 1, 49; 500 Hz: 50 Hz, 5, 49; 8 kHz: 100 Hz, 10, 399.
+/// \throws std::invalid_argument when fs is not a positive finite number.
+struct IdimRateDefaults {
+  double cutoff_hz = 100;
+  int decimation = 10;
+  Eigen::Index skip = 49;
+};
+IdimRateDefaults idim_rate_defaults(double sample_rate_hz);
+
 /// Options of identify_idim; defaults are the EMPS recipe.
 struct IdimOptions {
   /// Built-in terms, in column order: "inertia" (M, qdd), "viscous" (Fv, qd), "coulomb" (Fc,
@@ -89,6 +115,12 @@ struct IdimOptions {
   double max_condition = 1e8;
   /// Units printed. Default linear.
   Axis axis = Axis::linear;
+  /// Take cutoff_hz, decimation and skip from idim_rate_defaults of the data's sample rate
+  /// instead of the fields above (the command line sets these for options not given). The
+  /// result lists the values so chosen in diagnostics.groups["defaults"]. Default false.
+  bool auto_cutoff = false, auto_decimation = false, auto_skip = false;
+  /// What the regressors are built from (IdimData may hold both). Default automatic.
+  IdimSource source = IdimSource::automatic;
 };
 
 /// The regression the recipe builds: decimated regressor matrix, decimated force, and the terms.
@@ -107,14 +139,18 @@ std::vector<IdimTerm> idim_terms(const IdimOptions& options);
 
 /// Steps 1-4 of the recipe on one data set.
 /// \throws std::invalid_argument naming the file and the problem for unequal lengths, non-finite
-///         samples, non-increasing or irregular time, no position and no velocity, a cut-off at or
-///         above Nyquist, or too few samples for the padding, skip and decimation.
+///         samples, non-increasing or irregular time, no position and no velocity (or not the one
+///         options.source asks for), a cut-off at or above Nyquist, or too few samples for the
+///         padding, skip and decimation.
 IdimRegression idim_regression(const IdimData& data, const IdimOptions& options = {});
 
 /// Identifies the parameters of the terms by the recipe. Status error (not an exception), with a
 /// message naming the cause, when the data cannot give an answer: a regressor column that is zero
-/// (no motion, no acceleration), no excitation (velocity never above min_velocity), fewer
-/// samples than parameters, or a condition number above max_condition.
+/// (no motion, no acceleration), no excitation (velocity never above min_velocity), a force that
+/// is zero throughout (e.g. a drive gain of 0), fewer samples than parameters, a condition number
+/// above max_condition, or fit figures that are not finite. Standard deviations and the
+/// correlation matrix come from identify/uncertainty.hpp (std NaN for undetermined parameters).
+/// diagnostics.texts["regressors_from"] is "position" or "velocity".
 /// \throws std::invalid_argument on bad input, as idim_regression.
 Result identify_idim(const IdimData& data, const IdimOptions& options = {});
 

@@ -3,11 +3,15 @@
 // simulate M x'' = u(t) - F_lugre(z, x') with the measured applied force u(t) as input, compare
 // the simulated position with the measured one, and minimise the squared difference over the
 // dynamic parameters sigma0, sigma1 (and the static ones Fc, Fs, vs, sigma2 unless given) with
-// Ceres (automatic differentiation through the fixed-step simulation).
+// Ceres (automatic differentiation through the fixed-step simulation of the library's own
+// LuGreT<T>, so the fit simulates exactly the law `simulate` does, vd included).
 //
 // Static part first, unless given: velocity and acceleration of the measured position by central
-// differences, friction = u - M a on the sliding samples, a Stribeck fit (fit_static_law). These
-// are starting values; the output error refines them together with sigma0 and sigma1.
+// differences, friction = u - M a on the sliding samples, a Stribeck fit (fit_static_law) for Fc
+// and sigma2. Fs and vs are not seen by the sliding samples of a record driven fast (its vs
+// collapses there), so they start from a multi-start: a grid of (Fs, vs) pairs, each simulated
+// once over the record, ranked by output error; the fit runs from the best-ranked pairs until one
+// reproduces the record to its noise.
 
 #include <Eigen/Core>
 #include <functional>
@@ -47,6 +51,10 @@ struct LugreOptions {
   /// Stribeck velocity (m/s or rad/s) used with a static-coulomb-viscous `static_law`, which has
   /// none. Default 0.001.
   double stribeck_velocity = 0.001;
+  /// Damping decay velocity vd (m/s or rad/s, >= 0) of the revisited LuGre damping
+  /// sigma1 exp(-(v/vd)^2) (Canudas de Wit 1998); 0 (default) = constant damping sigma1. Held
+  /// fixed: the fit simulates with it. A `static_law` of kind lugre with vd > 0 gives its own.
+  double vd = 0.0;
   /// Integration substeps per sample interval (>= 1) of the fit's second-order fixed-step
   /// simulation. The bristle-mass resonance sqrt(sigma0/M) (316 rad/s for Table I) and the
   /// reversals need a step well below the sample time of 1 kHz data: 4 substeps keep the
@@ -62,17 +70,24 @@ struct LugreOptions {
 
 /// Identifies the LuGre parameters of a rigid axis from applied force and position.
 /// The output error is taken over windows: from the record's start (at rest, z = 0) to the first
-/// velocity peak, then from each peak to the next, each window restarted from the measured
-/// position and velocity with the bristles in steady sliding, so that one reversal's error does
-/// not carry over to the rest of the record. With the static part identified, the fit runs in two
-/// stages: the static parameters alone (sigma0, sigma1 held at their starts), then all together.
+/// velocity peak, then from each peak to the next, each window restarted with the bristles in
+/// steady sliding from its own initial position and velocity, fitted with the law (started from
+/// the measured ones), so that neither one reversal's error nor the noise of a measured start
+/// carries over the record. With the static part identified, each start of the multi-start is
+/// fitted jointly, then (if that does not reach the noise) in two stages: sigma0 and sigma1 with
+/// the static part held, then all together; at most 4 fits.
 /// parameters: sigma0 (N/m), sigma1 (N s/m), sigma2 (N s/m), Fc (N), Fs (N), vs (m/s) with
-/// standard deviations from s^2 (J'J)^-1 at the solution (0 for values held from `static_law`),
-/// and delta (held, std 0).
+/// standard deviations from s^2 A^-1 at the solution, A = J'J with the windows' starts eliminated,
+/// through identify/uncertainty.hpp: NaN, a flag and a warning for a parameter at a bound of the
+/// fit or not determined by the record (near-singular information, or a std above the value);
+/// 0 for values held from `static_law`; delta (and vd when > 0) held, std 0.
 /// fit: relative error (%) and RMSE (m) of the simulated position.
 /// diagnostics: numbers "iterations", "cost_initial", "cost_final" (m^2), "fit_seconds",
-/// "substeps", "windows", "passive" (1 / 0), "static_given" (1 / 0), "presliding_samples"; groups "start" (the starting values) and, when identified, "static_fit"
-/// (the static Stribeck fit before the output error); warnings (among them the passivity verdict
+/// "substeps", "windows", "passive" (1 / 0), "static_given" (1 / 0), "presliding_samples", and
+/// with the static part identified "fits" and "position_noise_std" (m, from fourth differences);
+/// groups "start" (the starting values) and, when identified, "static_fit" (the static Stribeck
+/// fit on the sliding samples) and "multistart" (the best-ranked pair); correlation (the six or
+/// two fitted parameters), undetermined, at_bound; warnings (among them the passivity verdict
 /// when the identified set is not passive, and non-convergence).
 /// law: the lugre LawSpec. series: "time", "position", "position_sim" (the windowed simulation
 /// of the identified model), "position_free_run" (the identified model simulated over the whole

@@ -18,8 +18,11 @@ namespace frictionlab {
 struct ParameterEstimate {
   std::string name;  ///< DESIGN.md name: "M", "Fv", "Fc", "offset", "Fc_pos", ...
   double value = 0;  ///< SI units, see `unit`
-  double std = 0;    ///< standard deviation, same unit (NaN when unknown)
+  double std = 0;    ///< standard deviation, same unit (NaN when unknown or not determined by the data)
   std::string unit;  ///< e.g. "N", "N s/m", "kg"
+  /// Why `std` is NaN, for text output and reports: "" (determined), "undetermined" (the data
+  /// cannot determine it) or "at bound" (the fit ended at a bound). See identify/uncertainty.hpp.
+  std::string flag;
 };
 
 /// How well the identified model reproduces the data it was identified on.
@@ -40,6 +43,17 @@ struct ValidationFigures {
   /// `frictionlab validate`. When not empty, JSON "relative_error_percent" is this object
   /// instead of the single number above.
   std::map<std::string, double> signal_errors_percent;
+  /// Signals behind the cross-test figure, in SI units (not written to JSON): idim's cross_test
+  /// gives "time", "force" (measured) and "force_model" (predicted), of one length.
+  std::map<std::string, std::vector<double>> series;
+};
+
+/// Correlation of the parameter estimates: matrix[i][j] = cov_ij / sqrt(cov_ii cov_jj) of the
+/// parameters `names` (unit diagonal, symmetric). Entries involving a parameter without a std
+/// (undetermined, at a bound) are NaN off the diagonal (null in JSON). Empty when not computed.
+struct ParameterCorrelation {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> matrix;  ///< names.size() x names.size()
 };
 
 /// Numerical health of an identification.
@@ -52,6 +66,11 @@ struct Diagnostics {
   /// Named lists of records, e.g. lists["points"] = one {"velocity": v, "force": f} per segment
   /// (a JSON array of objects each).
   std::map<std::string, std::vector<std::map<std::string, double>>> lists;
+  /// Named words, e.g. texts["regressors_from"] = "position" (a JSON string each).
+  std::map<std::string, std::string> texts;
+  /// Parameters the data cannot determine, and parameters that ended at a bound (std NaN each).
+  std::vector<std::string> undetermined, at_bound;
+  ParameterCorrelation correlation;
 };
 
 enum class ResultStatus { ok, error };
@@ -72,7 +91,9 @@ struct Result {
   /// the estimates do not make a valid law, e.g. a negative Coulomb level; a warning says why).
   std::optional<LawSpec> law;
   /// Signals behind the result's figures, by name, in SI units (not written to JSON): e.g. idim
-  /// "time", "force", "force_model"; sweep "velocity", "force", "force_std"; decay "time",
+  /// "time", "force", "force_model", "velocity", "friction" (force less inertia and offset),
+  /// "friction_model" (the friction terms), "law_velocity" and "law_force" (the friction terms
+  /// over a velocity grid); sweep "velocity", "force", "force_std"; decay "time",
   /// "position", "peak_time", "peak_position". Series that share a prefix share a length.
   std::map<std::string, std::vector<double>> series;
 
@@ -87,7 +108,9 @@ struct Result {
 /// {"schema":1,"status":"ok"|"error","message":...,"method":...,"model":...,
 ///  "data":{"file":...,"sha256":...},"parameters":{"Fc":{"value":v,"std":s,"unit":"N"},...},
 ///  "fit":{"relative_error_percent":e,"rmse":r,"samples":n},"validation":{...} (only when set),
-///  "diagnostics":{"condition_number":c,"warnings":[...], ...numbers, ...groups, ...lists}}. Non-finite numbers are null.
+///  "diagnostics":{"condition_number":c,"warnings":[...],"undetermined":[...],"at_bound":[...],
+///  "correlation":{"names":[...],"matrix":[[...]]} (only when computed), ...numbers, ...groups,
+///  ...lists, ...texts}}. Non-finite numbers are null.
 /// `indent` < 0 gives one line. (Returns text so nlohmann_json stays a private dependency.)
 std::string to_json(const Result& result, int indent = 2);
 

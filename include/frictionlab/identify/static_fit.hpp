@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/friction_law.hpp"
 
 namespace frictionlab {
@@ -25,17 +26,24 @@ struct StaticFitOptions {
   /// Bounds of a fitted exponent; outside them the shape is not identifiable from typical data.
   double delta_min = 0.5, delta_max = 5.0;
   int max_iterations = 200;
+  /// The Stribeck part (vs, delta) counts as determined by the points only when at least this
+  /// many points (per direction) are slower than the fitted vs and the slowest point is below
+  /// 2 vs; otherwise vs and delta get std NaN and a warning. Default 3.
+  int min_points_below_vs = 3;
   /// Threads Ceres may use to evaluate residuals (the fit of 1e5 points profits from 2).
   int num_threads = 2;
 };
 
 /// One fitted parameter: value, standard deviation (from the residual variance and the
-/// Jacobian at the solution, s^2 (J'J)^-1), and the quantity that gives its unit.
+/// Jacobian at the solution, s^2 (J'J)^-1; NaN when the fit ended at a bound or the points do
+/// not determine it, see identify/uncertainty.hpp; 0 for a held exponent), and the quantity that
+/// gives its unit.
 struct FittedParameter {
   std::string name;
   double value = 0;
   double std = 0;
   Quantity quantity = Quantity::force;
+  std::string flag;  ///< "", "undetermined" or "at bound"
 };
 
 struct StaticFit {
@@ -47,6 +55,9 @@ struct StaticFit {
   int iterations = 0;
   bool converged = false;
   std::vector<std::string> warnings;        ///< e.g. "no Stribeck effect: Fs - Fc = 0.001 N is within 2 std"
+  std::vector<std::string> undetermined;    ///< parameters the points cannot determine (std NaN)
+  std::vector<std::string> at_bound;        ///< parameters that ended at a bound (std NaN)
+  ParameterCorrelation correlation;         ///< of the estimated parameters (a held exponent left out)
 };
 
 /// Fits `options.model` to points (v_i, F_i). Shapes: velocity and force of equal length N.

@@ -27,17 +27,33 @@ struct TimeWindow {
 
 struct SweepOptions {
   StaticFitOptions fit;  ///< the law to fit (default stribeck, exponent fitted)
-  /// A segment is steady while max(v) - min(v) <= 2 max(velocity_tolerance, relative_tolerance |v|).
-  /// velocity_tolerance in m/s or rad/s; default 0 (relative only). relative_tolerance default 0.01.
+  /// Segments are found on the velocity smoothed by a centred moving average over
+  /// smoothing_fraction * min_duration (at least 1 sample). A segment is steady while the
+  /// smoothed velocity's max - min <= 2 max(velocity_tolerance, relative_tolerance |v|,
+  /// noise_band * sigma_s), where sigma_s is the measured noise of the smoothed velocity: the
+  /// raw noise sigma (1.4826 median |dv| / sqrt 2, from sample-to-sample differences, robust to
+  /// the speed steps) divided by sqrt(window). So a slow level in noise is found as well as a
+  /// fast one. velocity_tolerance in m/s or rad/s; default 0. relative_tolerance default 0.01.
   double velocity_tolerance = 0.0;
   double relative_tolerance = 0.01;
+  /// Half-width of the noise band in smoothed-noise std; default 5 (the range of a few hundred
+  /// smoothed samples of Gaussian noise stays within +-5 std).
+  double noise_band = 5.0;
+  /// Moving-average window as a fraction of min_duration; default 0.1.
+  double smoothing_fraction = 0.1;
   /// Shortest steady segment kept, s. Default 0.5 (the paper measured after 0.5 s of settling).
   double min_duration = 0.5;
   /// Part of each segment dropped at its start, as a fraction, so that the settling tail of the
   /// previous speed step does not bias the mean. Default 0.2.
   double settle_fraction = 0.2;
-  /// Segments slower than this are standstill, not sliding (m/s or rad/s). Default: 1e-3 max |v|.
+  /// Segments slower than this are standstill, not sliding (m/s or rad/s). Default: 1e-6 max |v|
+  /// (of the reference when given); a segment whose mean is within its band of zero is
+  /// standstill too. Two segments in a row at the same speed (within the band) are one level.
   double min_speed = -1;
+  /// Commanded velocity (m/s or rad/s, length N of the data), optional: when given, steady
+  /// segments are found on it instead of on the measured velocity; the points still average the
+  /// measured velocity and force.
+  Eigen::VectorXd reference;
   /// Windows to use instead of automatic detection (empty: detect).
   std::vector<TimeWindow> windows;
   /// Fewer segments than this is an error status. Default: the law's parameter count + 1.
@@ -57,10 +73,13 @@ struct SweepPoint {
 /// \throws std::invalid_argument on unequal lengths, non-finite samples, a window outside the record.
 std::vector<SweepPoint> sweep_points(const SweepData& data, const SweepOptions& options = {});
 
-/// Identifies the law options.fit.model from the sweep's points: parameters with std, fit
-/// figures over the points, diagnostics.lists["points"] with every point, warnings (e.g. "only 4
-/// steady segments found", "no negative-velocity segments"). Too few segments, or a fit that
-/// cannot be made, gives status "error" with the reason.
+/// Identifies the law options.fit.model from the sweep's points: parameters with std (NaN for
+/// parameters at a bound or not determined, e.g. vs and delta when fewer than 3 points lie below
+/// vs or the slowest is above 2 vs), fit figures over the points, diagnostics.lists["points"]
+/// with every point and lists["levels"] (speed, duration, samples), diagnostics.numbers
+/// "velocity_noise_std" and "smoothing_samples", diagnostics.correlation, warnings (e.g. "only 4
+/// steady segments found", "no negative-velocity segments", "the slowest segment is above 2
+/// vs"). Too few segments, or a fit that cannot be made, gives status "error" with the reason.
 /// \throws std::invalid_argument as sweep_points.
 Result identify_sweep(const SweepData& data, const SweepOptions& options = {});
 

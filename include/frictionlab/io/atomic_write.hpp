@@ -1,6 +1,15 @@
 #pragma once
-// Writes a file so that a failed run never leaves a half-written one: the content goes to a
-// temporary file in the same directory, which is then renamed over the target.
+// Writes an output file so that a failed run never leaves a half-written one, and never replaces
+// what is not a regular file. The one place where frictionlab decides how an output path is
+// written:
+//   - a new file, or an existing regular file (with overwrite): the content goes to a temporary
+//     file in the same directory, which is then renamed over the target (a symbolic link is
+//     followed: its target is replaced, the link stays);
+//   - a character device or a FIFO (/dev/null, a terminal, a named pipe), and any path under
+//     /dev (but /dev/shm) or /proc (/dev/stdout, /proc/self/fd/1): opened and written in place,
+//     as `cat > PATH` would, never renamed over, with or without overwrite (a regular file
+//     reached that way is one of the process's own descriptors: it is appended to);
+//   - a directory, a block device, a socket: refused.
 
 #include <string>
 #include <string_view>
@@ -9,15 +18,31 @@ namespace frictionlab {
 
 /// Options of write_file_atomic.
 struct AtomicWriteOptions {
-  /// Replace an existing file. Default false: an existing file is an error (CLI: --overwrite).
+  /// Replace an existing regular file. Default false: an existing regular file is an error
+  /// (CLI: --overwrite). Devices and FIFOs are written through without it.
   bool overwrite = false;
 };
 
-/// Writes `content` to `path` via "PATH.tmp-XXXXXX" in the same directory, flushed, then renamed.
-/// On any failure the temporary is removed and the target is untouched.
-/// \throws std::invalid_argument "PATH exists; pass --overwrite to replace it" when the file exists
-///         and overwrite is false; std::runtime_error naming the file on an I/O failure (missing
-///         directory, no permission, disk full).
+/// How write_file_atomic will write a path.
+enum class OutputKind {
+  create,         ///< no such file yet: temporary file, then rename
+  replace,        ///< an existing regular file (overwrite given): temporary file, then rename
+  write_through,  ///< a device, a FIFO or a path under /dev or /proc: opened and written in place
+};
+
+/// Checks, without writing anything, that `path` can take an output, and says how it will be
+/// written. Used before any work so that a run fails before its first output is written.
+/// \throws std::invalid_argument "PATH is a directory; expected a file name", "PATH exists; pass
+///         --overwrite to replace it" (a regular file, overwrite false), "PATH: directory D does
+///         not exist", "PATH is a block device / socket ...", "PATH: no such file under /dev or
+///         /proc (frictionlab creates no files there)".
+OutputKind check_output_path(const std::string& path, bool overwrite);
+
+/// Writes `content` to `path` as check_output_path says: via "PATH.tmp-XXXXXX" in the target's
+/// directory, flushed, then renamed (on any failure the temporary is removed and the target is
+/// untouched); or written through for a device or FIFO.
+/// \throws std::invalid_argument as check_output_path; std::runtime_error naming the file on an
+///         I/O failure (no permission, disk full, a FIFO whose reader went away).
 void write_file_atomic(const std::string& path, std::string_view content, const AtomicWriteOptions& options = {});
 
 }  // namespace frictionlab

@@ -29,6 +29,12 @@ struct FigureSeries {
   SeriesStyle style = SeriesStyle::lines;
   /// Colour as "#rrggbb"; empty: the next colour of the figure's palette.
   std::string color;
+  /// Marker size (points, errorbars) relative to gnuplot's default marker; 0: the style's default
+  /// (0.7 for points, 0.8 for errorbars). Small for dense clouds of samples.
+  double point_size = 0;
+  /// Line width (lines, steps, error bars) in gnuplot's units; 0: the style's default (1.6 for
+  /// lines and steps, 1.2 for error bars).
+  double line_width = 0;
 };
 
 /// One panel (a pair of axes). Labels carry the quantity and its unit, e.g. "time (s)".
@@ -38,6 +44,7 @@ struct FigurePanel {
   std::string y_label;  ///< e.g. "friction torque (N m)"
   std::vector<FigureSeries> series;
   bool zero_line = false;  ///< draw the y = 0 line (signed quantities: velocity, force)
+  bool zero_x_line = false;  ///< draw the x = 0 line (maps against a signed x, e.g. velocity)
   bool tight_x = false;    ///< x range exactly the data's (time axes); else rounded to tics
   std::string key = "top right";  ///< legend position in gnuplot words ("top left", "bottom right", ...)
 };

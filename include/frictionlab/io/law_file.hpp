@@ -34,9 +34,17 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where);
 /// naming `where` and the key on a missing law name or a non-numeric value.
 FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where);
 
-/// Reads a law from a `.yaml`/`.yml` or `.json` file. Throws std::invalid_argument naming the
-/// file when it cannot be read or parsed.
+/// Reads a law from a `.yaml`/`.yml` or `.json` file (a .json file through read_model_json).
+/// Throws std::invalid_argument naming the file when it cannot be read or parsed, and, for YAML,
+/// on a key given twice in one mapping (naming the key and its line).
 FrictionLaw load_law(const std::string& path);
+
+/// Reads a JSON law file or the MODEL.json of `frictionlab identify --json`, strictly: the whole
+/// file must be one JSON object (text after it is refused, with its line and column), and a model
+/// whose "status" is not "ok" is refused with its message (an identification that gave no answer
+/// has no law to use). The one reader of model files (identify lugre --static, validate, Python's
+/// load_law). \throws std::invalid_argument naming the file.
+nlohmann::json read_model_json(const std::string& path);
 
 /// The plain JSON form {"law": name, parameters..., lists...} of a law.
 nlohmann::json law_to_json(const FrictionLaw& law);

@@ -62,10 +62,15 @@ struct ScenarioOptions {
   std::optional<AxisParams> axis;
   /// Directory relative file names are resolved from; empty = the working directory.
   std::string base_dir;
+  /// Where `law` and `axis` came from (MODEL.json): an invalid inertia or offset is blamed on
+  /// this file, not on the scenario. Empty: on the scenario's plant section.
+  std::string model_source;
 };
 
 /// Reads a scenario from a parsed YAML mapping. `where` prefixes every message (the file name).
-/// \throws std::invalid_argument "WHERE: KEY.PATH: ..." for an unknown plant/law/input/controller
+/// \throws std::invalid_argument "WHERE: KEY.PATH: ..." for a key given twice in a mapping
+///         (naming it and its line), an output (duration * output_rate rows) larger than half
+///         the machine's memory (naming the keys and the memory it needs), an unknown plant/law/input/controller
 ///         type or field (listing the valid ones), a missing required field (naming it), a value
 ///         that is not a number, a non-positive duration, output rate, tolerance or step (with its
 ///         value), a data file that cannot be read, or a column or scalar it lacks (listing the

@@ -42,6 +42,16 @@ struct SteadySegmentOptions {
 std::vector<IndexRange> steady_segments(const Eigen::VectorXd& time, const Eigen::VectorXd& velocity,
                                         const SteadySegmentOptions& options);
 
+/// Standard deviation of white noise on a piecewise-smooth signal, estimated from its
+/// sample-to-sample differences: 1.4826 median|x(k+1) - x(k)| / sqrt(2). The median ignores the
+/// few large differences of steps and ramps, so a staircase of constant levels with noise gives
+/// the noise alone. Unit of x; 0 for fewer than 2 samples.
+double difference_noise_std(const Eigen::VectorXd& x);
+
+/// Centred moving average over `window` samples (odd windows centred exactly; shortened at the
+/// ends). Shape: as x. \throws std::invalid_argument when window < 1.
+Eigen::VectorXd moving_average(const Eigen::VectorXd& x, Eigen::Index window);
+
 /// First sample at or after `start` where |velocity| > threshold (m/s or rad/s, >= 0), or none.
 /// \throws std::invalid_argument on a negative threshold.
 std::optional<std::size_t> motion_onset(const Eigen::VectorXd& velocity, double threshold, std::size_t start = 0);

@@ -1,0 +1,45 @@
+#pragma once
+// Checks of parsed YAML shared by the scenario and law readers (private to src/io).
+
+#include <yaml-cpp/yaml.h>
+
+#include <map>
+#include <stdexcept>
+#include <string>
+
+namespace frictionlab::detail {
+
+/// Refuses a mapping that gives a key twice (`k: 2.0` then `k: 3.0`), anywhere in the document:
+/// yaml-cpp keeps both pairs and a lookup silently finds one of them, so the user's intent is
+/// unknown. Also refuses keys that are not plain scalars (a list or mapping as a key).
+/// \throws std::invalid_argument "WHERE: line L: key 'k' given twice (first on line F)".
+inline void check_unique_keys(const YAML::Node& node, const std::string& where) {
+  if (!node || !node.IsDefined()) return;
+  if (node.IsSequence()) {
+    for (const auto& item : node) check_unique_keys(item, where);
+    return;
+  }
+  if (!node.IsMap()) return;
+  std::map<std::string, int> seen;  // key -> 1-based line of its first occurrence
+  for (const auto& kv : node) {
+    const int line = kv.first.Mark().line + 1;
+    if (!kv.first.IsScalar())
+      throw std::invalid_argument(where + ": line " + std::to_string(line) + ": a key must be a name, not a list or mapping");
+    const std::string key = kv.first.Scalar();
+    const auto [it, fresh] = seen.emplace(key, line);
+    if (!fresh)
+      throw std::invalid_argument(where + ": line " + std::to_string(line) + ": key '" + key + "' given twice (first on line " +
+                                  std::to_string(it->second) + "); give each key once");
+    check_unique_keys(kv.second, where);
+  }
+}
+
+/// "WHERE: line L, column C: MESSAGE" for an exception yaml-cpp raised while a node was read
+/// (a value of the wrong kind where the reader asked for one).
+inline std::invalid_argument yaml_error(const std::string& where, const YAML::Exception& e) {
+  if (e.mark.is_null()) return std::invalid_argument(where + ": " + e.msg);
+  return std::invalid_argument(where + ": line " + std::to_string(e.mark.line + 1) + ", column " +
+                               std::to_string(e.mark.column + 1) + ": " + e.msg);
+}
+
+}  // namespace frictionlab::detail

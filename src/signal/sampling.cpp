@@ -1,0 +1,225 @@
+// The one regular-sampling check and the uniform resampler: see signal/sampling.hpp.
+#include "frictionlab/signal/sampling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "frictionlab/models/parameter.hpp"
+
+namespace frictionlab {
+namespace {
+
+// Time stamps are printed with 10 significant digits (two stamps 1 ms apart at t = 1000 s stay
+// distinct), steps with 6 (the jitter, not the clock, is what a step message is about).
+std::string stamp(double t) { return detail::format_value(t, 10); }
+std::string step(double dt) { return detail::format_value(dt, 6); }
+
+std::string label_of(const RowLabeller& labeller, Eigen::Index k) { return labeller ? labeller(k) : sample_label(k); }
+
+double median_of(std::vector<double> values) {
+  auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  return *mid;
+}
+
+}  // namespace
+
+std::string sample_label(Eigen::Index k) { return "sample " + std::to_string(k + 1); }
+
+TimeSteps time_steps(const Eigen::VectorXd& t) {
+  TimeSteps s;
+  const Eigen::Index n = t.size();
+  if (n < 2) return s;
+  std::vector<double> steps(static_cast<std::size_t>(n - 1));
+  for (Eigen::Index k = 1; k < n; ++k) steps[static_cast<std::size_t>(k - 1)] = t(k) - t(k - 1);
+  const auto [lo, hi] = std::minmax_element(steps.begin(), steps.end());
+  s.min = *lo;
+  s.max = *hi;
+  s.mean = (t(n - 1) - t(0)) / static_cast<double>(n - 1);
+  s.median = median_of(std::move(steps));
+  return s;
+}
+
+TimeSteps check_regular_sampling(const Eigen::VectorXd& t, const RegularSamplingCheck& c) {
+  const Eigen::Index n = t.size();
+  const Eigen::Index needed = std::max<Eigen::Index>(c.min_samples, 2);
+  if (n < needed) {
+    throw SamplingError(SamplingProblem::too_few, c.where + "time has " + std::to_string(n) +
+                                                      " samples; expected at least " + std::to_string(needed));
+  }
+  for (Eigen::Index k = 0; k < n; ++k) {
+    if (!std::isfinite(t(k))) {
+      throw SamplingError(SamplingProblem::not_finite,
+                          c.where + label_of(c.row_label, k) + ": time = " + stamp(t(k)) + " s is not a finite number");
+    }
+    if (k > 0 && !(t(k) > t(k - 1))) {
+      const bool repeated = t(k) == t(k - 1);
+      throw SamplingError(repeated ? SamplingProblem::repeated : SamplingProblem::backwards,
+                          c.where + label_of(c.row_label, k) + ": time " + stamp(t(k)) +
+                              " s is not greater than the previous " + stamp(t(k - 1)) + " s" +
+                              (repeated ? " (a repeated time stamp)" : "") + "; expected strictly increasing time");
+    }
+  }
+  const TimeSteps s = time_steps(t);
+  if (!c.require_regular) return s;
+  // The rule: every step within `tolerance` of the median step. (The median, not the mean: one
+  // gap is then reported where it is, not at every other step.)
+  const double limit = c.tolerance * s.median;
+  if (s.max - s.median <= limit && s.median - s.min <= limit) return s;
+  for (Eigen::Index k = 1; k < n; ++k) {
+    const double dt = t(k) - t(k - 1);
+    if (std::abs(dt - s.median) > limit) {
+      throw SamplingError(SamplingProblem::irregular,
+                          c.where + label_of(c.row_label, k) + ": time step " + step(dt) +
+                              " s differs from the median step " + step(s.median) + " s by more than " +
+                              detail::format_value(100 * c.tolerance, 6) + " % (steps from " + step(s.min) + " to " +
+                              step(s.max) + " s); " + c.requirement);
+    }
+  }
+  return s;
+}
+
+std::string UniformResampler::label(Eigen::Index k) const { return label_of(options_.row_label, k); }
+
+UniformResampler::UniformResampler(const Eigen::VectorXd& t, const ResampleOptions& o) : options_(o) {
+  const std::string& where = o.where;
+  if (!(std::isfinite(o.dt) && o.dt >= 0)) {
+    throw std::invalid_argument(where + o.dt_name + " = " + step(o.dt) +
+                                ": expected the step of the uniform grid in s (> 0), or none for the median step");
+  }
+  if (!(std::isfinite(o.max_gap) && o.max_gap >= 0)) {
+    throw std::invalid_argument(where + o.max_gap_name + " = " + step(o.max_gap) +
+                                ": expected the longest gap to interpolate over in s (> 0)");
+  }
+  n_in_ = t.size();
+  report_.samples_in = n_in_;
+  for (Eigen::Index k = 0; k < n_in_; ++k) {
+    if (!std::isfinite(t(k))) {
+      throw SamplingError(SamplingProblem::not_finite, where + label(k) + ": time = " + stamp(t(k)) + " s is not a finite number");
+    }
+    if (k > 0 && t(k) < t(k - 1)) {
+      throw SamplingError(SamplingProblem::backwards,
+                          where + label(k) + ": time " + stamp(t(k)) + " s is before the previous " + stamp(t(k - 1)) +
+                              " s; expected increasing time (repeated time stamps are merged, earlier ones are not sorted)");
+    }
+    if (k == 0 || t(k) != t(k - 1)) group_start_.push_back(k);
+  }
+  const auto m = static_cast<Eigen::Index>(group_start_.size());
+  group_start_.push_back(n_in_);
+  if (m < 2) {
+    throw SamplingError(SamplingProblem::too_few, where + "time has " + std::to_string(m) +
+                                                      " distinct time stamps; expected at least 2 to resample");
+  }
+  Eigen::VectorXd u(m);  // the distinct time stamps
+  for (Eigen::Index j = 0; j < m; ++j) u(j) = t(group_start_[static_cast<std::size_t>(j)]);
+  report_.merged = n_in_ - m;
+  if (report_.merged > 0) {
+    Eigen::Index first = 1;
+    while (t(first) != t(first - 1)) ++first;
+    report_.warnings.push_back(std::to_string(report_.merged) + " row(s) repeat the time stamp of the row before (first at " +
+                               label(first) + ", t = " + stamp(t(first)) +
+                               " s); the rows of each repeated time stamp were merged into their mean");
+  }
+
+  const TimeSteps s = time_steps(u);
+  report_.dt_min = s.min;
+  report_.dt_median = s.median;
+  report_.dt_max = s.max;
+  const double dt = o.dt > 0 ? o.dt : s.median;
+  const bool default_gap = o.max_gap == 0;
+  report_.max_gap = default_gap ? 10 * s.median : o.max_gap;
+  report_.dt = dt;
+
+  // Gaps: refuse them all at once, naming the first and the longest.
+  Eigen::Index gaps = 0, first_gap = -1, longest = -1;
+  for (Eigen::Index j = 0; j + 1 < m; ++j) {
+    const double d = u(j + 1) - u(j);
+    if (d > report_.max_gap) {
+      ++gaps;
+      if (first_gap < 0) first_gap = j;
+      if (longest < 0 || d > u(longest + 1) - u(longest)) longest = j;
+    }
+  }
+  if (gaps > 0) {
+    // Rows on either side: the last row of the stamp before the gap, the first row after it.
+    const auto rows = [&](Eigen::Index j) {
+      return label(group_start_[static_cast<std::size_t>(j + 1)] - 1) + " to " + label(group_start_[static_cast<std::size_t>(j + 1)]);
+    };
+    const auto gap_text = [&](Eigen::Index j) {
+      const double d = u(j + 1) - u(j);
+      return "a gap of " + step(d) + " s in time (from " + stamp(u(j)) + " s to " + stamp(u(j + 1)) + " s, " +
+             detail::format_value(d / s.median, 3) + " median steps of " + step(s.median) + " s)";
+    };
+    std::string msg = where + rows(first_gap) + ": " + gap_text(first_gap) + ", longer than " +
+                      (default_gap ? "10 median steps" : o.max_gap_name + " = " + step(o.max_gap) + " s");
+    if (gaps > 1) {
+      msg += " (" + std::to_string(gaps) + " such gaps in all; the longest, " + rows(longest) + ", is " +
+             step(u(longest + 1) - u(longest)) + " s)";
+    }
+    // The suggested limit is rounded up (1 % above the gap, 3 digits) so that it does allow it.
+    msg += "; resampling would invent data there: cut the record there, or allow the gap with " + o.max_gap_name + " " +
+           detail::format_value(1.01 * (u(longest + 1) - u(longest)), 3) + " (s)";
+    throw SamplingError(SamplingProblem::gap, msg);
+  }
+
+  const double span = u(m - 1) - u(0);
+  if (dt > span) {
+    throw std::invalid_argument(where + o.dt_name + " = " + step(dt) + " s is longer than the record (" + step(span) +
+                                " s from first to last time stamp)");
+  }
+  constexpr double kMaxGrid = 1e8;  // samples per column (800 MB): beyond, a step given by mistake
+  if (span / dt > kMaxGrid) {
+    throw std::invalid_argument(where + o.dt_name + " = " + step(dt) + " s would make " + detail::format_value(span / dt, 3) +
+                                " samples of the " + step(span) + " s record; expected at most 1e+08 (a larger step)");
+  }
+  // Grid points u(0) + i dt up to the last stamp; the relative slack keeps a last point that
+  // rounding puts a hair past the end (span / dt = 99.9999999 for 100 steps).
+  const auto count = static_cast<Eigen::Index>(std::floor(span / dt * (1 + 1e-12) + 1e-9)) + 1;
+  grid_.resize(count);
+  left_.resize(static_cast<std::size_t>(count));
+  weight_.resize(static_cast<std::size_t>(count));
+  Eigen::Index j = 0;
+  for (Eigen::Index i = 0; i < count; ++i) {
+    const double g = std::min(u(0) + static_cast<double>(i) * dt, u(m - 1));
+    grid_(i) = g;
+    while (j + 2 < m && u(j + 1) <= g) ++j;
+    left_[static_cast<std::size_t>(i)] = j;
+    weight_[static_cast<std::size_t>(i)] = std::clamp((g - u(j)) / (u(j + 1) - u(j)), 0.0, 1.0);
+  }
+  report_.samples_out = count;
+  if (dt > 1.5 * s.median) {
+    report_.warnings.push_back("the grid step " + step(dt) + " s is coarser than the record's median step " + step(s.median) +
+                               " s: linear interpolation does not filter, so content above " +
+                               detail::format_value(0.5 / dt, 4) + " Hz aliases (low-pass filter the record first)");
+  }
+}
+
+Eigen::VectorXd UniformResampler::apply(const Eigen::VectorXd& x, const std::string& name) const {
+  if (x.size() != n_in_) {
+    throw std::invalid_argument(options_.where + "column '" + name + "' has " + std::to_string(x.size()) +
+                                " samples; expected " + std::to_string(n_in_) + " like time");
+  }
+  const std::size_t m = group_start_.size() - 1;
+  std::vector<double> v(m);  // the mean of each repeated time stamp's rows
+  for (std::size_t j = 0; j < m; ++j) {
+    double sum = 0;
+    for (Eigen::Index k = group_start_[j]; k < group_start_[j + 1]; ++k) {
+      if (!std::isfinite(x(k))) {
+        throw std::invalid_argument(options_.where + label(k) + ", column '" + name + "': value " + stamp(x(k)) +
+                                    " is not a finite number; expected finite values to interpolate");
+      }
+      sum += x(k);
+    }
+    v[j] = sum / static_cast<double>(group_start_[j + 1] - group_start_[j]);
+  }
+  Eigen::VectorXd out(grid_.size());
+  for (Eigen::Index i = 0; i < out.size(); ++i) {
+    const auto j = static_cast<std::size_t>(left_[static_cast<std::size_t>(i)]);
+    const double w = weight_[static_cast<std::size_t>(i)];
+    out(i) = w == 0 ? v[j] : (1 - w) * v[j] + w * v[j + 1];
+  }
+  return out;
+}
+
+}  // namespace frictionlab

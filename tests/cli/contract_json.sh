@@ -1,0 +1,113 @@
+#!/usr/bin/env bash
+# The --json contract on bad input (DESIGN.md, README "Guarantees"): whatever goes wrong (the data
+# file empty, a bad cell, a missing column, a truncated .mat, a directory as DATA, a bad option,
+# a bad model file, data that gives no answer), `--json -` still prints one JSON object on stdout
+# with "schema": 1, "status": "error" and a message, the exit status is 2, and stderr carries
+# exactly one line. With --json FILE a failed run writes no file.
+# Usage: contract_json.sh PATH_TO_frictionlab SOURCE_DIR
+set -euo pipefail
+exe="$1"
+src="$2"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+emps="$src/data/emps/DATA_EMPS.mat"
+scenario="$src/examples/emps_closed_loop.yaml"
+
+fail() { echo "FAIL: $*"; exit 1; }
+
+# expect_json WANT_IN_MESSAGE ARGS...: exit 2, one JSON error object on stdout naming WANT, one
+# line on stderr.
+expect_json() {
+  local want="$1"
+  shift
+  set +e
+  "$exe" "$@" --json - > "$tmp/out.txt" 2> "$tmp/err.txt"
+  local code=$?
+  set -e
+  [ "$code" -eq 2 ] || { cat "$tmp/err.txt"; fail "$*: exit $code, expected 2"; }
+  [ "$(wc -l < "$tmp/err.txt")" -eq 1 ] || { cat "$tmp/err.txt"; fail "$*: expected exactly one line on stderr"; }
+  grep -qF -- "$want" "$tmp/err.txt" || { cat "$tmp/err.txt"; fail "$*: stderr lacks '$want'"; }
+  /usr/bin/python3 - "$tmp/out.txt" "$want" <<'PY' || fail "$*: stdout is not the error JSON: $(cat "$tmp/out.txt")"
+import json, sys
+text = open(sys.argv[1]).read()
+assert text.count("\n") == 1, "expected one line of JSON"
+j = json.loads(text)
+assert j["schema"] == 1 and j["status"] == "error", j
+assert sys.argv[2] in j["message"], j["message"]
+assert isinstance(j.get("method"), str) and j["method"], j
+PY
+}
+
+idim=(identify idim --time t --position qm --input vir --gain gtau)
+
+# Reading the data.
+: > "$tmp/empty.csv"
+expect_json "empty.csv" identify breakaway "$tmp/empty.csv"
+expect_json "empty.csv" analyze envelope "$tmp/empty.csv"
+printf 'time,velocity,force\n0,0,0\n0.01,abc,0\n0.02,0,0\n' > "$tmp/cell.csv"
+expect_json "line 3" identify sweep "$tmp/cell.csv"
+expect_json "line 3" analyze stick-slip "$tmp/cell.csv" --velocity velocity
+printf 'time,speed,force\n0,0,0\n0.01,1,0\n0.02,2,0\n' > "$tmp/column.csv"
+expect_json "velocity" identify breakaway "$tmp/column.csv"
+expect_json "velocity" analyze stick-slip "$tmp/column.csv"
+head -c 3000 "$emps" > "$tmp/truncated.mat"
+expect_json "truncated.mat" "${idim[@]}" "$tmp/truncated.mat"
+mkdir "$tmp/adir"
+expect_json "adir" "${idim[@]}" "$tmp/adir"
+expect_json "adir" analyze envelope "$tmp/adir"
+expect_json "no-such.mat" "${idim[@]}" "$tmp/no-such.mat"
+
+# Parsing the options (CLI11's errors go the same way).
+expect_json "--cutoff" "${idim[@]}" "$emps" --cutoff fast
+expect_json "--vs" "${idim[@]}" "$emps" --vs fast
+expect_json "--bogus" "${idim[@]}" "$emps" --bogus
+
+# Data that gives no answer: the method's own error result, one line on stderr.
+/usr/bin/python3 - "$tmp/still.csv" <<'PY'
+import sys
+with open(sys.argv[1], "w") as f:
+    f.write("time,velocity,force\n")
+    for k in range(200):
+        f.write(f"{k * 0.01},0,{k * 1e-4}\n")
+PY
+expect_json "no motion detected" identify breakaway "$tmp/still.csv"
+
+# validate: the model file (trailing garbage, a failed identification, a bad value blamed on the
+# model, not on the scenario), and the data.
+model='{"schema": 1, "status": "ok", "method": "idim", "law": {"law": "coulomb-viscous", "Fc": 20, "Fv": 200}, "parameters": {"M": {"value": 95.1, "std": 0.1, "unit": "kg"}}}'
+echo "$model" > "$tmp/model.json"
+{ echo "$model"; echo "trailing text"; } > "$tmp/garbage.json"
+expect_json "garbage.json" validate "$tmp/garbage.json" "$emps" --scenario "$scenario" --time t --position qm --input vir --gain gtau
+echo '{"schema": 1, "status": "error", "message": "no excitation", "method": "idim"}' > "$tmp/failed.json"
+expect_json "the identification failed" validate "$tmp/failed.json" "$emps" --scenario "$scenario" --time t --position qm --input vir --gain gtau
+echo "${model/95.1/-3}" > "$tmp/negative.json"
+expect_json "negative.json: parameters.M" validate "$tmp/negative.json" "$emps" --scenario "$scenario" --time t --position qm --input vir --gain gtau
+grep -qF "$scenario" "$tmp/err.txt" && fail "a bad value of MODEL.json blamed on the scenario: $(cat "$tmp/err.txt")"
+expect_json "adir" validate "$tmp/model.json" "$tmp/adir" --scenario "$scenario" --time t --position qm --input vir --gain gtau
+# identify lugre --static reads the model the same way.
+/usr/bin/python3 - "$tmp/lugre.csv" <<'PY'
+import sys
+with open(sys.argv[1], "w") as f:
+    f.write("time,applied,position\n")
+    for k in range(100):
+        f.write(f"{k * 0.001},{k * 0.01},0\n")
+PY
+expect_json "garbage.json" identify lugre "$tmp/lugre.csv" --force applied --inertia 1 --static "$tmp/garbage.json"
+expect_json "the identification failed" identify lugre "$tmp/lugre.csv" --force applied --inertia 1 --static "$tmp/failed.json"
+
+# --json FILE: a run that failed writes no file (the message is on stderr), whether it failed on
+# the data or on another output (--plot exists).
+set +e
+"$exe" identify breakaway "$tmp/cell.csv" --json "$tmp/never.json" > /dev/null 2> "$tmp/err.txt"
+code=$?
+set -e
+[ "$code" -eq 2 ] || fail "bad cell with --json FILE: exit $code"
+[ ! -e "$tmp/never.json" ] || fail "a run that failed on its data wrote --json"
+touch "$tmp/exists.svg"
+set +e
+"$exe" identify breakaway "$tmp/cell.csv" --json "$tmp/never.json" --plot "$tmp/exists.svg" > /dev/null 2> "$tmp/err.txt"
+code=$?
+set -e
+[ "$code" -eq 2 ] || fail "existing --plot: exit $code"
+[ ! -e "$tmp/never.json" ] || fail "a refused output still wrote --json"
+echo "contract_json: ok"

@@ -1,0 +1,206 @@
+"""Every public function of the package on hostile arguments: empty arrays, None, NaN and inf,
+wrong dtypes (object, str, complex, bool), 2-D arrays, unequal lengths, non-numbers. Each must
+raise ValueError or TypeError whose message names the argument (never crash, never answer).
+Non-contiguous arrays are accepted (copied) and give the same answer as contiguous ones.
+
+The public names are enumerated from frictionlab.__all__: a new one that is in none of the tables
+below fails test_every_public_name_is_covered until its hostile calls are added here.
+"""
+import inspect
+import math
+import re
+
+import numpy as np
+import pytest
+
+import frictionlab as fl
+
+N = 400  # samples of the valid arrays: enough for every method's minimum
+T = np.arange(N) * 1e-3
+WAVE = np.sin(2 * np.pi * 5 * T)
+
+
+def _idim_result(emps):
+    return fl.identify_idim(emps["t"], emps["gtau"] * emps["vir"], position=emps["qm"], source=emps)
+
+
+@pytest.fixture(scope="module")
+def idim_ok(emps):
+    r = _idim_result(emps)
+    assert r.ok, r.message
+    return r
+
+
+# name -> (call(**arrays), {array argument: valid value}, arguments that may be None)
+def array_calls(idim_ok, emps, source_dir):
+    scenario = source_dir / "examples" / "emps_closed_loop.yaml"
+    data = source_dir / "data" / "emps" / "DATA_EMPS_PULSES.mat"
+    tfp = {"time": T, "force": WAVE, "position": WAVE}
+    tfv = {"time": T, "force": WAVE, "velocity": WAVE}
+    return {
+        "identify_idim": (fl.identify_idim, tfp, {"position"}),
+        "idim_regression": (fl.idim_regression, tfp, {"position"}),
+        "cross_test": (lambda **a: fl.cross_test(idim_ok, **a), tfp, {"position"}),
+        "idim_reconstruction": (lambda **a: fl.idim_reconstruction(idim_ok, **a), tfp, {"time", "position"}),
+        "identify_breakaway": (fl.identify_breakaway, tfv, set()),
+        "identify_sweep": (fl.identify_sweep, tfv, set()),
+        "sweep_points": (fl.sweep_points, tfv, set()),
+        "identify_decay": (fl.identify_decay, {"time": T, "position": WAVE}, set()),
+        "identify_lugre": (lambda **a: fl.identify_lugre(**a, inertia=1.0), tfp, set()),
+        "fit_static_law": (fl.fit_static_law, {"velocity": WAVE + 2.0, "force": WAVE}, set()),
+        "decay_envelope": (fl.decay_envelope, {"t": T, "x": WAVE}, set()),
+        "detect_stick_slip": (fl.detect_stick_slip, {"t": T, "v": WAVE, "force": WAVE}, {"force"}),
+        "validate": (lambda **a: fl.validate(idim_ok, data, scenario, **a),
+                     {"time": T, "position": WAVE, "force": WAVE}, set()),
+        "FrictionLaw.sliding": (lambda **a: fl.FrictionLaw({"law": "coulomb", "Fc": 1.0}).sliding(**a),
+                                {"v": WAVE}, set()),
+        "FrictionLaw.force": (lambda **a: fl.FrictionLaw({"law": "coulomb", "Fc": 1.0}).force(**a),
+                              {"v": WAVE, "applied": WAVE}, set()),
+        "FrictionLaw.step": (lambda **a: fl.FrictionLaw({"law": "dahl", "sigma0": 1e5, "Fc": 1.0}).step(**a, dt=1e-3),
+                             {"v": WAVE}, set()),
+    }
+
+
+# Public functions whose arguments are a path or a scenario (not arrays): name -> argument.
+PATH_CALLS = {"load": "path", "load_law": "path", "sha256_file": "path", "simulate": "scenario"}
+# Public names that take no array: result and option classes (made by the package or with no
+# arguments), the version, the list of law names. FrictionLaw's dict is tested on its own below.
+NO_ARRAYS = {"BreakawayOptions", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
+             "FitFigures", "IdimOptions", "Parameter", "Result", "StaticFit", "StaticFitOptions", "StickSlipOptions",
+             "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__", "law_names", "Data",
+             "Scenario", "FrictionLaw"}
+ARRAY_FUNCTIONS = {"identify_idim", "idim_regression", "cross_test", "idim_reconstruction", "identify_breakaway",
+                   "identify_sweep", "sweep_points", "identify_decay", "identify_lugre", "fit_static_law",
+                   "decay_envelope", "detect_stick_slip", "validate"}
+
+
+def test_every_public_name_is_covered():
+    missing = set(fl.__all__) - ARRAY_FUNCTIONS - set(PATH_CALLS) - NO_ARRAYS
+    assert not missing, f"public names without hostile-input tests (add them to tests/python/test_hostile.py): {missing}"
+    # Every public function with an array-like parameter is in the array table.
+    for name in fl.__all__:
+        obj = getattr(fl, name)
+        if inspect.isfunction(obj) and name not in ARRAY_FUNCTIONS | set(PATH_CALLS):
+            assert not inspect.signature(obj).parameters, f"{name} takes arguments but is not tested here"
+    # FrictionLaw's public methods that take arrays are covered too.
+    law_methods = {m for m in dir(fl.FrictionLaw) if not m.startswith("_")
+                   and callable(getattr(fl.FrictionLaw, m))}
+    assert law_methods <= {"sliding", "force", "step", "units", "to_dict"}, law_methods
+
+
+def hostile_values(valid):
+    """(label, value, what the message must say) for one array argument whose valid value is `valid`."""
+    with_nan = valid.copy()
+    with_nan[N // 2] = math.nan
+    with_inf = valid.copy()
+    with_inf[3] = math.inf
+    return [
+        ("None", None, "None"),
+        ("empty", np.array([]), "empty|at least|samples"),
+        ("NaN", with_nan, "NaN"),
+        ("inf", with_inf, "inf"),
+        ("2-D", np.stack([valid, valid]), "1-D|2-D"),
+        ("object dtype", valid.astype(object), "object"),
+        ("str dtype", np.array(["a"] * len(valid)), "string|str"),
+        ("complex dtype", valid.astype(complex), "complex"),
+        ("bool dtype", np.ones(len(valid), dtype=bool), "bool"),
+        ("str", "qm", "str"),
+        ("dict", {"a": 1}, "dict"),
+    ]
+
+
+def expect_refusal(call, kwargs, name, want):
+    with pytest.raises((ValueError, TypeError)) as info:
+        call(**kwargs)
+    message = str(info.value)
+    assert re.search(rf"\b{re.escape(name)}\b", message), f"message does not name argument {name!r}: {message}"
+    assert re.search(want, message), f"message does not say {want!r}: {message}"
+
+
+def test_array_arguments_are_checked(idim_ok, emps, source_dir):
+    calls = array_calls(idim_ok, emps, source_dir)
+    assert set(calls) >= ARRAY_FUNCTIONS
+    for fname, (call, valid, may_be_none) in calls.items():
+        for arg, value in valid.items():
+            for label, bad, want in hostile_values(value):
+                if label == "None" and arg in may_be_none:
+                    continue
+                if fname.startswith("FrictionLaw.") and label == "empty":
+                    continue  # element-wise: an empty array gives an empty answer
+                if fname in ("FrictionLaw.sliding", "FrictionLaw.force") and label == "2-D":
+                    continue  # element-wise: any shape
+                kwargs = dict(valid, **{arg: bad})
+                try:
+                    expect_refusal(call, kwargs, arg, want)
+                except AssertionError as e:
+                    raise AssertionError(f"{fname}({arg}={label}): {e}") from None
+                except pytest.fail.Exception as e:
+                    raise AssertionError(f"{fname}({arg}={label}): no error raised") from e
+
+
+def test_unequal_lengths_are_refused(idim_ok, emps, source_dir):
+    for fname, (call, valid, _) in array_calls(idim_ok, emps, source_dir).items():
+        if fname.startswith("FrictionLaw.") or len(valid) < 2:
+            continue
+        arg = list(valid)[-1]
+        kwargs = dict(valid, **{arg: valid[arg][:-1]})
+        with pytest.raises(ValueError) as info:
+            call(**kwargs)
+        assert re.search(r"length|samples|points", str(info.value)), f"{fname}: {info.value}"
+
+
+def test_the_reported_crash_is_an_error_now():
+    # Both ended the Python process with a segmentation fault.
+    with pytest.raises(ValueError, match="identify_sweep: argument time is empty; expected at least 2 samples"):
+        fl.identify_sweep(np.array([]), np.array([]), np.array([]))
+    with pytest.raises(TypeError, match="identify_sweep: argument time: expected a 1-D array of numbers, got None"):
+        fl.identify_sweep(None, None, None)
+
+
+def test_non_contiguous_arrays_are_copied():
+    wide = np.stack([WAVE + 2.0, np.zeros(N)], axis=1)  # columns of a 2-D array: strided views
+    v = wide[:, 0]
+    assert not v.flags["C_CONTIGUOUS"]
+    law = fl.FrictionLaw({"law": "coulomb-viscous", "Fc": 1.0, "Fv": 0.5})
+    np.testing.assert_array_equal(law.sliding(v), law.sliding(np.ascontiguousarray(v)))
+    a = fl.fit_static_law(v, law.sliding(v), model="coulomb-viscous")
+    b = fl.fit_static_law(np.ascontiguousarray(v), law.sliding(v), model="coulomb-viscous")
+    assert a.values == b.values
+    moving = ((np.arange(N) % 100) >= 50).astype(np.int64)[::-1]  # integer dtype, negative stride
+    assert moving.strides[0] < 0
+    got = fl.detect_stick_slip(T, moving)
+    want = fl.detect_stick_slip(T, np.ascontiguousarray(moving, dtype=float))
+    assert len(want.slip) >= 3
+    np.testing.assert_array_equal(got.slip, want.slip)
+
+
+def test_path_arguments_are_checked():
+    for fname, arg in PATH_CALLS.items():
+        for bad in (None, 1.5, np.array([1.0])):
+            with pytest.raises((ValueError, TypeError)) as info:
+                getattr(fl, fname)(bad)
+            assert re.search(rf"\b{arg}\b", str(info.value)), f"{fname}({bad!r}): {info.value}"
+
+
+def test_number_arguments_name_themselves(idim_ok):
+    for call, name in [
+        (lambda x: fl.identify_lugre(T, WAVE, WAVE, inertia=x), "inertia"),
+        (lambda x: fl.identify_breakaway(T, WAVE, WAVE, inertia=x), "inertia"),
+        (lambda x: fl.identify_decay(T, WAVE, stiffness=x), "stiffness"),
+        (lambda x: fl.FrictionLaw({"law": "dahl", "sigma0": 1e5, "Fc": 1.0}).step(WAVE, x), "dt"),
+        (lambda x: fl.FrictionLaw({"law": "coulomb", "Fc": x}), "Fc"),
+    ]:
+        for bad, want in ((math.nan, "NaN|nan"), (math.inf, "inf"), ("a", "number|str"), (True, "number|bool")):
+            with pytest.raises((ValueError, TypeError)) as info:
+                call(bad)
+            message = str(info.value)
+            assert re.search(rf"\b{name}\b", message) and re.search(want, message), f"{name}={bad!r}: {message}"
+
+
+def test_law_parameter_that_is_text_is_not_missing():
+    with pytest.raises(TypeError, match="law parameter 'Fc': expected a number or a list of numbers, got 'a'"):
+        fl.FrictionLaw({"law": "coulomb", "Fc": "a"})
+    with pytest.raises(ValueError, match="law parameter 'Fc' is NaN"):
+        fl.FrictionLaw({"law": "coulomb", "Fc": float("nan")})
+    with pytest.raises(ValueError, match=r"law parameter 'velocity' has NaN at index 1"):
+        fl.FrictionLaw({"law": "table", "velocity": [0.1, float("nan")], "force": [1.0, 2.0]})
