@@ -65,8 +65,24 @@ def _idim_options(terms=_IDIM_DEFAULT_TERMS, cutoff_hz=100.0, filter_order=4, pa
     return o
 
 
-def identify_idim(time, force, position=None, velocity=None, *, terms=_IDIM_DEFAULT_TERMS, cutoff_hz=100.0,
-                  filter_order=4, padlen=12, input_delay=0, skip=49, skip_end=0, decimation=10, stribeck_vs=0.01,
+def _rate_defaults(time, cutoff_hz, skip, decimation):
+    """cutoff_hz, skip and decimation with each None replaced by its idim_rate_defaults value for
+    the mean sample rate of ``time``, and the set of names so replaced."""
+    chosen = {k for k, v in (("cutoff_hz", cutoff_hz), ("skip", skip), ("decimation", decimation)) if v is None}
+    if not chosen:
+        return cutoff_hz, skip, decimation, chosen
+    t = np.asarray(time, dtype=float) if time is not None else np.empty(0)
+    if t.ndim != 1 or t.size < 2 or not np.isfinite(t[[0, -1]]).all() or not t[-1] > t[0]:
+        # The argument checks of the call itself name the problem with time.
+        return (100.0 if cutoff_hz is None else cutoff_hz, 49 if skip is None else skip,
+                10 if decimation is None else decimation, set())
+    d = _core.idim_rate_defaults((t.size - 1) / (t[-1] - t[0]))
+    return (d["cutoff_hz"] if cutoff_hz is None else cutoff_hz, d["skip"] if skip is None else skip,
+            d["decimation"] if decimation is None else decimation, chosen)
+
+
+def identify_idim(time, force, position=None, velocity=None, *, terms=_IDIM_DEFAULT_TERMS, cutoff_hz=None,
+                  filter_order=4, padlen=12, input_delay=0, skip=None, skip_end=0, decimation=None, stribeck_vs=0.01,
                   stribeck_delta=2.0, min_velocity=0.0, max_condition=1e8, axis="linear", source=None,
                   validate=None):
     """IDIM-LS: inverse dynamic model least squares on a measured trajectory,
@@ -77,7 +93,8 @@ def identify_idim(time, force, position=None, velocity=None, *, terms=_IDIM_DEFA
     N or N m: gain times the drive input), and ``position`` (m or rad) or, when no position is
     given, ``velocity`` (m/s or rad/s, filtered but not differentiated).
 
-    Options (defaults = EMPS recipe):
+    Options (defaults = EMPS recipe; cutoff_hz, skip and decimation follow the sample rate
+    when not given, see idim_rate_defaults: exactly 100 Hz, 49, 10 at 1 kHz):
       terms           regressors in column order: "inertia" (M, kg), "viscous" (Fv, N s/m),
                       "coulomb" (Fc, N), "offset" (N), "asymmetric" (Fv_pos, Fc_pos, Fv_neg,
                       Fc_neg), each of those four alone, "stribeck" (Fs_minus_Fc, N); a list or
@@ -102,8 +119,11 @@ def identify_idim(time, force, position=None, velocity=None, *, terms=_IDIM_DEFA
     are kept on the result (``result.inputs``, ``result.options``) for idim_reconstruction and
     frictionlab.plot.idim.
     """
+    cutoff_hz, skip, decimation, chosen = _rate_defaults(time, cutoff_hz, skip, decimation)
     opts = _idim_options(terms, cutoff_hz, filter_order, padlen, input_delay, skip, skip_end, decimation,
                          stribeck_vs, stribeck_delta, min_velocity, max_condition, axis)
+    # The values taken from the sample rate are listed as such in diagnostics["defaults"].
+    opts.auto_cutoff, opts.auto_decimation, opts.auto_skip = (k in chosen for k in ("cutoff_hz", "decimation", "skip"))
     file, sha = _source(source)
     r = _core._identify_idim(time, force, position, velocity, opts, file, sha)
     r.inputs = {"time": time, "force": force, "position": position, "velocity": velocity}

@@ -269,6 +269,20 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
       .def_readwrite("min_velocity", &IdimOptions::min_velocity, "No excitation at or below this max |qd|, m/s or rad/s (0).")
       .def_readwrite("max_condition", &IdimOptions::max_condition, "Largest condition number accepted (1e8).");
   axis_property(idim_opts);
+  m.def(
+      "idim_rate_defaults",
+      [](double sample_rate_hz) {
+        const IdimRateDefaults d = idim_rate_defaults(sample_rate_hz);
+        py::dict out;
+        out["cutoff_hz"] = d.cutoff_hz;
+        out["decimation"] = d.decimation;
+        out["skip"] = d.skip;
+        return out;
+      },
+      py::arg("sample_rate_hz"),
+      "The idim cut-off (Hz), decimation and skip (samples) chosen from the sample rate fs (Hz): "
+      "min(100 Hz, fs/10), clamp(floor(fs/100 Hz), 1, 10), round(5 fs/cutoff) - 1; exactly the EMPS "
+      "recipe (100 Hz, 10, 49) at 1 kHz. Raises ValueError when fs is not a positive finite number.");
 
   auto brk_opts = py::class_<BreakawayOptions>(m, "BreakawayOptions", "Options of identify_breakaway.");
   brk_opts.def(py::init<>())
