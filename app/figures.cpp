@@ -252,23 +252,26 @@ Figure compare_figure(const Result& r, const std::string& what) {
 
 // Velocities for drawing a law over [-vmax, vmax]: dense near zero, where Stribeck laws bend;
 // a NaN between the two signs so that the jump at v = 0 is a gap, not a vertical line.
-std::vector<double> law_grid(double vmax) {
+// Only the sides the record covers: lo < 0 draws [lo, 0), hi > 0 draws (0, hi].
+std::vector<double> law_grid(double lo, double hi) {
   constexpr int kPerSide = 150;
   std::vector<double> v;
-  for (int i = kPerSide; i >= 1; --i) v.push_back(-vmax * std::pow(static_cast<double>(i) / kPerSide, 2.0));
-  v.push_back(std::numeric_limits<double>::quiet_NaN());
-  for (int i = 1; i <= kPerSide; ++i) v.push_back(vmax * std::pow(static_cast<double>(i) / kPerSide, 2.0));
+  if (lo < 0)
+    for (int i = kPerSide; i >= 1; --i) v.push_back(lo * std::pow(static_cast<double>(i) / kPerSide, 2.0));
+  if (lo < 0 && hi > 0) v.push_back(std::numeric_limits<double>::quiet_NaN());
+  if (hi > 0)
+    for (int i = 1; i <= kPerSide; ++i) v.push_back(hi * std::pow(static_cast<double>(i) / kPerSide, 2.0));
   return v;
 }
 
 // The identified law's sliding (steady-state for dynamic laws) force over +-vmax; empty when the
 // result has no law or it cannot be built.
-std::optional<FigureSeries> law_curve(const Result& r, double vmax, const std::string& name) {
-  if (!r.law || !(vmax > 0)) return std::nullopt;
+std::optional<FigureSeries> law_curve(const Result& r, double lo, double hi, const std::string& name) {
+  if (!r.law || !(lo < 0 || hi > 0)) return std::nullopt;
   try {
     const FrictionLaw law = FrictionLaw::from_spec(*r.law);
     FigureSeries s = series(name, {}, {}, SeriesStyle::lines, "#d55e00");
-    s.x = law_grid(vmax);
+    s.x = law_grid(lo, hi);
     s.y.resize(s.x.size());
     for (std::size_t i = 0; i < s.x.size(); ++i)
       s.y[i] = std::isfinite(s.x[i]) ? law.sliding(s.x[i]) : std::numeric_limits<double>::quiet_NaN();
@@ -340,7 +343,7 @@ Figure idim_map(const Result& r) {
   p.series.push_back(pts);
   const double vmax = max_abs(*v);
   p.series.push_back(binned(*v, *F, vmax));
-  if (auto law = law_curve(r, vmax, "identified law (" + (r.law ? r.law->name : r.model) + ")")) {
+  if (auto law = law_curve(r, -vmax, vmax, "identified law (" + (r.law ? r.law->name : r.model) + ")")) {
     p.series.push_back(*law);
   } else if (const auto *lv = find(r, "law_velocity"), *lF = find(r, "law_force"); lv && lF) {
     // No law to simulate (e.g. Fs below Fc): the identified friction terms as they are.
@@ -372,7 +375,10 @@ Figure breakaway_map(const Result& r) {
     b.point_size = 1.4;
     p.series.push_back(b);
   }
-  if (auto law = law_curve(r, max_abs(*v), "identified law (" + (r.law ? r.law->name : r.model) + ")")) {
+  // The law on the sides the experiment moved in only (a breakaway test pushes one way).
+  const double lo = std::min(0.0, *std::min_element(v->begin(), v->end()));
+  const double hi = std::max(0.0, *std::max_element(v->begin(), v->end()));
+  if (auto law = law_curve(r, lo, hi, "identified law (" + (r.law ? r.law->name : r.model) + ")")) {
     // Drawn for sliding only: a static law's value at rest is its breakaway level, marked above.
     p.series.push_back(*law);
   }
@@ -386,25 +392,31 @@ Figure lugre_map(const Result& r) {
   const Axis axis = result_axis(r);
   Figure f;
   f.title = title_for(r, "Friction map: steady-state friction of the identified LuGre law");
-  f.panel_height = 520;
+  f.panel_height = 420;
   const auto *t = find(r, "time"), *x = find(r, "position_sim");
   double vmax = 0;
   if (t && x && t->size() >= 2 && x->size() == t->size())
     for (std::size_t i = 1; i < t->size(); ++i)
       if ((*t)[i] > (*t)[i - 1]) vmax = std::max(vmax, std::abs(((*x)[i] - (*x)[i - 1]) / ((*t)[i] - (*t)[i - 1])));
-  // Show the Stribeck region even when the record stayed slow: at least 5 vs.
   const double vs = parameter(r, "vs");
-  if (std::isfinite(vs)) vmax = std::max(vmax, 5 * vs);
-  auto law = law_curve(r, vmax, "steady state: Fc + (Fs - Fc) exp(-|v/vs|^delta) + sigma2 v");
+  if (std::isfinite(vs)) vmax = std::max(vmax, 5 * vs);  // a record that stayed slow: still the Stribeck part
+  const std::string name = "steady state Fc + (Fs - Fc) exp(-|v/vs|^delta) + sigma2 v";
+  auto law = law_curve(r, -vmax, vmax, name);
   if (!law) return f;
   FigurePanel p = map_panel(axis);
+  p.title = "over the velocities of the record";
   p.series.push_back(*law);
-  if (std::isfinite(vs)) {
-    const FrictionLaw lg = FrictionLaw::from_spec(*r.law);
-    p.series.push_back(series("+-vs", {-vs, vs}, {lg.sliding(-vs), lg.sliding(vs)}, SeriesStyle::points, "#009e73"));
-    p.series.back().point_size = 1.2;
-  }
   f.panels.push_back(p);
+  // The Stribeck region is often a small fraction of the record's speed: drawn again, near zero.
+  if (std::isfinite(vs) && vs < 0.2 * vmax) {
+    FigurePanel z = map_panel(axis);
+    z.title = "near zero velocity: |v| <= 10 vs";
+    z.series.push_back(*law_curve(r, -10 * vs, 10 * vs, name));
+    const FrictionLaw lg = FrictionLaw::from_spec(*r.law);
+    z.series.push_back(series("v = +-vs", {-vs, vs}, {lg.sliding(-vs), lg.sliding(vs)}, SeriesStyle::points, "#009e73"));
+    z.series.back().point_size = 1.2;
+    f.panels.push_back(z);
+  }
   return f;
 }
 
@@ -492,7 +504,8 @@ std::vector<ReportFigure> report_extra_figures(const Result& r) {
                   "standard deviation, and the identified static law while sliding.";
       else
         caption = "Steady-state friction of the identified LuGre law (the force while sliding at constant "
-                  "velocity) over the velocities of the record.";
+                  "velocity) over the velocities of the record and, where the Stribeck part is narrow, near zero "
+                  "velocity.";
       out.push_back({"friction-map", caption, *map});
     }
   const Figure cross = cross_test_figure(r);

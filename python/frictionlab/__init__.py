@@ -2,7 +2,10 @@
 
 SI units throughout: forces in N (N m on a rotary axis), velocities in m/s (rad/s), positions
 in m (rad), inertia in kg (kg m^2), time in s. Errors in input raise ValueError with the same
-message as the C++ library and the command line; a failed integration raises RuntimeError.
+message as the C++ library and the command line, naming the function and the argument; an
+argument of the wrong type (None, a string, an object or complex array) raises
+ArgumentTypeError, which is both a TypeError and a ValueError. A failed integration raises
+RuntimeError.
 
     import frictionlab as fl
     d = fl.load("DATA_EMPS.mat")                       # dict of numpy columns and scalars
@@ -15,6 +18,7 @@ Plotting helpers (matplotlib) are in frictionlab.plot, imported on first use.
 """
 
 from ._core import (
+    ArgumentTypeError,
     BreakawayOptions,
     DecayOptions,
     Diagnostics,
@@ -56,7 +60,7 @@ from .simulate import simulate
 from .validate import identify_lugre, validate
 
 __all__ = [
-    "BreakawayOptions", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
+    "ArgumentTypeError", "BreakawayOptions", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
     "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
     "cross_test", "decay_envelope", "detect_stick_slip", "fit_static_law", "identify_breakaway", "identify_decay",

@@ -2,7 +2,6 @@
 optionally resampled onto a uniform time grid."""
 import math
 import numbers
-import os
 
 from . import _core
 
@@ -124,6 +123,7 @@ def load(path, names=None, resample=None, max_gap=None, *, time=None, delimiter=
         delimiter = ""
     elif not isinstance(delimiter, str) or len(delimiter) != 1:
         raise ValueError(f"delimiter {delimiter!r}: expected one character, or None to detect it")
+    # The path goes to the extension as given: it names the argument when it is not a path.
     columns, scalars, file, sha256, lines, info = _core._load_dataset(
-        os.fspath(path), delimiter, drop_invalid, comment, name_list, do_resample, dt, gap, time or "")
+        path, delimiter, drop_invalid, comment, name_list, do_resample, dt, gap, time or "")
     return Data(columns, scalars, file, sha256, lines, info)

@@ -331,6 +331,10 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
     // A record's sliding samples are mostly far above vs, where a Stribeck fit cannot see Fs and vs:
     // keep them physical as starting values.
     if (!(st.vs > 0) || st.vs > 0.5 * vmax) st.vs = 0.01 * vmax;
+    // Nor may vs start collapsed (a sliver of the top speed: the fit could not leave it); the
+    // multi-start below ranks this pair among others anyway.
+    constexpr double kLowestVsStart = 1e-4;  // of the top speed: the multi-start grid's lowest
+    st.vs = std::max(st.vs, kLowestVsStart * vmax);
     if (!(st.Fs >= st.Fc) || st.Fs > 3 * st.Fc) st.Fs = st.Fc;
     st.sigma2 = std::max(st.sigma2, 0.0);
     // The contact held every force before the first sliding sample: the static level is at least
@@ -418,8 +422,8 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   // away and the output error is far from quadratic in them. So each pair of a grid (Fs / Fc from
   // 1.1 to 3, vs from 1e-4 to 0.1 of the top speed) and the Stribeck fit's own pair is simulated
   // once over the record, with sigma0 from the presliding at that Fs and sigma1 critical, and the
-  // fit starts from the pair of least output error. About 60 simulations of the record in double:
-  // a fraction of one iteration of the fit.
+  // fits below start from the two best-ranked pairs. About 50 simulations of the record in double:
+  // a few iterations' worth of the fit.
   struct Start {
     double Fs, vs, sigma0, cost;
   };
@@ -463,7 +467,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
       for (double fraction : kVsFractions) candidates.push_back({Fs, fraction * vmax, s0, start_cost(Fs, fraction * vmax, s0)});
     }
     std::sort(candidates.begin(), candidates.end(), [](const Start& a, const Start& b) { return a.cost < b.cost; });
-    constexpr std::size_t kStarts = 2;  // fits tried at most, best-ranked first (see the stop rule below)
+    constexpr std::size_t kStarts = 2;  // pairs kept, best-ranked first; each fitted at most twice (below)
     candidates.resize(std::min(candidates.size(), kStarts));
     const Start& best = candidates.front();
     r.diagnostics.groups["multistart"] = {{"Fs", best.Fs}, {"vs", best.vs}, {"sigma0", best.sigma0},

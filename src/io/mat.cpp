@@ -183,7 +183,8 @@ std::string check_compressed(const std::vector<unsigned char>& in, const std::fu
 // each with an 8-byte tag (type, byte count; small elements pack both into 8 bytes). An element
 // reaching past the end of the file means the file is truncated; each compressed element is
 // inflated to its end (check_compressed). v7.3 (HDF5) files are left to HDF5.
-std::string v5_structure_problem(const std::string& path) {
+// `inflate` false walks the tags only (cheap, before matio opens the file); true also inflates.
+std::string v5_structure_problem(const std::string& path, bool inflate) {
   // Only the header and the element tags are read (seeking past each element's data).
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) return "cannot be opened for reading";
@@ -226,7 +227,7 @@ std::string v5_structure_problem(const std::string& path) {
              " bytes but the file has " + std::to_string(size) + " in all";
     }
     ++variable;
-    if (type == kMiCompressed) {
+    if (inflate && type == kMiCompressed) {
       element.resize(bytes);
       if (!in.read(reinterpret_cast<char*>(element.data()), static_cast<std::streamsize>(bytes)))
         return "read error at byte " + std::to_string(at + 8);
@@ -264,7 +265,7 @@ Dataset read_mat(const std::string& path) {
     throw std::invalid_argument(msg);
   };
 
-  if (const std::string problem = v5_structure_problem(path); !problem.empty()) {
+  if (const std::string problem = v5_structure_problem(path, false); !problem.empty()) {
     fail("not a valid MATLAB MAT file: " + problem);
   }
   MatPtr mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
@@ -298,6 +299,11 @@ Dataset read_mat(const std::string& path) {
   }
   Mat_Rewind(mat.get());
   g_matio_log.clear();
+  // Then every compressed variable's stream to its end: after the size check above, so that a
+  // header declaring more than the file holds is reported as that.
+  if (const std::string problem = v5_structure_problem(path, true); !problem.empty()) {
+    fail("not a valid MATLAB MAT file: " + problem);
+  }
 
   // One pass over the variables, each read in full and checked by variable_problem.
   std::vector<std::string> names;

@@ -65,7 +65,7 @@ def array_calls(idim_ok, emps, source_dir):
 PATH_CALLS = {"load": "path", "load_law": "path", "sha256_file": "path", "simulate": "scenario"}
 # Public names that take no array: result and option classes (made by the package or with no
 # arguments), the version, the list of law names. FrictionLaw's dict is tested on its own below.
-NO_ARRAYS = {"BreakawayOptions", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
+NO_ARRAYS = {"ArgumentTypeError", "BreakawayOptions", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
              "FitFigures", "IdimOptions", "Parameter", "Result", "StaticFit", "StaticFitOptions", "StickSlipOptions",
              "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__", "law_names", "Data",
              "Scenario", "FrictionLaw"}
@@ -147,6 +147,13 @@ def test_unequal_lengths_are_refused(idim_ok, emps, source_dir):
         with pytest.raises(ValueError) as info:
             call(**kwargs)
         assert re.search(r"length|samples|points", str(info.value)), f"{fname}: {info.value}"
+
+
+def test_argument_type_error_is_both_type_and_value_error():
+    assert issubclass(fl.ArgumentTypeError, TypeError) and issubclass(fl.ArgumentTypeError, ValueError)
+    with pytest.raises(fl.ArgumentTypeError, match="detect_stick_slip: argument v: expected a 1-D array of numbers, "
+                                                   "got an array of dtype complex128"):
+        fl.detect_stick_slip(T, WAVE.astype(complex))
 
 
 def test_the_reported_crash_is_an_error_now():

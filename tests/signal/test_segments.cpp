@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <stdexcept>
 
 #include "frictionlab/signal/segments.hpp"
@@ -88,4 +89,27 @@ TEST(Segments, RejectsBadArguments) {
   EXPECT_THROW(fl::steady_segments(s.t, s.v, {}), std::invalid_argument);  // tolerance 0
   EXPECT_THROW(fl::motion_onset(s.v, -1.0), std::invalid_argument);
   EXPECT_THROW(fl::standstill_intervals(s.t.head(10), s.v, 0.1), std::invalid_argument);
+}
+
+// The noise of a staircase with white noise, from its differences: the steps do not count.
+TEST(Segments, DifferenceNoiseStdIgnoresSteps) {
+  std::mt19937 gen(2026);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  Eigen::VectorXd x(20000);
+  for (Eigen::Index k = 0; k < x.size(); ++k) x(k) = static_cast<double>(k / 2000) + noise(gen);  // 10 levels, steps of 1
+  constexpr double kStdRelTol = 0.05;  // 20000 differences: the median's sampling error is ~1 %
+  EXPECT_NEAR(fl::difference_noise_std(x), 0.01, kStdRelTol * 0.01);
+  EXPECT_EQ(fl::difference_noise_std(Eigen::VectorXd::Constant(1, 3.0)), 0.0);
+}
+
+TEST(Segments, MovingAverageIsCentredAndKeepsLength) {
+  Eigen::VectorXd x(7);
+  x << 0, 1, 2, 3, 4, 5, 6;
+  const Eigen::VectorXd m = fl::moving_average(x, 3);
+  ASSERT_EQ(m.size(), 7);
+  constexpr double kTol = 1e-12;  // sums of a few small integers
+  EXPECT_NEAR(m(3), 3.0, kTol);   // a line is its own centred average
+  EXPECT_NEAR(m(0), 0.5, kTol);   // shortened at the ends
+  EXPECT_NEAR(m(6), 5.5, kTol);
+  EXPECT_THROW(fl::moving_average(x, 0), std::invalid_argument);
 }
