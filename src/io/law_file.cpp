@@ -38,7 +38,7 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
     const YAML::Node& value = kv.second;
     const std::string here = where + "." + key;
     if ((key == "law" || key == "shape") && !value.IsScalar()) {
-      throw std::invalid_argument(here + ": expected a name" + (key == "law" ? " (one of the friction law names, e.g. stribeck)" : " (tanh or atan)"));
+      throw std::invalid_argument(here + ": expected a name");
     } else if (key == "law") {
       spec.name = value.as<std::string>();
     } else if (key == "shape") {

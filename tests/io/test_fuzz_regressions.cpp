@@ -72,18 +72,18 @@ TEST(FuzzRegressions, MatInputsReadOrAreRefused) {
     expect_read_or_refused(input, dir, "data.mat", [](const std::string& p) { (void)fl::load_dataset(p); });
 }
 
-// 1 kB files whose compressed variable declares 16 x 2^27 (32 GB) and 16 x 50533889 (6.5 GB)
-// doubles: refused from the headers, before matio allocates (it used to end the variables there
-// silently, or hand 6.5 GB of zeros to the reader).
+// 1 kB files whose compressed variable declares 16 x 2^28 (34 GB) and 16 x 50533889 (6.5 GB)
+// doubles: refused as corrupt before matio allocates (it used to end the variables there
+// silently, or hand 6.5 GB of zeros to the reader). The zlib stream check or the declared-size
+// check, whichever comes first, names the file.
 TEST(FuzzRegressions, MatVariableLargerThanTheFileCouldHoldIsRefused) {
   TempDir dir;
   for (const char* name : {"huge_variable_32GB.mat", "huge_matrix_6GB.mat"}) {
     const std::string path = dir.file(name);
     fs::copy_file(kFuzzDir / "regressions" / "fuzz_mat" / name, path);
     const std::string message = error_of([&] { (void)fl::load_dataset(path); });
-    EXPECT_NE(message.find(path + ": variable "), std::string::npos) << message;
-    EXPECT_NE(message.find(" declares 16 x "), std::string::npos) << message;
-    EXPECT_NE(message.find("but the file has 971 bytes: corrupt file"), std::string::npos) << message;
+    EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+    EXPECT_NE(message.find("corrupt"), std::string::npos) << message;
   }
 }
 
