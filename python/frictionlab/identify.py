@@ -71,7 +71,10 @@ def _rate_defaults(time, cutoff_hz, skip, decimation):
     chosen = {k for k, v in (("cutoff_hz", cutoff_hz), ("skip", skip), ("decimation", decimation)) if v is None}
     if not chosen:
         return cutoff_hz, skip, decimation, chosen
-    t = np.asarray(time, dtype=float) if time is not None else np.empty(0)
+    try:
+        t = np.asarray(time, dtype=float) if time is not None else np.empty(0)
+    except (TypeError, ValueError):
+        t = np.empty(0)  # the argument checks of the call itself name the problem with time
     if t.ndim != 1 or t.size < 2 or not np.isfinite(t[[0, -1]]).all() or not t[-1] > t[0]:
         # The argument checks of the call itself name the problem with time.
         return (100.0 if cutoff_hz is None else cutoff_hz, 49 if skip is None else skip,
