@@ -97,12 +97,19 @@ std::vector<SweepPoint> sweep_points(const SweepData& d, const SweepOptions& o) 
     // Within its band of zero it cannot be told from standstill.
     if (std::abs(mean) <= std::max(band, o.relative_tolerance * std::abs(mean))) continue;
     // A level whose band broke once (its start still in the settling tail, a noise excursion)
-    // comes out as two segments in a row at the same speed: one level, one point.
+    // comes out as two segments in a row at the same speed: one level, one point. They are one
+    // level when the gap is short, or when the velocity never left the level's neighbourhood
+    // (within half its speed) in between; a standstill or another speed between them keeps two.
     if (!ranges.empty()) {
       Range& last = ranges.back();
       const double half = std::max(band, o.relative_tolerance * std::max(std::abs(mean), std::abs(last.mean)));
       const double gap = d.time[b0] - d.time[last.e - 1];
-      if (std::abs(mean - last.mean) <= half && gap <= o.min_duration) {
+      const auto stayed_near = [&] {
+        for (Eigen::Index k = last.e; k < b0; ++k)
+          if (std::abs(track[k] - mean) > 0.5 * std::abs(mean)) return false;
+        return true;
+      };
+      if (std::abs(mean - last.mean) <= half && (gap <= o.min_duration || stayed_near())) {
         last.e = e0;
         last.mean = track.segment(last.b, last.e - last.b).mean();
         continue;

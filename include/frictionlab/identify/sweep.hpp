@@ -48,7 +48,9 @@ struct SweepOptions {
   double settle_fraction = 0.2;
   /// Segments slower than this are standstill, not sliding (m/s or rad/s). Default: 1e-6 max |v|
   /// (of the reference when given); a segment whose mean is within its band of zero is
-  /// standstill too. Two segments in a row at the same speed (within the band) are one level.
+  /// standstill too. Two segments in a row at the same speed (within the band) are one level
+  /// when less than min_duration lies between them, or when the velocity stayed within half
+  /// that speed in between.
   double min_speed = -1;
   /// Commanded velocity (m/s or rad/s, length N of the data), optional: when given, steady
   /// segments are found on it instead of on the measured velocity; the points still average the
