@@ -148,6 +148,16 @@ Handler register_analyze(CLI::App& app) {
           {{"--json", a->json}, {"--plot", files.figure}, {"--plot data", files.data}, {"--plot script", files.script}});
     }
     const Dataset d = load_data(a->data, a->read, a->time);
+    // The result (or the reason there is none) to stdout with --json -, or atomically to FILE.
+    const auto write_json = [&a](const nlohmann::json& j) {
+      if (a->json == "-") {
+        std::cout << j.dump(2) << "\n";
+      } else if (!a->json.empty()) {
+        AtomicWriteOptions w;
+        w.overwrite = a->overwrite;
+        write_file_atomic(a->json, j.dump(2) + "\n", w);
+      }
+    };
     std::optional<Figure> figure;
     const std::string name = std::filesystem::path(a->data).filename().string();
     const std::vector<double> t = column(d, a->time, "--time");
@@ -183,14 +193,8 @@ Handler register_analyze(CLI::App& app) {
                                   {"message", message},
                                   {"method", a->method},
                                   {"data", {{"file", d.file}, {"sha256", d.sha256}}}};
-        std::cerr << "error: " << message << "\n";
-        if (a->json == "-") {
-          std::cout << j.dump(2) << "\n";
-        } else if (!a->json.empty()) {
-          AtomicWriteOptions w;
-          w.overwrite = a->overwrite;
-          write_file_atomic(a->json, j.dump(2) + "\n", w);
-        }
+        print_error(message);
+        write_json(j);
         return 2;
       }
       result = stick_slip_json(r);
@@ -199,11 +203,11 @@ Handler register_analyze(CLI::App& app) {
     }
     text = data_note(d) + text;
     nlohmann::json j = {{"schema", 1},
-                              {"status", "ok"},
-                              {"message", ""},
-                              {"method", a->method},
-                              {"data", {{"file", d.file}, {"sha256", d.sha256}}},
-                              {"result", result}};
+                        {"status", "ok"},
+                        {"message", ""},
+                        {"method", a->method},
+                        {"data", {{"file", d.file}, {"sha256", d.sha256}}},
+                        {"result", result}};
     if (d.resampling || !d.warnings.empty()) {
       Result notes;  // the data's resampling record and warnings, as identify reports them
       note_data(notes, d);
@@ -217,13 +221,7 @@ Handler register_analyze(CLI::App& app) {
       (a->json == "-" ? std::cerr : std::cout) << "figure " << files.figure << " (data " << files.data
                                                << ", gnuplot script " << files.script << ")\n";
     }
-    if (a->json == "-") {
-      std::cout << j.dump(2) << "\n";
-    } else if (!a->json.empty()) {
-      AtomicWriteOptions w;
-      w.overwrite = a->overwrite;
-      write_file_atomic(a->json, j.dump(2) + "\n", w);
-    }
+    write_json(j);
     return 0;
   };
 }

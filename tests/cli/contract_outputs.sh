@@ -16,23 +16,13 @@ cleanup() {
   rm -rf "$tmp"
 }
 trap cleanup EXIT
+# shellcheck source=lib.sh
+. "$(dirname "$0")/lib.sh"
 emps="$src/data/emps/DATA_EMPS.mat"
 scenario="$src/examples/craig_pendulum_coulomb.yaml"
 idim=(identify idim "$emps" --time t --position qm --input vir --gain gtau)
 
-fail() { echo "FAIL: $*"; exit 1; }
 
-expect() {  # EXIT_CODE TEXT_IN_MESSAGE ARGS...
-  local want_code="$1" want="$2"
-  shift 2
-  set +e
-  "$exe" "$@" > "$tmp/out.txt" 2> "$tmp/err.txt"
-  local code=$?
-  set -e
-  [ "$code" -eq "$want_code" ] || { cat "$tmp/err.txt"; fail "$*: exit $code, expected $want_code"; }
-  grep -qF -- "$want" "$tmp/err.txt" || { cat "$tmp/err.txt"; fail "$*: message lacks '$want'"; }
-  [ "$(wc -l < "$tmp/err.txt")" -eq 1 ] || { cat "$tmp/err.txt"; fail "$*: expected a one-line message"; }
-}
 
 # An output path that is a directory: exit 2 naming the option, with or without --overwrite.
 mkdir "$tmp/dir"

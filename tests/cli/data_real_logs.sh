@@ -8,6 +8,8 @@ exe="$1"
 src="$2"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=lib.sh
+. "$(dirname "$0")/lib.sh"
 
 # The log: joint 1 moves (a sum of sines), the drive reports current (A) with noise and an offset;
 # torque = kt * current = M qdd + Fv qd + Fc sign(qd) + offset. Seeded.
@@ -62,16 +64,6 @@ assert r["dt"] == r["dt_median"] and r["samples_in"] == 3000, r
 assert abs(r["samples_out"] - 3000) < 100, r
 PY
 
-expect_fail() {  # text the message must contain, then the frictionlab arguments
-  local want="$1"
-  shift
-  set +e
-  "$exe" "$@" > /dev/null 2> "$tmp/err.txt"
-  local code=$?
-  set -e
-  [ "$code" -eq 2 ] || { echo "FAIL: $*: exit $code, expected 2"; cat "$tmp/err.txt"; exit 1; }
-  grep -qF -- "$want" "$tmp/err.txt" || { echo "FAIL: $*: message lacks '$want':"; cat "$tmp/err.txt"; exit 1; }
-}
 
 # Irregular time without --resample: refused, naming a line of the file and --resample.
 expect_fail "--resample" identify idim "$tmp/joints.csv" --names "$names" "${idim_args[@]}"

@@ -6,32 +6,29 @@ exe="$1"
 src="$2"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=lib.sh
+. "$(dirname "$0")/lib.sh"
 emps="$src/data/emps/DATA_EMPS.mat"
 
-expect_fail() {  # text the message must contain, then the identify arguments
+expect_identify_fail() {  # text the message must contain, then the identify arguments
   local want="$1"
   shift
-  set +e
-  "$exe" identify "$@" --json "$tmp/out.json" > /dev/null 2> "$tmp/err.txt"
-  local code=$?
-  set -e
-  [ "$code" -eq 2 ] || { echo "FAIL: $*: exit $code, expected 2"; cat "$tmp/err.txt"; exit 1; }
-  grep -qF -- "$want" "$tmp/err.txt" || { echo "FAIL: $*: message lacks '$want':"; cat "$tmp/err.txt"; exit 1; }
+  expect_fail "$want" identify "$@" --json "$tmp/out.json"
 }
 
 # A missing variable is named and the file's variables are listed.
-expect_fail "no column 'qx'" idim "$emps" --time t --position qx --input vir --gain gtau
-expect_fail "qm" idim "$emps" --time t --position qx --input vir --gain gtau
+expect_identify_fail "no column 'qx'" idim "$emps" --time t --position qx --input vir --gain gtau
+expect_identify_fail "qm" idim "$emps" --time t --position qx --input vir --gain gtau
 # A gain that is neither a number nor a scalar of the file.
-expect_fail "--gain" idim "$emps" --time t --position qm --input vir --gain gtaux
+expect_identify_fail "--gain" idim "$emps" --time t --position qm --input vir --gain gtaux
 # CSV: a NaN cell names its line and column; non-increasing time names its line.
 printf 'time,velocity,force\n0,0,0\n0.01,0,nan\n0.02,0,0.1\n' > "$tmp/nan.csv"
-expect_fail "line 3" breakaway "$tmp/nan.csv"
+expect_identify_fail "line 3" breakaway "$tmp/nan.csv"
 printf 'time,velocity,force\n0,0,0\n0.01,0,0\n0.01,0,0.1\n0.03,0,0.2\n' > "$tmp/time.csv"
-expect_fail "line 4" breakaway "$tmp/time.csv"
+expect_identify_fail "line 4" breakaway "$tmp/time.csv"
 # A corrupt .mat file is an error naming the file, never a crash.
 head -c 300 "$emps" > "$tmp/broken.mat"
-expect_fail "broken.mat" idim "$tmp/broken.mat" --time t --position qm --input vir --gain gtau
+expect_identify_fail "broken.mat" idim "$tmp/broken.mat" --time t --position qm --input vir --gain gtau
 # No motion: a diagnostic, with the JSON still written with status error.
 python3 - "$tmp/still.csv" <<'PY'
 import sys
@@ -40,13 +37,13 @@ with open(sys.argv[1], "w") as f:
     for k in range(200):
         f.write(f"{k*0.01},0,{k*1e-4}\n")
 PY
-expect_fail "no motion detected" breakaway "$tmp/still.csv"
+expect_identify_fail "no motion detected" breakaway "$tmp/still.csv"
 grep -q '"status": "error"' "$tmp/out.json" || { echo "FAIL: error JSON not written"; exit 1; }
 rm -f "$tmp/out.json"
 # Unknown sweep model lists the valid ones.
-expect_fail "expected coulomb-viscous, coulomb-viscous-asymmetric, stribeck or stribeck-asymmetric" sweep "$tmp/still.csv" --model lugre
+expect_identify_fail "expected coulomb-viscous, coulomb-viscous-asymmetric, stribeck or stribeck-asymmetric" sweep "$tmp/still.csv" --model lugre
 # A decay without stiffness or natural frequency.
-expect_fail "give --stiffness" decay "$tmp/still.csv" --position velocity
+expect_identify_fail "give --stiffness" decay "$tmp/still.csv" --position velocity
 # An unknown method.
 set +e
 "$exe" identify magic "$emps" > /dev/null 2>&1

@@ -8,22 +8,12 @@ exe="$1"
 src="$2"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=lib.sh
+. "$(dirname "$0")/lib.sh"
 emps="$src/data/emps/DATA_EMPS.mat"
 idim=(identify idim "$emps" --time t --position qm --input vir --gain gtau)
 
-fail() { echo "FAIL: $*"; exit 1; }
 
-expect() {  # EXIT_CODE TEXT_IN_MESSAGE ARGS...
-  local want_code="$1" want="$2"
-  shift 2
-  set +e
-  "$exe" "$@" > "$tmp/out.txt" 2> "$tmp/err.txt"
-  local code=$?
-  set -e
-  [ "$code" -eq "$want_code" ] || { echo "FAIL: $*: exit $code, expected $want_code"; cat "$tmp/err.txt"; exit 1; }
-  grep -qF -- "$want" "$tmp/err.txt" || { echo "FAIL: $*: message lacks '$want':"; cat "$tmp/err.txt"; exit 1; }
-  [ "$(wc -l < "$tmp/err.txt")" -le 1 ] || { echo "FAIL: $*: expected a one-line message:"; cat "$tmp/err.txt"; exit 1; }
-}
 
 # Unsupported extensions: refused before the data is read (a missing data file would be reported
 # otherwise), and no figure, data or script file appears.

@@ -8,6 +8,8 @@ exe="$1"
 src="$2"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
+# shellcheck source=lib.sh
+. "$(dirname "$0")/lib.sh"
 data="$src/data/emps"
 scenario="$src/examples/emps_closed_loop.yaml"
 cols=(--time t --position qm --input vir --gain gtau)
@@ -51,16 +53,6 @@ set -e
 [ "$code" -eq 2 ] && grep -q "pass --overwrite" "$tmp/err.txt" || { echo "FAIL: overwrite rule: exit $code"; exit 1; }
 
 # Bad input: exit 2 and a message naming the file or column.
-expect_fail() {  # expect_fail PATTERN ARGS...
-  local pattern="$1"
-  shift
-  set +e
-  "$exe" "$@" > /dev/null 2> "$tmp/err.txt"
-  local code=$?
-  set -e
-  [ "$code" -eq 2 ] || { echo "FAIL: exit $code (expected 2): $*"; cat "$tmp/err.txt"; exit 1; }
-  grep -q -- "$pattern" "$tmp/err.txt" || { echo "FAIL: message lacks '$pattern': $*"; cat "$tmp/err.txt"; exit 1; }
-}
 expect_fail "$tmp/missing.yaml" validate "$tmp/model.json" "$data/DATA_EMPS.mat" --scenario "$tmp/missing.yaml" "${cols[@]}"
 /usr/bin/python3 -c "import json,sys; j=json.load(open('$tmp/model.json')); del j['law']; json.dump(j, open('$tmp/nolaw.json','w'))"
 expect_fail "nolaw.json: no 'law'" validate "$tmp/nolaw.json" "$data/DATA_EMPS.mat" --scenario "$scenario" "${cols[@]}"

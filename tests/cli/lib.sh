@@ -1,0 +1,27 @@
+# Shared by the CLI test scripts (sourced after `exe` and `tmp` are set): run the tool and check
+# its exit status and its one-line message.
+
+fail() { echo "FAIL: $*"; exit 1; }
+
+# expect EXIT_CODE TEXT ARGS...: runs "$exe" ARGS (stdout to $tmp/out.txt, stderr to
+# $tmp/err.txt) and fails unless it exits with EXIT_CODE and, when EXIT_CODE is not 0, stderr is
+# one line (README "Guarantees") containing TEXT.
+expect() {
+  local want_code="$1" want="$2"
+  shift 2
+  set +e
+  "$exe" "$@" > "$tmp/out.txt" 2> "$tmp/err.txt"
+  local code=$?
+  set -e
+  [ "$code" -eq "$want_code" ] || { cat "$tmp/err.txt"; fail "$*: exit $code, expected $want_code"; }
+  [ "$want_code" -eq 0 ] && return 0
+  grep -qF -- "$want" "$tmp/err.txt" || { cat "$tmp/err.txt"; fail "$*: message lacks '$want'"; }
+  [ "$(wc -l < "$tmp/err.txt")" -eq 1 ] || { cat "$tmp/err.txt"; fail "$*: expected a one-line message"; }
+}
+
+# expect_fail TEXT ARGS...: bad input, exit status 2 with a one-line message containing TEXT.
+expect_fail() {
+  local want="$1"
+  shift
+  expect 2 "$want" "$@"
+}
