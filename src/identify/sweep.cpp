@@ -43,9 +43,10 @@ std::vector<SweepPoint> sweep_points(const SweepData& d, const SweepOptions& o) 
   if (d.force.size() != n || d.velocity.size() != n)
     throw std::invalid_argument("sweep: time, force and velocity must have equal lengths (have " + std::to_string(n) + ", " +
                                 std::to_string(d.force.size()) + ", " + std::to_string(d.velocity.size()) + ")");
+  if (n < 2) throw std::invalid_argument("sweep: " + std::to_string(n) + " samples are too few; expected at least 2");
   for (Eigen::Index k = 0; k < n; ++k)
     if (!std::isfinite(d.time[k]) || !std::isfinite(d.force[k]) || !std::isfinite(d.velocity[k]))
-      throw std::invalid_argument("sweep: sample " + std::to_string(k) + " is not finite");
+      throw std::invalid_argument("sweep: sample " + std::to_string(k + 1) + " (counted from 1) is not finite");
   std::vector<SweepPoint> points;
   if (!o.windows.empty()) {
     for (const auto& w : o.windows) {
@@ -66,7 +67,6 @@ std::vector<SweepPoint> sweep_points(const SweepData& d, const SweepOptions& o) 
                                 " samples; expected " + std::to_string(n) + " like time");
   if (by_reference && !o.reference.allFinite())
     throw std::invalid_argument("sweep: the reference velocity has a sample that is not finite");
-  if (n < 2) throw std::invalid_argument("sweep: " + std::to_string(n) + " samples are too few");
   const double dt = (d.time[n - 1] - d.time[0]) / static_cast<double>(n - 1);
   // Segments are found on the reference as given, or on the smoothed measured velocity with a
   // band that covers its measured noise.
