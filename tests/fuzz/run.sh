@@ -74,14 +74,15 @@ export build seconds keep here out
 
 rm -f "$out"/*.result
 printf '%s\n' "${targets[@]}" | xargs -P "$jobs" -I{} bash -c 'run_target {}'
-status=0
+status=0 passed=0 failed=0
 for t in "${targets[@]}"; do
   if [[ -f "$out/$t.result" ]]; then
     echo "fuzz: $(cat "$out/$t.result")"
-    grep -q '^PASS' "$out/$t.result" || status=1
+    if grep -q '^PASS' "$out/$t.result"; then passed=$((passed + 1)); else failed=$((failed + 1)) status=1; fi
   else
     echo "fuzz: FAIL  $t: did not run"
-    status=1
+    failed=$((failed + 1)) status=1
   fi
 done
+echo "fuzz: $passed passed, $failed failed"
 exit $status
