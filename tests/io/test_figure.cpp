@@ -62,7 +62,7 @@ Result sample_result() {
   r.model = "coulomb-viscous";
   r.data_file = "/data/run<1>.mat";
   r.data_sha256 = "abc123";
-  r.parameters = {{"M", 95.10074896, 0.10997, "kg"}, {"Fc", 20.388, 0.1026, "N"}, {"sigma0", 1.234e5, 2.1e3, "N/m"}};
+  r.parameters = {{"M", 95.10074896, 0.10997, "kg", ""}, {"Fc", 20.388, 0.1026, "N", ""}, {"sigma0", 1.234e5, 2.1e3, "N/m", ""}};
   r.fit.relative_error_percent = 4.137;
   r.fit.rmse = 2.213;
   r.fit.samples = 2480;
