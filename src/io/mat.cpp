@@ -145,6 +145,51 @@ std::string v5_variable_name(const unsigned char* p, std::size_t n, const std::f
   return "";
 }
 
+// The first three subelements of a v5 variable (array flags, dimensions, name), from its miMATRIX
+// tag at p (n bytes available): matio (1.5.23) allocates the dimensions and the name by the
+// sizes their tags declare, before anything else is read, so a damaged tag (a name declaring
+// 3 GB) would be allocated as it stands. Each must fit in the variable (`element_bytes`, its
+// declared size), the flags take 8 bytes, the dimensions at most 64 (4-byte) values and the name
+// at most 4096 characters (MATLAB's own limit is 63). Returns the problem, or "" (also when the
+// n bytes end before the three tags: the later checks then speak).
+std::string v5_matrix_header_problem(const unsigned char* p, std::size_t n, std::size_t element_bytes,
+                                     const std::function<std::uint32_t(const unsigned char*)>& u32) {
+  constexpr std::uint32_t kMiMatrix = 14;
+  if (n < 8 || u32(p) != kMiMatrix) return "";
+  std::size_t at = 8;  // past the miMATRIX tag
+  const char* what[3] = {"array flags", "dimensions", "name"};
+  const std::size_t most[3] = {8, 4 * 64, 4096};
+  for (int element = 0; element < 3; ++element) {
+    if (at + 8 > n) return "";
+    const std::uint32_t type = u32(p + at);
+    const bool small = (type >> 16) != 0;  // byte count in the upper half, data in the tag
+    const std::size_t bytes = small ? type >> 16 : u32(p + at + 4);
+    const std::size_t next = small ? at + 8 : at + 8 + (bytes + 7) / 8 * 8;
+    if (bytes > most[element] || next > 8 + element_bytes)
+      return "the tag of its " + std::string(what[element]) + " declares " + std::to_string(bytes) +
+             " bytes, more than the variable holds or than " + std::to_string(most[element]) + " (corrupt header)";
+    at = next;
+  }
+  return "";
+}
+
+// The first inflated bytes of a compressed v5 variable (at most `want`; fewer when the stream
+// ends or is damaged: check_compressed reports that).
+std::vector<unsigned char> inflate_head(const std::vector<unsigned char>& in, std::size_t want) {
+  std::vector<unsigned char> out(want);
+  z_stream z{};
+  if (inflateInit(&z) != Z_OK) return {};
+  z.next_in = const_cast<unsigned char*>(in.data());
+  z.avail_in = static_cast<uInt>(in.size());
+  z.next_out = out.data();
+  z.avail_out = static_cast<uInt>(out.size());
+  while (z.avail_out > 0 && inflate(&z, Z_NO_FLUSH) == Z_OK) {
+  }
+  out.resize(want - z.avail_out);
+  inflateEnd(&z);
+  return out;
+}
+
 // Inflates a compressed v5 variable to its end: the zlib stream must end where the element
 // does, with a matching adler32 checksum (matio 1.5.23 reads a stream with flipped bytes without
 // a word). Returns "" when it does, else what is wrong; `name` gets the variable's name when
@@ -205,7 +250,7 @@ std::string v5_structure_problem(const std::string& path, bool inflate) {
   };
   const std::uint32_t version = little_endian_file ? (std::uint32_t(b[125]) << 8 | b[124]) : (std::uint32_t(b[124]) << 8 | b[125]);
   if (version != 0x0100) return "";  // v7.3: HDF5 checks its own structure
-  constexpr std::uint32_t kMiCompressed = 15;
+  constexpr std::uint32_t kMiCompressed = 15, kMiMatrix = 14;
   std::size_t at = 128;
   unsigned char tag[8];
   int variable = 0;
@@ -227,6 +272,25 @@ std::string v5_structure_problem(const std::string& path, bool inflate) {
              " bytes but the file has " + std::to_string(size) + " in all";
     }
     ++variable;
+    if (!inflate && (type == kMiMatrix || type == kMiCompressed)) {
+      // The variable's header tags, before matio allocates by them (v5_matrix_header_problem).
+      element.resize(std::min<std::size_t>(bytes, type == kMiCompressed ? bytes : 504));
+      if (!in.read(reinterpret_cast<char*>(element.data()), static_cast<std::streamsize>(element.size())))
+        return "read error at byte " + std::to_string(at + 8);
+      std::vector<unsigned char> head;
+      std::size_t declared = bytes;
+      if (type == kMiCompressed) {
+        head = inflate_head(element, 512);
+        // zlib inflates at most 1032 to 1: a larger declared size is damage too.
+        declared = head.size() >= 8 ? std::min<std::size_t>(u32(head.data() + 4), 1032 * std::size_t{bytes}) : 0;
+      } else {
+        head.resize(8 + element.size());
+        std::copy(tag, tag + 8, head.begin());
+        std::copy(element.begin(), element.end(), head.begin() + 8);
+      }
+      if (const std::string problem = v5_matrix_header_problem(head.data(), head.size(), declared, u32); !problem.empty())
+        return "variable " + std::to_string(variable) + " at byte " + std::to_string(at) + ": " + problem;
+    }
     if (inflate && type == kMiCompressed) {
       element.resize(bytes);
       if (!in.read(reinterpret_cast<char*>(element.data()), static_cast<std::streamsize>(bytes)))
