@@ -7,7 +7,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "frictionlab/plants/emps_pd.hpp"
 #include "frictionlab/signal/butterworth.hpp"
 #include "frictionlab/signal/decimate.hpp"
 #include "frictionlab/signal/differentiate.hpp"
@@ -108,12 +107,8 @@ Result validate_model(const IdentifiedModel& model, const Scenario& scenario, co
     throw std::runtime_error("validate: the simulation gave " + std::to_string(tr.rows()) + " samples; expected " +
                              std::to_string(n));
   const Vec q_sim = Eigen::Map<const Vec>(tr.position.data(), n);
-  Vec f_sim(n);
-  if (const auto* loop = dynamic_cast<const EmpsPdLoop*>(sc.plant.get())) {
-    f_sim = loop->params().gtau * Eigen::Map<const Vec>(tr.voltage.data(), n);
-  } else {
-    f_sim = Eigen::Map<const Vec>(tr.reference.data(), n);  // open loop: the input force itself
-  }
+  // The force the drive commands (an open axis: its input; a loop: its controller's output).
+  const Vec f_sim = Eigen::Map<const Vec>(tr.drive.data(), n);
   const Motion sim = derive(q_sim, dt, po);
 
   Result r;

@@ -28,6 +28,7 @@ EmpsPdLoop::EmpsPdLoop(std::shared_ptr<const Plant> inner, EmpsPdParams p) : inn
   if (inner_->kinematic())
     throw std::invalid_argument("controller (emps-pd): cannot close a loop around a " + inner_->type() +
                                 " (its velocity is imposed); use axis or dc-motor");
+  require_single(*inner_, "controller (emps-pd)");
   require(std::isfinite(p_.kp) && p_.kp >= 0, "kp", p_.kp, ">= 0 (1/s)");
   require(std::isfinite(p_.kv) && p_.kv >= 0, "kv", p_.kv, ">= 0 (V/(m/s))");
   require(std::isfinite(p_.gtau) && p_.gtau > 0, "gtau", p_.gtau, "> 0 (N/V)");
@@ -40,20 +41,21 @@ EmpsPdLoop::EmpsPdLoop(std::shared_ptr<const Plant> inner, EmpsPdParams p) : inn
 
 double EmpsPdLoop::applied(double t, std::span<const double> x, const InputValue&) const {
   const std::size_t n = static_cast<std::size_t>(n_inner_);
-  return inner_->applied(t, x.first(n), InputValue{p_.gtau * x[n + kApplied], 0.0});
+  return applied_of(*inner_, t, x.first(n), InputValue{p_.gtau * x[n + kApplied], 0.0});
 }
 
 void EmpsPdLoop::derivatives(double t, std::span<const double> x, const InputValue&, double friction,
                              std::span<double> dx) const {
   const std::size_t n = static_cast<std::size_t>(n_inner_);
-  inner_->derivatives(t, x.first(n), InputValue{p_.gtau * x[n + kApplied], 0.0}, friction, dx.first(n));
+  derivatives_of(*inner_, t, x.first(n), InputValue{p_.gtau * x[n + kApplied], 0.0}, friction, dx.first(n));
   for (std::size_t i = n; i < n + 5; ++i) dx[i] = 0.0;  // discrete states change only at samples
 }
 
 PlantSignals EmpsPdLoop::signals(double t, std::span<const double> x, const InputValue& r) const {
   const std::size_t n = static_cast<std::size_t>(n_inner_);
-  PlantSignals s = inner_->signals(t, x.first(n), InputValue{p_.gtau * x[n + kApplied], 0.0});
+  PlantSignals s = signals_of(*inner_, t, x.first(n), InputValue{p_.gtau * x[n + kApplied], 0.0});
   s.voltage = x[n + kComputed];
+  s.drive = p_.gtau * x[n + kComputed];
   s.reference = r.value;
   return s;
 }

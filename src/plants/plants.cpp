@@ -24,19 +24,71 @@ void require(bool ok, const char* plant, const char* name, double value, const c
 
 }  // namespace
 
+Contact Plant::contact(int) const { return {}; }
+
 void Plant::initial_extras(std::span<double> x) const {
-  for (std::size_t i = 2; i < x.size(); ++i) x[i] = 0.0;
+  // Zero every state but the contacts' positions and velocities (the caller sets those).
+  const int nc = num_contacts();
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    bool motion = false;
+    for (int k = 0; k < nc && !motion; ++k) {
+      const Contact c = contact(k);
+      motion = static_cast<std::size_t>(c.position) == i || static_cast<std::size_t>(c.velocity) == i;
+    }
+    if (!motion) x[i] = 0.0;
+  }
 }
 
-PlantSignals Plant::signals(double, std::span<const double>, const InputValue& u) const {
-  return {0.0, 0.0, u.value};
-}
-
-void Plant::sample(double, std::span<double>, const InputValue&) const {}
-
-bool Plant::jacobian(double, std::span<const double>, const InputValue&, double, std::span<double>,
+bool Plant::jacobian(double, std::span<const double>, Inputs, std::span<const double>, std::span<double>,
                      std::span<double>) const {
   return false;
+}
+
+void Plant::signals(double, std::span<const double>, Inputs u, std::span<PlantSignals> out) const {
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = PlantSignals{0.0, 0.0, i < u.size() ? u[i].value : 0.0, 0.0};
+}
+
+void Plant::sample(double, std::span<double>, Inputs) const {}
+
+void Plant::events(double, std::span<const double>, Inputs, std::span<double>) const {}
+
+void Plant::on_event(double, std::span<double>, Inputs, int) const {}
+
+// ---- 1-DOF plants ------------------------------------------------------------------------------
+
+PlantSignals SingleContactPlant::signals(double, std::span<const double>, const InputValue& u) const {
+  return {0.0, 0.0, u.value, 0.0};
+}
+
+void SingleContactPlant::sample(double, std::span<double>, const InputValue&) const {}
+
+bool SingleContactPlant::jacobian(double, std::span<const double>, const InputValue&, double, std::span<double>,
+                                  std::span<double>) const {
+  return false;
+}
+
+double SingleContactPlant::applied_of(const Plant& p, double t, std::span<const double> x, const InputValue& u) {
+  double f = 0.0;
+  p.applied(t, x, Inputs(&u, 1), std::span<double>(&f, 1));
+  return f;
+}
+
+void SingleContactPlant::derivatives_of(const Plant& p, double t, std::span<const double> x, const InputValue& u,
+                                        double friction, std::span<double> dx) {
+  p.derivatives(t, x, Inputs(&u, 1), std::span<const double>(&friction, 1), dx);
+}
+
+PlantSignals SingleContactPlant::signals_of(const Plant& p, double t, std::span<const double> x, const InputValue& u) {
+  PlantSignals s;
+  p.signals(t, x, Inputs(&u, 1), std::span<PlantSignals>(&s, 1));
+  return s;
+}
+
+void SingleContactPlant::require_single(const Plant& inner, const char* who) {
+  if (inner.num_contacts() != 1 || inner.num_inputs() != 1)
+    throw std::invalid_argument(std::string(who) + ": cannot close this loop around a " + inner.type() + " with " +
+                                std::to_string(inner.num_contacts()) + " contacts and " +
+                                std::to_string(inner.num_inputs()) + " inputs; it needs a 1-DOF plant (1 contact, 1 input)");
 }
 
 // ---- rigid axis -------------------------------------------------------------------------------
@@ -65,6 +117,10 @@ bool RigidAxis::jacobian(double, std::span<const double>, const InputValue&, dou
   return true;
 }
 
+PlantSignals RigidAxis::signals(double, std::span<const double>, const InputValue& u) const {
+  return {0.0, 0.0, u.value, u.value};
+}
+
 // ---- pendulum ---------------------------------------------------------------------------------
 
 Pendulum::Pendulum(PendulumParams p) : p_(p) {
@@ -82,6 +138,10 @@ void Pendulum::derivatives(double t, std::span<const double> x, const InputValue
                            std::span<double> dx) const {
   dx[0] = x[1];
   dx[1] = (applied(t, x, u) - friction) / inertia();
+}
+
+PlantSignals Pendulum::signals(double, std::span<const double>, const InputValue& u) const {
+  return {0.0, 0.0, u.value, u.value};
 }
 
 double Pendulum::energy(std::span<const double> x) const {
@@ -120,8 +180,8 @@ bool SpringBase::jacobian(double, std::span<const double>, const InputValue&, do
   return true;
 }
 
-PlantSignals SpringBase::signals(double t, std::span<const double>, const InputValue&) const {
-  return {0.0, 0.0, p_.x0 + p_.V0 * t};
+PlantSignals SpringBase::signals(double t, std::span<const double> x, const InputValue& u) const {
+  return {0.0, 0.0, p_.x0 + p_.V0 * t, applied(t, x, u)};
 }
 
 // ---- DC motor ---------------------------------------------------------------------------------
@@ -154,7 +214,7 @@ void DcMotor::derivatives(double t, std::span<const double> x, const InputValue&
 PlantSignals DcMotor::signals(double, std::span<const double> x, const InputValue& u) const {
   const double i = current(x, u);
   const double v = p_.drive == MotorDrive::voltage ? u.value : p_.R * i + p_.Kb * x[1];
-  return {i, v, u.value};
+  return {i, v, u.value, p_.Kt * i};
 }
 
 // ---- velocity drive ---------------------------------------------------------------------------
@@ -171,6 +231,10 @@ void VelocityDrive::derivatives(double, std::span<const double>, const InputValu
   dx[1] = u.rate;
 }
 
+PlantSignals VelocityDrive::signals(double, std::span<const double>, const InputValue& u) const {
+  return {0.0, 0.0, u.value, p_.M * u.rate};
+}
+
 // ---- closed loop ------------------------------------------------------------------------------
 
 ClosedLoop::ClosedLoop(std::shared_ptr<const Plant> inner, ControllerParams c) : inner_(std::move(inner)), c_(c) {
@@ -178,6 +242,7 @@ ClosedLoop::ClosedLoop(std::shared_ptr<const Plant> inner, ControllerParams c) :
   if (inner_->kinematic())
     throw std::invalid_argument("controller: cannot close a loop around a " + inner_->type() +
                                 " (its velocity is imposed); use axis or dc-motor");
+  require_single(*inner_, "controller");
   require(std::isfinite(c.Kp) && c.Kp >= 0, "controller", "Kp", c.Kp, ">= 0");
   require(std::isfinite(c.Ki) && c.Ki >= 0, "controller", "Ki", c.Ki, ">= 0");
   require(std::isfinite(c.Kd) && c.Kd >= 0, "controller", "Kd", c.Kd, ">= 0");
@@ -206,20 +271,20 @@ double ClosedLoop::control(std::span<const double> x, double r) const {
 
 double ClosedLoop::applied(double t, std::span<const double> x, const InputValue& r) const {
   const InputValue u{control(x, r.value), 0.0};
-  return inner_->applied(t, x.first(static_cast<std::size_t>(n_inner_)), u);
+  return applied_of(*inner_, t, x.first(static_cast<std::size_t>(n_inner_)), u);
 }
 
 void ClosedLoop::derivatives(double t, std::span<const double> x, const InputValue& r, double friction,
                              std::span<double> dx) const {
   const std::size_t n = static_cast<std::size_t>(n_inner_);
   const InputValue u{control(x, r.value), 0.0};
-  inner_->derivatives(t, x.first(n), u, friction, dx.first(n));
+  derivatives_of(*inner_, t, x.first(n), u, friction, dx.first(n));
   dx[n] = c_.loop == ControlLoop::position ? r.value - x[0] : r.value - x[1];
 }
 
 PlantSignals ClosedLoop::signals(double t, std::span<const double> x, const InputValue& r) const {
   const InputValue u{control(x, r.value), 0.0};
-  PlantSignals s = inner_->signals(t, x.first(static_cast<std::size_t>(n_inner_)), u);
+  PlantSignals s = signals_of(*inner_, t, x.first(static_cast<std::size_t>(n_inner_)), u);
   s.reference = r.value;
   return s;
 }

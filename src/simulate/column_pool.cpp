@@ -21,16 +21,16 @@ thread_local bool g_pool_gone = false;
 Pool::Pool() = default;
 Pool::~Pool() { g_pool_gone = true; }
 
-Pool& pool() {
-  thread_local Pool p;
-  return p;
+Pool& pool(Shelf shelf) {
+  thread_local Pool p[2];
+  return p[static_cast<int>(shelf)];
 }
 
 }  // namespace
 
-std::vector<double> take_column(std::size_t rows) {
+std::vector<double> take_column(std::size_t rows, Shelf shelf) {
   if (rows >= kColumnPoolMinDoubles && !g_pool_gone) {
-    Pool& p = pool();
+    Pool& p = pool(shelf);
     auto it = std::lower_bound(p.columns.begin(), p.columns.end(), rows,
                                [](const std::vector<double>& c, std::size_t n) { return c.capacity() < n; });
     // A column much larger than asked for stays for a longer run.
@@ -46,10 +46,10 @@ std::vector<double> take_column(std::size_t rows) {
   return c;
 }
 
-void recycle_column(std::vector<double>&& column) noexcept {
+void recycle_column(std::vector<double>&& column, Shelf shelf) noexcept {
   const std::size_t cap = column.capacity();
   if (g_pool_gone || cap < kColumnPoolMinDoubles || cap > kColumnPoolKeepDoubles) return;
-  Pool& p = pool();
+  Pool& p = pool(shelf);
   try {
     column.clear();
     auto it = std::lower_bound(p.columns.begin(), p.columns.end(), cap,
@@ -65,6 +65,6 @@ void recycle_column(std::vector<double>&& column) noexcept {
   }
 }
 
-std::size_t pooled_doubles() noexcept { return g_pool_gone ? 0 : pool().doubles; }
+std::size_t pooled_doubles(Shelf shelf) noexcept { return g_pool_gone ? 0 : pool(shelf).doubles; }
 
 }  // namespace frictionlab::detail

@@ -19,15 +19,22 @@ inline constexpr std::size_t kColumnPoolMinDoubles = std::size_t(4) << 10;
 /// At most this many doubles (64 MiB) are kept per thread; the smallest columns go first.
 inline constexpr std::size_t kColumnPoolKeepDoubles = std::size_t(8) << 20;
 
-/// An empty vector with capacity >= `rows`: a recycled column of this thread (the smallest that
-/// fits) or a new one. \throws std::bad_alloc.
-std::vector<double> take_column(std::size_t rows);
+/// Which of a thread's two pools a column lives in: the main one (the CSV columns, the law states,
+/// other contacts' columns), or the side one for a trajectory's drive column, which is outside a
+/// 1-DOF CSV and is recorded by every run: kept apart so that the main pool's accounting (and
+/// what it evicts first) is that of the columns users see. Each pool keeps at most
+/// kColumnPoolKeepDoubles.
+enum class Shelf { main = 0, side = 1 };
 
-/// Keeps the storage of `column` for this thread's next take_column() when it is large enough
-/// and fits in the pool; otherwise frees it. Safe during thread exit (then it just frees).
-void recycle_column(std::vector<double>&& column) noexcept;
+/// An empty vector with capacity >= `rows`: a recycled column of this thread's `shelf` (the
+/// smallest that fits) or a new one. \throws std::bad_alloc.
+std::vector<double> take_column(std::size_t rows, Shelf shelf = Shelf::main);
 
-/// Doubles of capacity kept for this thread now (for tests).
-std::size_t pooled_doubles() noexcept;
+/// Keeps the storage of `column` for this thread's next take_column() on `shelf` when it is large
+/// enough and fits in the pool; otherwise frees it. Safe during thread exit (then it just frees).
+void recycle_column(std::vector<double>&& column, Shelf shelf = Shelf::main) noexcept;
+
+/// Doubles of capacity kept on this thread's `shelf` now (for tests).
+std::size_t pooled_doubles(Shelf shelf = Shelf::main) noexcept;
 
 }  // namespace frictionlab::detail

@@ -163,6 +163,7 @@ class Engine {
     for (auto* c : {&tr.time, &tr.position, &tr.velocity, &tr.friction, &tr.applied, &tr.current, &tr.voltage,
                     &tr.reference, &tr.stuck})
       *c = detail::take_column(rows);
+    tr.drive = detail::take_column(rows, detail::Shelf::side);
     tr.law_state.resize(static_cast<std::size_t>(nz_));
     for (auto& c : tr.law_state) c = detail::take_column(rows);
     if (mode_ == SolverMode::fixed_step) {
@@ -179,6 +180,22 @@ class Engine {
   enum class Mode { free, stuck, slide_pos, slide_neg };
 
   // ---- physics -------------------------------------------------------------------------------
+
+  // One-contact calls of the plant's span-based interface.
+  double applied1(double t, std::span<const double> x, const InputValue& in) const {
+    double f = 0.0;
+    plant_.applied(t, x, Inputs(&in, 1), std::span<double>(&f, 1));
+    return f;
+  }
+  void deriv1(double t, std::span<const double> x, const InputValue& in, double friction, std::span<double> dx) const {
+    plant_.derivatives(t, x, Inputs(&in, 1), std::span<const double>(&friction, 1), dx);
+  }
+  PlantSignals signals1(double t, std::span<const double> x, const InputValue& in) const {
+    PlantSignals s;
+    plant_.signals(t, x, Inputs(&in, 1), std::span<PlantSignals>(&s, 1));
+    return s;
+  }
+  void sample1(double t, std::span<double> x, const InputValue& in) const { plant_.sample(t, x, Inputs(&in, 1)); }
 
   // Sliding force in direction s, with the one-sided limit at v -> 0 from that side when v has
   // not (or no longer) the sign s: keeps the right-hand side smooth over the step that finds v = 0.
@@ -209,24 +226,24 @@ class Engine {
     const double v = x[1];
     switch (mode_now_) {
       case Mode::stuck: {
-        const double a = plant_.applied(t, x, in);
-        plant_.derivatives(t, x, in, a, dx);
+        const double a = applied1(t, x, in);
+        deriv1(t, x, in, a, dx);
         dx[0] = 0.0;
         dx[1] = 0.0;
         break;
       }
       case Mode::slide_pos:
       case Mode::slide_neg:
-        plant_.derivatives(t, x, in, slide_force(v, mode_now_ == Mode::slide_pos ? 1 : -1), dx);
+        deriv1(t, x, in, slide_force(v, mode_now_ == Mode::slide_pos ? 1 : -1), dx);
         break;
       case Mode::free:
         if (nz_ > 0) {
           std::span<const double> z(y + np_, static_cast<std::size_t>(nz_));
           const double f = law_.force(z, v);
-          plant_.derivatives(t, x, in, f, dx);
+          deriv1(t, x, in, f, dx);
           law_.derivative(z, v, std::span<double>(dy + np_, static_cast<std::size_t>(nz_)));
         } else {
-          plant_.derivatives(t, x, in, law_.sliding(v), dx);
+          deriv1(t, x, in, law_.sliding(v), dx);
         }
         break;
     }
@@ -236,7 +253,7 @@ class Engine {
     const InputValue in = input_.at(t);
     const auto x = effective_state(t, y, in);
     if (mode_now_ == Mode::stuck) {
-      const double a = plant_.applied(t, x, in);
+      const double a = applied1(t, x, in);
       g[0] = a - fbp_;
       g[1] = a + fbn_;
     } else {
@@ -284,7 +301,7 @@ class Engine {
   void record(Trajectory& tr, double t, const double* y, bool stuck_flag) {
     const InputValue in = input_.at(t);
     const auto x = effective_state(t, y, in);
-    double a = plant_.applied(t, x, in);
+    double a = applied1(t, x, in);
     double f = 0.0;
     switch (mode_now_) {
       case Mode::stuck: f = a; break;
@@ -295,8 +312,8 @@ class Engine {
                     : law_.sliding(x[1]);
         break;
     }
-    if (kinematic_) a += f;  // the drive supplies the friction too
-    const PlantSignals s = plant_.signals(t, x, in);
+    PlantSignals s = signals1(t, x, in);
+    if (kinematic_) a += f, s.drive += f;  // the drive supplies the friction too
     tr.time.push_back(t);
     tr.position.push_back(x[0]);
     tr.velocity.push_back(x[1]);
@@ -305,6 +322,7 @@ class Engine {
     tr.current.push_back(s.current);
     tr.voltage.push_back(s.voltage);
     tr.reference.push_back(s.reference);
+    tr.drive.push_back(s.drive);
     tr.stuck.push_back(stuck_flag ? 1.0 : 0.0);
     for (int i = 0; i < nz_; ++i) tr.law_state[static_cast<std::size_t>(i)].push_back(y[np_ + i]);
   }
@@ -317,7 +335,7 @@ class Engine {
     y[1] = 0.0;
     std::copy(y, y + n_, scratch_.begin());
     scratch_[1] = 0.0;
-    return plant_.applied(t, std::span<const double>(scratch_.data(), static_cast<std::size_t>(np_)), in);
+    return applied1(t, std::span<const double>(scratch_.data(), static_cast<std::size_t>(np_)), in);
   }
 
   // Decides the mode of a body at rest at time t (start, after a stop, after an input jump).
@@ -410,7 +428,7 @@ class Engine {
     }
 
     mode_now_ = Mode::free;
-    if (sample_period_ > 0) plant_.sample(0.0, std::span<double>(y, static_cast<std::size_t>(np_)), input_.at(0.0));
+    if (sample_period_ > 0) sample1(0.0, std::span<double>(y, static_cast<std::size_t>(np_)), input_.at(0.0));
     if (hybrid_) {
       if (o_.initial_velocity > 0) {
         mode_now_ = Mode::slide_pos;
@@ -561,7 +579,7 @@ class Engine {
       y[0] = stuck_position_;
       y[1] = 0.0;
     }
-    plant_.sample(t, std::span<double>(y, static_cast<std::size_t>(np_)), input_.at(t));
+    sample1(t, std::span<double>(y, static_cast<std::size_t>(np_)), input_.at(t));
     if (mode_now_ == Mode::stuck) settle_at_rest(tr, t, y, true, 0);
   }
 
@@ -600,7 +618,7 @@ class Engine {
       if (per_sample < 1 || std::abs(ratio - static_cast<double>(per_sample)) > 1e-6 * ratio)
         throw std::invalid_argument("simulation option dt = " + detail::format_value(dt) + " s must divide the controller's sample period " +
                                     detail::format_value(sample_period_) + " s a whole number of times");
-      plant_.sample(0.0, x, input_.at(0.0));
+      sample1(0.0, x, input_.at(0.0));
     }
     long step = 0;
     for (std::size_t k = 0; k < rows; ++k) {
@@ -615,10 +633,10 @@ class Engine {
         if (nz_ > 0) {
           f = law_.step(z, v, dt);  // the law's exact update at constant v over the sample
         } else {
-          const double a = plant_.applied(t, x, in);
+          const double a = applied1(t, x, in);
           f = law_.force(v, a);  // stiction only at v == 0 exactly (or in Karnopp's band)
         }
-        plant_.derivatives(t, x, in, f, dx);
+        deriv1(t, x, in, f, dx);
         if (kinematic_) {
           x[0] += dt * in.value;
         } else {
@@ -629,21 +647,21 @@ class Engine {
         ++step;
         if (per_sample > 0 && step % per_sample == 0) {
           const double ts = static_cast<double>(step / per_sample) * sample_period_;
-          plant_.sample(ts, x, input_.at(ts));
+          sample1(ts, x, input_.at(ts));
         }
       }
       const double t = static_cast<double>(step) * dt;
       const InputValue in = input_.at(t);
       if (kinematic_) x[1] = in.value;
-      double a = plant_.applied(t, x, in);
+      double a = applied1(t, x, in);
       double f;
       if (nz_ > 0) {
         f = law_.force(std::span<const double>(z), x[1]);
       } else {
         f = law_.force(x[1], a);
       }
-      if (kinematic_) a += f;
-      const PlantSignals s = plant_.signals(t, x, in);
+      PlantSignals s = signals1(t, x, in);
+      if (kinematic_) a += f, s.drive += f;
       tr.time.push_back(static_cast<double>(k) / o_.output_rate);
       tr.position.push_back(x[0]);
       tr.velocity.push_back(x[1]);
@@ -652,6 +670,7 @@ class Engine {
       tr.current.push_back(s.current);
       tr.voltage.push_back(s.voltage);
       tr.reference.push_back(s.reference);
+      tr.drive.push_back(s.drive);
       tr.stuck.push_back(x[1] == 0.0 && !kinematic_ && !law_.is_dynamic() ? 1.0 : 0.0);
       for (int i = 0; i < nz_; ++i) tr.law_state[static_cast<std::size_t>(i)].push_back(z[static_cast<std::size_t>(i)]);
     }

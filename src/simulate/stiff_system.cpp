@@ -72,14 +72,16 @@ StiffSystem::StiffSystem(const Plant& plant, const FrictionLaw& law) : plant_(pl
   dF_.assign(nz + 1, 0.0);
   // Probe once: a plant either has an analytic Jacobian or not, whatever the state.
   std::vector<double> x(np, 0.0);
-  has_jacobian_ = !plant.kinematic() && plant.jacobian(0.0, x, InputValue{}, 0.0, dfdx_, dfdF_);
+  const InputValue u0{};
+  const double f0 = 0.0;
+  has_jacobian_ = !plant.kinematic() && plant.jacobian(0.0, x, Inputs(&u0, 1), std::span<const double>(&f0, 1), dfdx_, dfdF_);
 }
 
 void StiffSystem::rhs(double t, std::span<const double> y, const InputValue& u, std::span<double> dy) const {
   const auto np = static_cast<std::size_t>(np_), nz = static_cast<std::size_t>(nz_);
   const std::span<const double> x = y.first(np), z = y.subspan(np, nz);
   const double f = law_.force(z, x[1]);
-  plant_.derivatives(t, x, u, f, dy.first(np));
+  plant_.derivatives(t, x, Inputs(&u, 1), std::span<const double>(&f, 1), dy.first(np));
   law_.derivative(z, x[1], dy.subspan(np, nz));
 }
 
@@ -89,7 +91,8 @@ void StiffSystem::jacobian(double t, std::span<const double> y, const InputValue
   const auto np = static_cast<std::size_t>(np_), nz = static_cast<std::size_t>(nz_);
   const std::span<const double> x = y.first(np), z = y.subspan(np, nz);
   const double v = x[1];
-  plant_.jacobian(t, x, u, law_.force(z, v), dfdx_, dfdF_);
+  const double f = law_.force(z, v);
+  plant_.jacobian(t, x, Inputs(&u, 1), std::span<const double>(&f, 1), dfdx_, dfdF_);
   law_partials(law_, z, v, dh_, dF_);
   auto at = [&](int i, int j) -> double& { return jac[static_cast<std::size_t>(i + j * n)]; };
   const double dFdv = dF_[nz];

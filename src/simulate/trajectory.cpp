@@ -34,6 +34,7 @@ Trajectory& Trajectory::operator=(Trajectory&& other) noexcept {
 void Trajectory::swap(Trajectory& other) noexcept {
   using std::swap;
   for (auto column : kColumns) swap(this->*column, other.*column);
+  swap(drive, other.drive);
   swap(law_state, other.law_state);
   swap(switches, other.switches);
   swap(stats, other.stats);
@@ -41,6 +42,7 @@ void Trajectory::swap(Trajectory& other) noexcept {
 
 Trajectory::~Trajectory() {
   for (auto column : kColumns) detail::recycle_column(std::move(this->*column));
+  detail::recycle_column(std::move(drive), detail::Shelf::side);
   for (auto& c : law_state) detail::recycle_column(std::move(c));
 }
 

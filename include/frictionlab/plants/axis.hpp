@@ -15,18 +15,20 @@ struct AxisParams {
 
 /// Rigid axis (RigidAxis: `Axis` names the linear/rotary kind): applied = u(t) + offset.
 /// States: position, velocity.
-class RigidAxis : public Plant {
+class RigidAxis : public SingleContactPlant {
  public:
   /// \throws std::invalid_argument when M <= 0 or a value is not finite (message names it).
   explicit RigidAxis(AxisParams p);
   std::string type() const override { return "axis"; }
   int num_states() const override { return 2; }
-  double inertia() const override { return p_.M; }
+  double inertia(int = 0) const override { return p_.M; }
   double applied(double t, std::span<const double> x, const InputValue& u) const override;
   void derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
                    std::span<double> dx) const override;
   bool jacobian(double t, std::span<const double> x, const InputValue& u, double friction, std::span<double> dfdx,
                 std::span<double> dfdF) const override;
+  /// reference = drive = the input force u (N or N m).
+  PlantSignals signals(double t, std::span<const double> x, const InputValue& u) const override;
   const AxisParams& params() const { return p_; }
 
  private:

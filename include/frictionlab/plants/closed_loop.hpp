@@ -25,15 +25,17 @@ struct ControllerParams {
   double limit = 0.0;
 };
 
-/// Closed loop around `inner`. States: the inner plant's, then the integral of the error.
-class ClosedLoop : public Plant {
+/// Closed loop around `inner` (a 1-DOF plant). States: the inner plant's, then the integral of
+/// the error. Signals: the inner plant's at the controller output (drive: the force it commands),
+/// with reference = r.
+class ClosedLoop : public SingleContactPlant {
  public:
   /// \throws std::invalid_argument when a gain is negative or not finite, Kd != 0 in a velocity
-  ///         loop, the limit is negative, or `inner` is null or kinematic.
+  ///         loop, the limit is negative, or `inner` is null, kinematic or not 1-DOF.
   ClosedLoop(std::shared_ptr<const Plant> inner, ControllerParams c);
   std::string type() const override { return inner_->type(); }
   int num_states() const override { return n_inner_ + 1; }
-  double inertia() const override { return inner_->inertia(); }
+  double inertia(int = 0) const override { return inner_->inertia(); }
   void initial_extras(std::span<double> x) const override;
   double applied(double t, std::span<const double> x, const InputValue& r) const override;
   void derivatives(double t, std::span<const double> x, const InputValue& r, double friction,

@@ -28,14 +28,14 @@ struct DcMotorParams {
 
 /// DC motor. States: angle, speed, and in voltage mode the current (initially 0).
 /// Signals: current (A); voltage (V): the input in voltage mode, R i + Kb w in current mode
-/// (the amplifier's output without the L di/dt term).
-class DcMotor : public Plant {
+/// (the amplifier's output without the L di/dt term); drive = Kt i (N m).
+class DcMotor : public SingleContactPlant {
  public:
   /// \throws std::invalid_argument naming the first parameter out of range.
   explicit DcMotor(DcMotorParams p);
   std::string type() const override { return "dc-motor"; }
   int num_states() const override { return p_.drive == MotorDrive::voltage ? 3 : 2; }
-  double inertia() const override { return p_.J; }
+  double inertia(int = 0) const override { return p_.J; }
   double applied(double t, std::span<const double> x, const InputValue& u) const override;
   void derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
                    std::span<double> dx) const override;

@@ -11,7 +11,7 @@
 #include <memory>
 
 #include "frictionlab/plants/plant.hpp"
-#include "frictionlab/simulate/input.hpp"
+#include "frictionlab/core/input.hpp"
 
 namespace frictionlab {
 
@@ -33,15 +33,16 @@ struct EmpsPdParams {
 /// applied output (V), last computed output v(k) (V), q(k-1) (m), qf(k-1) (m), and a flag that
 /// is 1 once the first sample was taken (the memory then starts at the initial position: no
 /// velocity kick at t = 0). Signals: voltage = the last computed output v(k) (V, with pulses),
-/// the counterpart of the recorded drive input; reference = qg (m).
-class EmpsPdLoop : public Plant {
+/// the counterpart of the recorded drive input; drive = gtau v(k) (N or N m: the force the
+/// controller commands, the counterpart of a recorded force); reference = qg (m).
+class EmpsPdLoop : public SingleContactPlant {
  public:
   /// \throws std::invalid_argument when `inner` is null or kinematic, or a parameter is out of
   ///         range (the message names it, with its value and unit).
   EmpsPdLoop(std::shared_ptr<const Plant> inner, EmpsPdParams p);
   std::string type() const override { return inner_->type(); }
   int num_states() const override { return n_inner_ + 5; }
-  double inertia() const override { return inner_->inertia(); }
+  double inertia(int = 0) const override { return inner_->inertia(); }
   double applied(double t, std::span<const double> x, const InputValue& r) const override;
   void derivatives(double t, std::span<const double> x, const InputValue& r, double friction,
                    std::span<double> dx) const override;

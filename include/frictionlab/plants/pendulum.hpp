@@ -15,16 +15,18 @@ struct PendulumParams {
 };
 
 /// Pendulum: M = m l^2, applied = u - m g l sin(th) - B th'. States: angle, angular velocity.
-class Pendulum : public Plant {
+class Pendulum : public SingleContactPlant {
  public:
   /// \throws std::invalid_argument naming the first parameter out of range.
   explicit Pendulum(PendulumParams p);
   std::string type() const override { return "pendulum"; }
   int num_states() const override { return 2; }
-  double inertia() const override { return p_.m * p_.l * p_.l; }
+  double inertia(int = 0) const override { return p_.m * p_.l * p_.l; }
   double applied(double t, std::span<const double> x, const InputValue& u) const override;
   void derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
                    std::span<double> dx) const override;
+  /// reference = drive = the input torque u (N m).
+  PlantSignals signals(double t, std::span<const double> x, const InputValue& u) const override;
   /// Mechanical energy (J) of state x: kinetic + potential (zero at the hanging position).
   double energy(std::span<const double> x) const;
   const PendulumParams& params() const { return p_; }

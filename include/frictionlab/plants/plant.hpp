@@ -1,64 +1,91 @@
 #pragma once
-// What every plant provides to the simulation engine: a 1-DOF system in which one body (the
-// "friction body") rubs, with the friction force F subtracted from the net force on it
-// (M a = applied - F, the sign convention of frictionlab).
+// What every plant provides to the simulation engine: a system in which one or more bodies rub
+// ("contacts"), each with the friction force F_k subtracted from the net force on it
+// (M_k a_k = applied_k - F_k, the sign convention of frictionlab).
 //
-// State layout, shared by all plants: x[0] = position (m or rad), x[1] = velocity (m/s or rad/s),
-// x[2..] = the plant's other states (motor current, controller integrator, ...).
+// State layout: each contact names the state indices of its position (m or rad) and velocity
+// (m/s or rad/s); the other states are the plant's own (motor current, controller integrator,
+// held controller output, ...). A 1-DOF plant (SingleContactPlant, every plant but MultiAxis)
+// keeps x[0] = position, x[1] = velocity, x[2..] = its other states.
 
 #include <span>
 #include <string>
 
-#include "frictionlab/simulate/input.hpp"
+#include "frictionlab/core/input.hpp"
 
 namespace frictionlab {
 
-/// Plant signals besides the motion, recorded in a trajectory. Zero where a plant has no such
-/// signal (current and voltage of an axis).
+class FrictionLaw;  // models/friction_law.hpp
+
+/// Where one friction contact lives in the plant's state, and its law.
+struct Contact {
+  std::string name;                  ///< column prefix ("x", "y", "joint2"); "" for the one contact of a 1-DOF plant
+  int position = 0;                  ///< state index of the contact's position (m or rad)
+  int velocity = 1;                  ///< state index of its velocity (m/s or rad/s)
+  const FrictionLaw* law = nullptr;  ///< its law, owned by the plant; nullptr = the law given to simulate()
+};
+
+/// Signals of one contact besides the motion, recorded in a trajectory. Zero where a plant has no
+/// such signal (current and voltage of an axis).
 struct PlantSignals {
   double current = 0.0;    ///< motor current (A)
   double voltage = 0.0;    ///< motor terminal voltage (V)
   double reference = 0.0;  ///< the input signal: reference of a closed loop, command of an open one
                            ///< (spring-base: base position, m)
+  double drive = 0.0;      ///< force the drive or controller commands on the contact (N or N m): the
+                           ///< input force of an open axis, gtau v of the EMPS loop, Kt i of a motor
 };
 
-/// A 1-DOF plant. Implementations are immutable value-like objects, safe to share between threads.
+/// A plant with num_contacts() friction contacts. Implementations are immutable value-like
+/// objects, safe to share between threads. Spans: x has num_states() entries, u num_inputs(),
+/// friction and force num_contacts().
 class Plant {
  public:
   virtual ~Plant() = default;
 
   /// The scenario-file name of the plant type ("axis", "dc-motor", ...).
   virtual std::string type() const = 0;
-  /// Number of states (>= 2; see the layout above).
+  /// Number of states (>= 2 num_contacts()).
   virtual int num_states() const = 0;
-  /// Inertia of the friction body (kg or kg m^2), > 0 (a velocity drive may report 0).
-  virtual double inertia() const = 0;
-  /// True when the input imposes the velocity (velocity drive): x[1] = u(t), and `applied` is the
-  /// force the drive supplies. The engine then never sticks the body.
+  /// Number of inputs (>= 1). Default 1.
+  virtual int num_inputs() const { return 1; }
+  /// Number of friction contacts (>= 1). Default 1.
+  virtual int num_contacts() const { return 1; }
+  /// Contact i (0 <= i < num_contacts()). Default: the one contact of a 1-DOF plant, at x[0], x[1],
+  /// with the law given to simulate().
+  virtual Contact contact(int i) const;
+  /// Inertia of contact i's body (kg or kg m^2), > 0 (a velocity drive may report 0).
+  virtual double inertia(int contact = 0) const = 0;
+  /// True when the input imposes the velocity (velocity drive, 1-DOF only): x[1] = u(t), and
+  /// `applied` is the force the drive supplies. The engine then never sticks the body.
   virtual bool kinematic() const { return false; }
-  /// Sets the initial values of states x[2..] (x[0] and x[1] are set by the caller). Default 0.
+  /// Sets the initial values of the states that are not a contact's position or velocity (those
+  /// are set by the caller). Default 0.
   virtual void initial_extras(std::span<double> x) const;
 
-  /// Net non-friction force on the friction body (N or N m) at time t (s), state x (num_states()
-  /// entries) and input u. Friction balances it while stuck.
-  virtual double applied(double t, std::span<const double> x, const InputValue& u) const = 0;
+  /// Net non-friction force on each contact's body (N or N m) at time t (s), state x and inputs u;
+  /// friction balances it while stuck. Contract: contact i obeys M_i dv_i/dt = applied_i - F_i,
+  /// with applied_i independent of every friction force (friction enters only its own contact's
+  /// equation), so stuck contacts are decided one by one. Writes num_contacts() entries.
+  virtual void applied(double t, std::span<const double> x, Inputs u, std::span<double> force) const = 0;
 
-  /// State derivatives dx (num_states() entries) given the friction force (N or N m):
-  /// dx[0] = x[1], dx[1] = (applied - friction) / M, dx[2..] the plant's own dynamics.
-  /// No allocation (called at every integrator step).
-  virtual void derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
+  /// State derivatives dx (num_states() entries) given the friction force on every contact
+  /// (N or N m): dx[position_i] = x[velocity_i], dx[velocity_i] = (applied_i - friction_i) / M_i,
+  /// the plant's own dynamics for the other states. No allocation (called at every step).
+  virtual void derivatives(double t, std::span<const double> x, Inputs u, std::span<const double> friction,
                            std::span<double> dx) const = 0;
 
   /// Partial derivatives of derivatives() at (t, x, u, friction), for the stiff integrator's
-  /// Newton matrix: dfdx (num_states()^2 entries, row-major: dfdx[i * n + j] = d dx[i] / d x[j])
-  /// and dfdF (num_states() entries: d dx[i] / d friction). Returns false, writing nothing, when
-  /// the plant has no analytic form (default): the engine then uses difference quotients.
-  /// No allocation.
-  virtual bool jacobian(double t, std::span<const double> x, const InputValue& u, double friction,
+  /// Newton matrix: dfdx (n*n, row-major: dfdx[i * n + j] = d dx[i] / d x[j]) and dfdF
+  /// (n * num_contacts(), row-major: dfdF[i * nc + k] = d dx[i] / d F_k). Returns false, writing
+  /// nothing, when the plant has no analytic form (default): the engine then uses difference
+  /// quotients. No allocation.
+  virtual bool jacobian(double t, std::span<const double> x, Inputs u, std::span<const double> friction,
                         std::span<double> dfdx, std::span<double> dfdF) const;
 
-  /// Current, voltage and reference at (t, x, u).
-  virtual PlantSignals signals(double t, std::span<const double> x, const InputValue& u) const;
+  /// Signals of every contact (num_contacts() entries). Default: reference = input i's value
+  /// (0 beyond the inputs), the rest 0.
+  virtual void signals(double t, std::span<const double> x, Inputs u, std::span<PlantSignals> out) const;
 
   /// Sample period (s) of a discrete controller inside the plant (EmpsPdLoop); 0 = none, the
   /// plant is purely continuous (default). With a period Ts > 0 the engine stops at every
@@ -66,10 +93,67 @@ class Plant {
   /// updated state, so the held controller output is piecewise constant (zero-order hold).
   virtual double sample_period() const { return 0.0; }
 
-  /// The discrete update at a sample instant t (s): may rewrite the plant's discrete states in
-  /// x[2..] (controller memory, held output; their derivatives are 0 between samples), never
-  /// x[0] or x[1]. `u` is the input (reference) at t. Default: nothing.
+  /// The discrete update at a sample instant t (s): may rewrite the plant's discrete states in x
+  /// (controller memory, held output; their derivatives are 0 between samples), never a contact's
+  /// position or velocity. `u` are the inputs at t. Default: nothing.
+  virtual void sample(double t, std::span<double> x, Inputs u) const;
+
+  /// Number of the plant's own event functions (a compensator's switch at v = 0, an observer's
+  /// mode change). Default 0.
+  virtual int num_events() const { return 0; }
+  /// The event functions g (num_events() entries) at (t, x, u): the engine locates every sign
+  /// change of g[k] by root finding, stops there, calls on_event(k) and restarts its integrator,
+  /// so a discontinuity of the plant's right-hand side is never stepped over. Default: nothing.
+  virtual void events(double t, std::span<const double> x, Inputs u, std::span<double> g) const;
+  /// At event k (located at time t): may rewrite the plant's own discrete states in x (never a
+  /// contact's position or velocity). Default: nothing.
+  virtual void on_event(double t, std::span<double> x, Inputs u, int k) const;
+};
+
+/// Convenience base of a 1-DOF plant: one contact at x[0], x[1], one input. It implements the
+/// span-based Plant methods on top of scalar ones, so a 1-DOF plant reads as a scalar system.
+class SingleContactPlant : public Plant {
+ public:
+  /// Net non-friction force on the body (N or N m) at time t (s), state x and input u.
+  virtual double applied(double t, std::span<const double> x, const InputValue& u) const = 0;
+  /// dx (num_states() entries) given the friction force (N or N m): dx[0] = x[1],
+  /// dx[1] = (applied - friction) / M, dx[2..] the plant's own dynamics. No allocation.
+  virtual void derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
+                           std::span<double> dx) const = 0;
+  /// dfdx (n*n row-major) and dfdF (n entries); false, writing nothing, when there is no analytic
+  /// form (default).
+  virtual bool jacobian(double t, std::span<const double> x, const InputValue& u, double friction,
+                        std::span<double> dfdx, std::span<double> dfdF) const;
+  /// Current, voltage, reference and drive at (t, x, u). Default: reference = u, the rest 0.
+  virtual PlantSignals signals(double t, std::span<const double> x, const InputValue& u) const;
+  /// The discrete update at a sample instant (see Plant::sample). Default: nothing.
   virtual void sample(double t, std::span<double> x, const InputValue& u) const;
+
+  // The span-based methods, forwarding to the scalar ones with u[0] and friction[0].
+  void applied(double t, std::span<const double> x, Inputs u, std::span<double> force) const final {
+    force[0] = applied(t, x, u[0]);
+  }
+  void derivatives(double t, std::span<const double> x, Inputs u, std::span<const double> friction,
+                   std::span<double> dx) const final {
+    derivatives(t, x, u[0], friction[0], dx);
+  }
+  bool jacobian(double t, std::span<const double> x, Inputs u, std::span<const double> friction,
+                std::span<double> dfdx, std::span<double> dfdF) const final {
+    return jacobian(t, x, u[0], friction[0], dfdx, dfdF);
+  }
+  void signals(double t, std::span<const double> x, Inputs u, std::span<PlantSignals> out) const final {
+    out[0] = signals(t, x, u[0]);
+  }
+  void sample(double t, std::span<double> x, Inputs u) const final { sample(t, x, u[0]); }
+
+ protected:
+  // Scalar calls into a wrapped 1-DOF plant (the inner plant of a closed loop), whatever its class.
+  static double applied_of(const Plant& p, double t, std::span<const double> x, const InputValue& u);
+  static void derivatives_of(const Plant& p, double t, std::span<const double> x, const InputValue& u, double friction,
+                             std::span<double> dx);
+  static PlantSignals signals_of(const Plant& p, double t, std::span<const double> x, const InputValue& u);
+  /// \throws std::invalid_argument (prefixed by `who`) unless `inner` has one contact and one input.
+  static void require_single(const Plant& inner, const char* who);
 };
 
 }  // namespace frictionlab

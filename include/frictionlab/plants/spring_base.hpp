@@ -16,14 +16,15 @@ struct SpringBaseParams {
 };
 
 /// Mass-spring with moving base; the input u is an extra force on the mass (usually 0).
-/// The base position is exact (x0 + V0 t), so it needs no state. Signal `reference` = base position.
-class SpringBase : public Plant {
+/// The base position is exact (x0 + V0 t), so it needs no state. Signals: `reference` = base
+/// position (m), `drive` = the force of the spring, its damper and u on the mass (N).
+class SpringBase : public SingleContactPlant {
  public:
   /// \throws std::invalid_argument naming the first parameter out of range.
   explicit SpringBase(SpringBaseParams p);
   std::string type() const override { return "spring-base"; }
   int num_states() const override { return 2; }
-  double inertia() const override { return p_.m; }
+  double inertia(int = 0) const override { return p_.m; }
   double applied(double t, std::span<const double> x, const InputValue& u) const override;
   void derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
                    std::span<double> dx) const override;

@@ -14,19 +14,21 @@ struct VelocityDriveParams {
 };
 
 /// Kinematic plant: x[1] = u(t), x[0] = integral of u; applied = friction + M du/dt (the drive force).
-class VelocityDrive : public Plant {
+class VelocityDrive : public SingleContactPlant {
  public:
   /// \throws std::invalid_argument when M < 0.
   explicit VelocityDrive(VelocityDriveParams p);
   std::string type() const override { return "velocity-drive"; }
   int num_states() const override { return 2; }
-  double inertia() const override { return p_.M; }
+  double inertia(int = 0) const override { return p_.M; }
   bool kinematic() const override { return true; }
   /// The inertial part M du/dt only: the engine adds the friction force.
   double applied(double t, std::span<const double> x, const InputValue& u) const override;
   /// dx[0] = u, dx[1] = du/dt (friction has no effect on the motion).
   void derivatives(double t, std::span<const double> x, const InputValue& u, double friction,
                    std::span<double> dx) const override;
+  /// reference = u; drive = M du/dt (the engine adds the friction force, as to `applied`).
+  PlantSignals signals(double t, std::span<const double> x, const InputValue& u) const override;
 
  private:
   VelocityDriveParams p_;

@@ -44,6 +44,8 @@ struct Trajectory {
   std::vector<double> voltage;    ///< motor voltage (V); 0 without a motor
   std::vector<double> reference;  ///< input signal (reference of a loop, command, base position)
   std::vector<double> stuck;      ///< 1 while stuck (hybrid mode), else 0
+  /// Force the drive or controller commands (N or N m; PlantSignals::drive). Not part of the CSV.
+  std::vector<double> drive;
   /// Dynamic laws: law_state[i] is the column of internal state i (m or rad: bristle or element
   /// deflections); empty for static laws. Not part of the CSV.
   std::vector<std::vector<double>> law_state;

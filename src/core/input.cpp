@@ -1,5 +1,5 @@
 #include "frictionlab/models/parameter.hpp"
-#include "frictionlab/simulate/input.hpp"
+#include "frictionlab/core/input.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -113,7 +113,8 @@ InputValue InputSignal::at(double t) const {
     }
     case InputShape::sine: {
       const double a = omega * t + phase;
-      return {offset + amplitude * std::sin(a), amplitude * omega * std::cos(a)};
+      const double sa = std::sin(a);
+      return {offset + amplitude * sa, amplitude * omega * std::cos(a), -amplitude * omega * omega * sa};
     }
     case InputShape::table: {
       if (t <= times.front()) return {values.front(), 0.0};
