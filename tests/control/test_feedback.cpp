@@ -1,0 +1,80 @@
+// Feedback compensation: the law at the measured velocity, 0 inside the dead band, the band's
+// jumps located as events, the fixed-step form, and its error message.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "control/harness.hpp"
+#include "error_message.hpp"
+#include "frictionlab/control/feedback.hpp"
+
+namespace frictionlab {
+namespace {
+
+using testing::error_of;
+
+Stribeck stribeck() { return Stribeck{1.0, 1.5, 0.01, 2.0, 0.4}; }  // N, N, m/s, -, N s/m
+
+TEST(Feedback, LawOutsideZeroInsideTheDeadBand) {
+  const FrictionLaw law = stribeck();
+  const double db = 2e-3;  // m/s
+  const FeedbackCompensation fb(law, {.dead_band = db});
+  for (double v : {-0.3, -0.0021, 0.0021, 0.3}) EXPECT_DOUBLE_EQ(fb.force(v), law.sliding(v)) << "v " << v;
+  for (double v : {-0.0019, -1e-6, 0.0, 1e-6, 0.0019, db, -db}) EXPECT_EQ(fb.force(v), 0.0) << "v " << v;
+  // The jump at the edge is the law's full force there (about Fs here: 1.5 e^-0.04 + 0.4 * 0.002).
+  EXPECT_NEAR(fb.force(db * (1 + 1e-9)), law.sliding(db), 1e-6);
+  EXPECT_GT(fb.force(db * (1 + 1e-9)), 1.4);
+}
+
+TEST(Feedback, EventsLocateTheDeadBandEdges) {
+  // The measured velocity decelerates linearly through rest: v = 0.01 - 0.02 t (m/s).
+  const double db = 1e-3;
+  const FeedbackCompensation fb(stribeck(), {.dead_band = db});
+  const testing::InputAt at = [](double t) {
+    CompensatorInput in;
+    in.t = t;
+    in.velocity = 0.01 - 0.02 * t;
+    return in;
+  };
+  std::vector<double> z(1);
+  fb.initial_states(at(0.0), z);
+  EXPECT_EQ(z[0], 1.0);
+  const auto events = testing::run(fb, at, z, 0.0, 1.0, 100);
+  ASSERT_EQ(events.size(), 2u);
+  constexpr double kTimeTol = 1e-10;  // bisection to 1e-12 s
+  EXPECT_EQ(events[0].k, 0);
+  EXPECT_NEAR(events[0].t, (0.01 - db) / 0.02, kTimeTol);
+  EXPECT_EQ(events[1].k, 1);
+  EXPECT_NEAR(events[1].t, (0.01 + db) / 0.02, kTimeTol);
+  EXPECT_EQ(z[0], -1.0);
+  // Just past the second edge the output has the law's negative force; between them, none.
+  EXPECT_DOUBLE_EQ(fb.output(at(1.0), z), stribeck().sliding(at(1.0).velocity));
+  std::vector<double> inside{0.0};
+  EXPECT_EQ(fb.output(at(0.5), inside), 0.0);
+}
+
+TEST(Feedback, FixedStepUpdate) {
+  const FrictionLaw law = stribeck();
+  const FeedbackCompensation fb(law);
+  std::vector<double> z{0.0};
+  CompensatorInput in;
+  in.velocity = -0.02;
+  EXPECT_DOUBLE_EQ(fb.update(in, z, 1e-3), law.sliding(-0.02));
+  EXPECT_EQ(z[0], -1.0);
+  in.velocity = 5e-4;
+  EXPECT_EQ(fb.update(in, z, 1e-3), 0.0);
+  EXPECT_EQ(z[0], 0.0);
+}
+
+TEST(Feedback, RejectsABadDeadBand) {
+  EXPECT_EQ(error_of([] { FeedbackCompensation(stribeck(), {.dead_band = 0.0}); }),
+            "feedback: dead_band = 0 must be > 0 (m/s or rad/s)");
+  EXPECT_EQ(error_of([] { FeedbackCompensation(stribeck(), {.dead_band = std::nan("")}); }),
+            "feedback: dead_band = nan must be > 0 (m/s or rad/s)");
+}
+
+}  // namespace
+}  // namespace frictionlab
