@@ -20,7 +20,7 @@ void FeedbackCompensation::initial_states(const CompensatorInput& in, std::span<
 }
 
 double FeedbackCompensation::output(const CompensatorInput& in, std::span<const double> z) const {
-  return z[0] == 0.0 ? 0.0 : law_.sliding(in.velocity);
+  return detail::band_region_held(z[0], in.velocity, p_.dead_band) == 0.0 ? 0.0 : law_.sliding(in.velocity);
 }
 
 void FeedbackCompensation::events(const CompensatorInput& in, std::span<const double>, std::span<double> g) const {

@@ -26,7 +26,7 @@ void FeedforwardCompensation::initial_states(const CompensatorInput& in, std::sp
 }
 
 double FeedforwardCompensation::output(const CompensatorInput& in, std::span<const double> z) const {
-  return force_in(z[0], in.reference_rate);
+  return force_in(detail::band_region_held(z[0], in.reference_rate, p_.band), in.reference_rate);
 }
 
 void FeedforwardCompensation::events(const CompensatorInput& in, std::span<const double>, std::span<double> g) const {
@@ -35,7 +35,7 @@ void FeedforwardCompensation::events(const CompensatorInput& in, std::span<const
 }
 
 void FeedforwardCompensation::on_event(const CompensatorInput& in, std::span<double> z, int k) const {
-  z[0] = detail::band_region_after(z[0], in.reference_rate, p_.band, k);
+  z[0] = detail::band_region_after(z[0], in.reference_rate, p_.band, k, in.reference_accel);
 }
 
 bool FeedforwardCompensation::jacobian(const CompensatorInput&, std::span<const double>, std::span<double> doutput,

@@ -74,6 +74,7 @@ TEST(Feedforward, StatesAndEventsFollowTheReferenceRate) {
     CompensatorInput in;
     in.t = t;
     in.reference_rate = A * std::sin(w * t);
+    in.reference_accel = A * w * std::cos(w * t);
     return in;
   };
   std::vector<double> z(1);
@@ -100,6 +101,28 @@ TEST(Feedforward, StatesAndEventsFollowTheReferenceRate) {
     const CompensatorInput in = at(t1);
     EXPECT_NEAR(ff.output(in, z), ff.force(in.reference_rate), 1e-12) << "t " << t1;
   }
+}
+
+TEST(Feedforward, RightBeforeTheFirstEventWhenStartedWithoutTheReference) {
+  // A loop that set the states from a zero input (region 0) while the reference already moves at
+  // 3b: the output is still the law's, and the first located edge sets the region right.
+  const double b = 1e-3;
+  const FeedforwardCompensation ff(stribeck(), {.band = b});
+  const testing::InputAt at = [&](double t) {
+    CompensatorInput in;
+    in.reference_rate = 3 * b * std::cos(t);
+    in.reference_accel = -3 * b * std::sin(t);
+    return in;
+  };
+  std::vector<double> z(1);
+  ff.initial_states(CompensatorInput{}, z);
+  ASSERT_EQ(z[0], 0.0);
+  EXPECT_DOUBLE_EQ(ff.output(at(0.0), z), stribeck().sliding(3 * b));
+  const auto events = testing::run(ff, at, z, 0.0, 1.5, 300);  // vr falls through b at acos(1/3)
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_NEAR(events[0].t, std::acos(1.0 / 3.0), 1e-9);
+  EXPECT_EQ(z[0], 0.0);  // inside, and consistent with vr from here on
+  EXPECT_NEAR(ff.output(at(1.5), z), ff.force(at(1.5).reference_rate), 1e-15);
 }
 
 TEST(Feedforward, EdgesCrossedAtOnce) {

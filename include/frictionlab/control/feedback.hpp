@@ -21,7 +21,9 @@ struct FeedbackParams {
 /// Output = F(v), the law's sliding force (steady-state force for dynamic laws) at the measured
 /// velocity, for |v| >= dead_band; 0 inside the dead band (a jump at its edges, as drive firmware does).
 /// One own state, discrete: the region of v (-1 below -dead_band, 0 inside, +1 above), switched by
-/// two events, g0 = v - dead_band and g1 = v + dead_band, so the jumps are located exactly.
+/// two events, g0 = v - dead_band and g1 = v + dead_band, so the jumps are located exactly (at an
+/// event the region crosses the edge). A stored region more than 1 % of the dead band off v (a run
+/// started at another velocity than its initial states saw) gives way to the region of v itself.
 class FeedbackCompensation : public Compensator {
  public:
   /// \throws std::invalid_argument "feedback: dead_band = VALUE must be > 0 (m/s or rad/s)" when the

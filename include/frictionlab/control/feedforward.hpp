@@ -25,7 +25,10 @@ struct FeedforwardParams {
 ///   F(-b) + (F(b) - F(-b)) (dr/dt + b) / (2 b)   inside the band (continuous at +-b; the mean of
 /// the two levels at rest, 0 for a symmetric law).
 /// One own state, discrete: the band region of dr/dt (-1 below -b, 0 inside, +1 above b), switched
-/// by two events, g0 = dr/dt - b and g1 = dr/dt + b, so the kinks at +-b are located exactly.
+/// by two events, g0 = dr/dt - b and g1 = dr/dt + b, so the kinks at +-b are located exactly. At an
+/// event the region goes to the side the reference's acceleration points to (crosses the edge when
+/// it is 0). A stored region more than 1 % of b off dr/dt (a run whose start did not see the
+/// reference) gives way to the region of dr/dt itself, so the output is right before the first event.
 class FeedforwardCompensation : public Compensator {
  public:
   /// \throws std::invalid_argument "feedforward: band = VALUE must be > 0 (m/s or rad/s)" when the
