@@ -6,7 +6,6 @@
 
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/plants/axis.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
 #include "frictionlab/plants/dc_motor.hpp"
 #include "frictionlab/plants/pendulum.hpp"
 #include "frictionlab/plants/plant.hpp"
@@ -233,60 +232,6 @@ void VelocityDrive::derivatives(double, std::span<const double>, const InputValu
 
 PlantSignals VelocityDrive::signals(double, std::span<const double>, const InputValue& u) const {
   return {0.0, 0.0, u.value, p_.M * u.rate};
-}
-
-// ---- closed loop ------------------------------------------------------------------------------
-
-ClosedLoop::ClosedLoop(std::shared_ptr<const Plant> inner, ControllerParams c) : inner_(std::move(inner)), c_(c) {
-  if (!inner_) throw std::invalid_argument("controller: no plant to control");
-  if (inner_->kinematic())
-    throw std::invalid_argument("controller: cannot close a loop around a " + inner_->type() +
-                                " (its velocity is imposed); use axis or dc-motor");
-  require_single(*inner_, "controller");
-  require(std::isfinite(c.Kp) && c.Kp >= 0, "controller", "Kp", c.Kp, ">= 0");
-  require(std::isfinite(c.Ki) && c.Ki >= 0, "controller", "Ki", c.Ki, ">= 0");
-  require(std::isfinite(c.Kd) && c.Kd >= 0, "controller", "Kd", c.Kd, ">= 0");
-  if (c.loop == ControlLoop::velocity)
-    require(c.Kd == 0.0, "controller", "Kd", c.Kd, "0 in a velocity loop (it would need the acceleration)");
-  require(std::isfinite(c.limit) && c.limit >= 0, "controller", "limit", c.limit, ">= 0 (0 = no saturation)");
-  n_inner_ = inner_->num_states();
-}
-
-void ClosedLoop::initial_extras(std::span<double> x) const {
-  inner_->initial_extras(x.first(static_cast<std::size_t>(n_inner_)));
-  x[static_cast<std::size_t>(n_inner_)] = 0.0;
-}
-
-double ClosedLoop::control(std::span<const double> x, double r) const {
-  const double integral = x[static_cast<std::size_t>(n_inner_)];
-  double out;
-  if (c_.loop == ControlLoop::position) {
-    out = c_.Kp * (r - x[0]) + c_.Ki * integral - c_.Kd * x[1];
-  } else {
-    out = c_.Kp * (r - x[1]) + c_.Ki * integral;
-  }
-  if (c_.limit > 0) out = std::clamp(out, -c_.limit, c_.limit);
-  return out;
-}
-
-double ClosedLoop::applied(double t, std::span<const double> x, const InputValue& r) const {
-  const InputValue u{control(x, r.value), 0.0};
-  return applied_of(*inner_, t, x.first(static_cast<std::size_t>(n_inner_)), u);
-}
-
-void ClosedLoop::derivatives(double t, std::span<const double> x, const InputValue& r, double friction,
-                             std::span<double> dx) const {
-  const std::size_t n = static_cast<std::size_t>(n_inner_);
-  const InputValue u{control(x, r.value), 0.0};
-  derivatives_of(*inner_, t, x.first(n), u, friction, dx.first(n));
-  dx[n] = c_.loop == ControlLoop::position ? r.value - x[0] : r.value - x[1];
-}
-
-PlantSignals ClosedLoop::signals(double t, std::span<const double> x, const InputValue& r) const {
-  const InputValue u{control(x, r.value), 0.0};
-  PlantSignals s = signals_of(*inner_, t, x.first(static_cast<std::size_t>(n_inner_)), u);
-  s.reference = r.value;
-  return s;
 }
 
 }  // namespace frictionlab

@@ -54,7 +54,7 @@ class Compensator {
   virtual void initial_states(const CompensatorInput& in, std::span<double> z) const;
 
   /// The compensation force (N or N m) at `in` and states z (num_states() entries): the loop adds
-  /// it to its command.
+  /// it to its command. Never reads in.drive (the drive contains this output), nor do events().
   virtual double output(const CompensatorInput& in, std::span<const double> z) const = 0;
   /// dz/dt (num_states() entries of dz; 0 for discrete states) at `in` and z. Default: zeros.
   virtual void derivatives(const CompensatorInput& in, std::span<const double> z, std::span<double> dz) const;

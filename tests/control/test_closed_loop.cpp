@@ -1,0 +1,227 @@
+// A compensator inside a closed loop, run by the simulation engine: the Canudas de Wit et al. 1995
+// PID hunting case hunts without compensation and settles with the LuGre observer; feedforward of
+// the exact model shrinks the tracking error of a moving reference; the loop's states, events and
+// feedforward gains; and a compensator's switch located exactly by the engine.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "error_message.hpp"
+#include "frictionlab/control/feedback.hpp"
+#include "frictionlab/control/feedforward.hpp"
+#include "frictionlab/control/lugre_observer.hpp"
+#include "frictionlab/plants/axis.hpp"
+#include "frictionlab/plants/closed_loop.hpp"
+#include "frictionlab/models/viscous.hpp"
+#include "frictionlab/simulate/simulate.hpp"
+
+namespace frictionlab {
+namespace {
+
+using testing::error_of;
+
+// The 1995 paper's hunting case: unit mass, Table I LuGre friction, PID Kp = 3 N/m, Ki = 4 N/(m s),
+// Kv = 6 N s/m, a step of the reference to 1 m at t = 0.
+ControllerParams hunting_pid() {
+  ControllerParams c;
+  c.Kp = 3.0;
+  c.Ki = 4.0;
+  c.Kd = 6.0;
+  return c;
+}
+
+std::shared_ptr<const Plant> unit_mass() { return std::make_shared<const RigidAxis>(AxisParams{.M = 1.0}); }
+
+InputSignal step_to_one() {
+  InputSignal s;
+  s.shape = InputShape::step;
+  s.value = 1.0;
+  return s;
+}
+
+double late_error(const Trajectory& tr, double from, double target) {
+  double e = 0;
+  for (std::size_t i = 0; i < tr.rows(); ++i)
+    if (tr.time[i] >= from) e = std::max(e, std::abs(tr.position[i] - target));
+  return e;
+}
+
+TEST(ClosedLoopCompensation, LuGreObserverEndsTheHunting) {
+  const LuGre lugre;  // Table I
+  SimulationOptions o;
+  o.duration = 100;
+  o.output_rate = 100;
+  const Trajectory plain = simulate(ClosedLoop(unit_mass(), hunting_pid()), lugre, step_to_one(), o);
+  const auto observer = std::make_shared<const LuGreObserver>(lugre, LuGreObserverParams{.gain = 0.01});
+  const ClosedLoop compensated_loop(unit_mass(), hunting_pid(), observer);
+  const Trajectory compensated = simulate(compensated_loop, lugre, step_to_one(), o);
+  SimulationOptions fine = o;
+  fine.max_step = 1e-3;  // s
+  const Trajectory resolved = simulate(compensated_loop, lugre, step_to_one(), fine);
+  const double e_plain = late_error(plain, 50.0, 1.0), e_comp = late_error(compensated, 50.0, 1.0),
+               e_resolved = late_error(resolved, 50.0, 1.0);
+  std::printf("hunting: largest |x - 1| after 50 s: %.3g m plain, %.3g m with the LuGre observer (%.3g m with steps "
+              "<= 1 ms)\n", e_plain, e_comp, e_resolved);
+  // Without compensation the mass keeps sticking about 6.4 cm short of or past the target.
+  EXPECT_GT(e_plain, 3e-2);
+  // With the observer it settles where the friction holds about 1.499 N, just below Fs = 1.5 N: an
+  // equilibrium at the edge of breakaway, which the solver's long steps at rest nudge into slips
+  // of about 1e-4 m (1.3e-4 m here); a bound of 1e-3 m is still 60 times below the hunting.
+  EXPECT_LT(e_comp, 1e-3);
+  // With steps of at most 1 ms the same loop settles to 2e-14 m (a fixed-step RK4 of the same
+  // equations at 10 us agrees: 2e-12 m); the bound leaves room for other solver versions.
+  EXPECT_LT(e_resolved, 1e-8);
+}
+
+TEST(ClosedLoopCompensation, FeedforwardOfTheExactModelTracksASine) {
+  // r = 0.1 sin(0.5 t) m with the hunting PID, velocity and acceleration feedforward (Kvff = Kv,
+  // Kaff = M). Without compensation the body hardly leaves rest (Kp 0.1 m = 0.3 N < Fs = 1.5 N):
+  // errors of about the amplitude; with the law's steady-state force at the reference velocity
+  // added, the error over the last five periods is about 3e-4 m (the bristles' transient at each
+  // reversal).
+  const LuGre lugre;
+  ControllerParams c = hunting_pid();
+  c.Kvff = c.Kd;
+  c.Kaff = 1.0;
+  InputSignal sine;
+  sine.shape = InputShape::sine;
+  sine.amplitude = 0.1;
+  sine.omega = 0.5;
+  SimulationOptions o;
+  o.duration = 40 * M_PI;  // 10 periods
+  o.output_rate = 200;
+  auto tracking = [&](const Trajectory& tr) {
+    double e = 0;
+    for (std::size_t i = 0; i < tr.rows(); ++i)
+      if (tr.time[i] >= 20 * M_PI) e = std::max(e, std::abs(tr.position[i] - 0.1 * std::sin(0.5 * tr.time[i])));
+    return e;
+  };
+  const double e_plain = tracking(simulate(ClosedLoop(unit_mass(), c), lugre, sine, o));
+  const auto ff = std::make_shared<const FeedforwardCompensation>(lugre);
+  const double e_ff = tracking(simulate(ClosedLoop(unit_mass(), c, ff), lugre, sine, o));
+  std::printf("sine tracking: largest error over the last 5 periods %.3g m plain, %.3g m with feedforward\n", e_plain,
+              e_ff);
+  EXPECT_GT(e_plain, 5e-2);
+  EXPECT_LT(e_ff, 1e-3);
+}
+
+TEST(ClosedLoopCompensation, FeedforwardGainsTrackWithoutError) {
+  // Frictionless unit mass, r = A (1 - cos w t) (at rest at t = 0 like the body): with Kvff = Kd
+  // and Kaff = M the controller supplies exactly M d2r/dt2 and the error stays 0 to the solver's
+  // tolerance; without them it lags by decimetres (the loop's bandwidth sqrt(Kp / M) = 1.7 rad/s is
+  // below w = 2 rad/s).
+  ControllerParams c = hunting_pid();
+  InputSignal r;
+  r.shape = InputShape::sine;
+  r.amplitude = -0.2;
+  r.omega = 2.0;
+  r.phase = M_PI / 2;
+  r.offset = 0.2;  // 0.2 - 0.2 cos(2 t)
+  SimulationOptions o;
+  o.duration = 10;
+  const Viscous none{0.0};
+  auto largest_error = [&](const ControllerParams& cp) {
+    const Trajectory tr = simulate(ClosedLoop(unit_mass(), cp), none, r, o);
+    double e = 0;
+    for (std::size_t i = 0; i < tr.rows(); ++i) e = std::max(e, std::abs(tr.position[i] - tr.reference[i]));
+    return e;
+  };
+  const double e_plain = largest_error(c);
+  c.Kvff = c.Kd;
+  c.Kaff = 1.0;
+  const double e_ff = largest_error(c);
+  std::printf("feedforward gains: largest error %.3g m without, %.3g m with\n", e_plain, e_ff);
+  EXPECT_GT(e_plain, 0.05);
+  EXPECT_LT(e_ff, 1e-6);  // 3e-8 m here (rtol 1e-8 on 0.4 m of travel, accumulated); 0.39 m without
+}
+
+TEST(ClosedLoopCompensation, StatesAndEventsOfTheLoop) {
+  const LuGre lugre;
+  const ClosedLoop plain(unit_mass(), hunting_pid());
+  EXPECT_EQ(plain.num_states(), 3);
+  EXPECT_EQ(plain.num_events(), 0);
+  EXPECT_EQ(plain.compensator(), nullptr);
+  const ClosedLoop observed(unit_mass(), hunting_pid(), std::make_shared<const LuGreObserver>(lugre));
+  EXPECT_EQ(observed.num_states(), 4);  // x, v, integral, z^
+  EXPECT_EQ(observed.num_events(), 0);
+  const ClosedLoop fed(unit_mass(), hunting_pid(), std::make_shared<const FeedforwardCompensation>(lugre));
+  EXPECT_EQ(fed.num_states(), 4);  // x, v, integral, band region
+  ASSERT_EQ(fed.num_events(), 2);
+  // The events are the compensator's, at the reference velocity: g = dr/dt -+ b.
+  const std::vector<double> x{0.0, 0.0, 0.0, 0.0};
+  const InputValue r{0.5, 0.004, 0.0};
+  std::vector<double> g(2);
+  fed.events(0.0, x, Inputs(&r, 1), g);
+  EXPECT_DOUBLE_EQ(g[0], 0.004 - 1e-3);
+  EXPECT_DOUBLE_EQ(g[1], 0.004 + 1e-3);
+  // The compensation is the law at dr/dt and adds to the PID before the limit.
+  EXPECT_DOUBLE_EQ(fed.compensation(0.0, x, r), FrictionLaw(lugre).sliding(0.004));
+  EXPECT_DOUBLE_EQ(fed.control(0.0, x, r), 3.0 * 0.5 + FrictionLaw(lugre).sliding(0.004));
+  ControllerParams limited = hunting_pid();
+  limited.limit = 2.0;
+  const ClosedLoop capped(unit_mass(), limited, std::make_shared<const FeedforwardCompensation>(lugre));
+  EXPECT_EQ(capped.control(0.0, x, r), 2.0);  // 1.5 N of PID + ~1.4 N of compensation, cut to 2 N
+}
+
+TEST(ClosedLoopCompensation, RejectsBadGains) {
+  ControllerParams c = hunting_pid();
+  c.Kvff = -1.0;
+  EXPECT_EQ(error_of([&] { ClosedLoop(unit_mass(), c); }),
+            "controller: Kvff = -1 must be >= 0 (output unit per m/s or rad/s)");
+  c = hunting_pid();
+  c.Kaff = std::nan("");
+  EXPECT_EQ(error_of([&] { ClosedLoop(unit_mass(), c); }),
+            "controller: Kaff = nan must be >= 0 (output unit per m/s^2 or rad/s^2)");
+  c = hunting_pid();
+  c.compensation_gain = 0.0;
+  EXPECT_EQ(error_of([&] { ClosedLoop(unit_mass(), c); }),
+            "controller: compensation_gain = 0 must be > 0 (plant input unit per N or N m of compensation)");
+}
+
+// A feedback compensation that records where the engine reports its switches.
+class RecordingFeedback : public FeedbackCompensation {
+ public:
+  struct Switch {
+    double t, v, region;
+  };
+  using FeedbackCompensation::FeedbackCompensation;
+  void on_event(const CompensatorInput& in, std::span<double> z, int k) const override {
+    FeedbackCompensation::on_event(in, z, k);
+    switches_->push_back({in.t, in.velocity, z[0]});
+  }
+  std::shared_ptr<std::vector<Switch>> switches_ = std::make_shared<std::vector<Switch>>();
+};
+
+// DISABLED until the engine runs the plant's event functions (Plant::num_events; the plant API
+// commit declares them, the engine's next change calls them): enable it then.
+TEST(ClosedLoopCompensation, DISABLED_EngineLocatesTheCompensatorsSwitch) {
+  // The hunting loop's first slip with feedback compensation (dead band 0.02 m/s): the velocity
+  // rises through +0.02 m/s and falls back through it; each switch of the compensation (a jump of
+  // about 1 N) is located where v = 0.02 m/s, not stepped over.
+  const LuGre lugre;
+  const double db = 0.02;  // m/s
+  const auto fb = std::make_shared<const RecordingFeedback>(lugre, FeedbackParams{.dead_band = db});
+  SimulationOptions o;
+  o.duration = 5;
+  const Trajectory tr = simulate(ClosedLoop(unit_mass(), hunting_pid(), fb), lugre, step_to_one(), o);
+  ASSERT_GE(fb->switches_->size(), 2u);
+  // CVODE places a root to about 1e-12 s of time here; times an acceleration of ~1 m/s^2.
+  constexpr double kEdgeTol = 1e-9;  // m/s
+  const auto& first = (*fb->switches_)[0];
+  EXPECT_NEAR(first.v, db, kEdgeTol);
+  EXPECT_EQ(first.region, 1.0);  // entering the compensated region
+  const auto& second = (*fb->switches_)[1];
+  EXPECT_NEAR(second.v, db, kEdgeTol);
+  EXPECT_EQ(second.region, 0.0);  // leaving it
+  EXPECT_GT(second.t, first.t);
+  std::printf("feedback switches at t = %.9f s and %.9f s, v - db = %.2g and %.2g m/s\n", first.t, second.t,
+              first.v - db, second.v - db);
+}
+
+}  // namespace
+}  // namespace frictionlab
