@@ -21,10 +21,12 @@
 
 #include "frictionlab/models/friction_law.hpp"
 #include "frictionlab/plants/plant.hpp"
-#include "frictionlab/simulate/input.hpp"
+#include "frictionlab/core/input.hpp"
 #include "frictionlab/simulate/options.hpp"
 #include "frictionlab/simulate/scenario.hpp"
 #include "frictionlab/simulate/trajectory.hpp"
+
+#include <span>
 
 namespace frictionlab {
 
@@ -35,12 +37,28 @@ namespace frictionlab {
 ///         naming the option and its value;
 ///         std::runtime_error when the integrator fails ("simulation failed at t = T s: REASON");
 ///         nothing partial is returned.
+///         std::invalid_argument too when the plant takes more than one input.
 Trajectory simulate(const Plant& plant, const FrictionLaw& law, const InputSignal& input,
                     const SimulationOptions& options);
 
-/// simulate(*scenario.plant, scenario.law, scenario.input, scenario.options).
-/// \throws std::invalid_argument when scenario.plant is null, and what the other form throws.
+/// Simulates `plant` driven by `inputs` (one per plant input, Plant::num_inputs()); `law` is the
+/// friction of every contact whose Contact::law is null. Each contact has its own mode (stuck,
+/// sliding) and switches; ModeSwitch::contact says which switched.
+/// \throws what the one-input form throws, and std::invalid_argument naming the plant type and
+///         both counts when inputs.size() != plant.num_inputs(), or when the plant's contacts are
+///         malformed (a state index out of range or shared, an unnamed contact among several).
+Trajectory simulate(const Plant& plant, const FrictionLaw& law, std::span<const InputSignal> inputs,
+                    const SimulationOptions& options);
+
+/// simulate(*scenario.plant, scenario.law, inputs, scenario.options) with inputs = {scenario.input}
+/// for a one-input plant (or scenario.inputs when it has one entry), scenario.inputs otherwise.
+/// \throws std::invalid_argument when scenario.plant is null, when scenario.inputs does not have
+///         the plant's input count, and what the other forms throw.
 Trajectory simulate(const Scenario& scenario);
+
+/// The solver mode for several contacts' laws: automatic gives hybrid when any law has stiction,
+/// else stiff; an explicit mode must fit every law (as resolve_solver_mode(law, requested)).
+SolverMode resolve_solver_mode(std::span<const FrictionLaw* const> laws, SolverMode requested);
 
 /// The solver mode `automatic` resolves to for `law` (hybrid, stiff), or `requested` itself after
 /// checking it fits. \throws std::invalid_argument when it does not (hybrid with a dynamic law,
