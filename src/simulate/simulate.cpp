@@ -144,7 +144,7 @@ class Engine {
   // were checked by the caller.
   Engine(const Plant& plant, const FrictionLaw& law, std::span<const FrictionLaw* const> laws,
          std::span<const InputSignal> inputs, const SimulationOptions& o, SolverMode mode)
-      : plant_(plant), inputs_(inputs), o_(o), mode_(mode) {
+      : plant_(plant), single_(dynamic_cast<const SingleContactPlant*>(&plant)), inputs_(inputs), o_(o), mode_(mode) {
     np_ = plant.num_states();
     nc_ = plant.num_contacts();
     ne_ = plant.num_events();
@@ -241,7 +241,36 @@ class Engine {
   // ---- physics -------------------------------------------------------------------------------
 
   void eval_inputs(double t) {
+    if (u_.size() == 1) {
+      u_[0] = inputs_[0].at(t);
+      return;
+    }
     for (std::size_t i = 0; i < u_.size(); ++i) u_[i] = inputs_[i].at(t);
+  }
+
+  // The plant's methods at the evaluated inputs u_. A 1-DOF plant is called through its scalar
+  // methods: one virtual call per evaluation instead of two (the span forwarders), on the
+  // engine's hottest path.
+  void plant_applied(double t, std::span<const double> x) {
+    if (single_) {
+      force_[0] = single_->applied(t, x, u_[0]);
+    } else {
+      plant_.applied(t, x, u_, force_);
+    }
+  }
+  void plant_derivatives(double t, std::span<const double> x, std::span<double> dx) {
+    if (single_) {
+      single_->derivatives(t, x, u_[0], friction_[0], dx);
+    } else {
+      plant_.derivatives(t, x, u_, friction_, dx);
+    }
+  }
+  void plant_signals(double t, std::span<const double> x) {
+    if (single_) {
+      signals_[0] = single_->signals(t, x, u_[0]);
+    } else {
+      plant_.signals(t, x, u_, signals_);
+    }
   }
 
   void set_mode(Body& b, Mode m) {
@@ -291,9 +320,9 @@ class Engine {
     eval_inputs(t);
     const auto x = effective_state(y);
     std::span<double> dx(dy, static_cast<std::size_t>(np_));
-    if (stuck_count_ > 0) plant_.applied(t, x, u_, force_);
+    if (stuck_count_ > 0) plant_applied(t, x);
     for (std::size_t k = 0; k < bodies_.size(); ++k) friction_[k] = friction_of(bodies_[k], x, y);
-    plant_.derivatives(t, x, u_, friction_, dx);
+    plant_derivatives(t, x, dx);
     for (const Body& b : bodies_) {
       if (b.mode == Mode::stuck) {
         dx[static_cast<std::size_t>(b.pos)] = 0.0;
@@ -311,7 +340,7 @@ class Engine {
     eval_inputs(t);
     const auto x = effective_state(y);
     if (hybrid_) {
-      if (stuck_count_ > 0) plant_.applied(t, x, u_, force_);
+      if (stuck_count_ > 0) plant_applied(t, x);
       for (std::size_t k = 0; k < bodies_.size(); ++k) {
         const Body& b = bodies_[k];
         if (b.mode == Mode::stuck) {
@@ -362,12 +391,14 @@ class Engine {
     }
   }
 
-  // One output row from the integrator state y at time t.
-  void record(Trajectory& tr, double t, const double* y) {
+  // One output row from the integrator state y at time t. Flattened (every call it makes that can
+  // be inlined is): it runs once per output row, and the compiler otherwise leaves each column's
+  // push_back and the input's evaluation as calls.
+  [[gnu::flatten]] void record(Trajectory& tr, double t, const double* y) {
     eval_inputs(t);
     const auto x = effective_state(y);
-    plant_.applied(t, x, u_, force_);
-    plant_.signals(t, x, u_, signals_);
+    plant_applied(t, x);
+    plant_signals(t, x);
     tr.time.push_back(t);
     for (std::size_t k = 0; k < bodies_.size(); ++k) {
       const Body& b = bodies_[k];
@@ -415,7 +446,7 @@ class Engine {
     const auto x = effective_state(y);
     if (x.data() != scratch_.data()) std::copy(x.begin(), x.end(), scratch_.begin());
     scratch_[static_cast<std::size_t>(bodies_[k].vel)] = 0.0;
-    plant_.applied(t, std::span<const double>(scratch_.data(), static_cast<std::size_t>(np_)), u_, force_);
+    plant_applied(t, std::span<const double>(scratch_.data(), static_cast<std::size_t>(np_)));
     return force_[k];
   }
 
@@ -770,7 +801,7 @@ class Engine {
         const double t = static_cast<double>(step) * dt;
         eval_inputs(t);
         if (kinematic_) x[1] = u_[0].value;
-        if (any_static) plant_.applied(t, x, u_, force_);
+        if (any_static) plant_applied(t, x);
         for (std::size_t c = 0; c < bodies_.size(); ++c) {
           const Body& b = bodies_[c];
           const double v = x[static_cast<std::size_t>(b.vel)];
@@ -781,7 +812,7 @@ class Engine {
             friction_[c] = b.law->force(v, force_[c]);  // stiction only at v == 0 exactly (or in Karnopp's band)
           }
         }
-        plant_.derivatives(t, x, u_, friction_, dx);
+        plant_derivatives(t, x, dx);
         for (const Body& b : bodies_) {
           const auto p = static_cast<std::size_t>(b.pos), v = static_cast<std::size_t>(b.vel);
           if (kinematic_) {
@@ -807,8 +838,8 @@ class Engine {
       const double t = static_cast<double>(step) * dt;
       eval_inputs(t);
       if (kinematic_) x[1] = u_[0].value;
-      plant_.applied(t, x, u_, force_);
-      plant_.signals(t, x, u_, signals_);
+      plant_applied(t, x);
+      plant_signals(t, x);
       tr.time.push_back(static_cast<double>(k) / o_.output_rate);
       for (std::size_t c = 0; c < bodies_.size(); ++c) {
         const Body& b = bodies_[c];
@@ -827,6 +858,7 @@ class Engine {
   }
 
   const Plant& plant_;
+  const SingleContactPlant* single_;  // the plant as a 1-DOF one, or null
   std::span<const InputSignal> inputs_;
   const SimulationOptions& o_;
   SolverMode mode_;

@@ -14,10 +14,19 @@
 //    otherwise it slides on in the direction of applied (reversal).
 //  After every switch (and at every corner of the input) CVODE is re-initialised from the exact
 //  state, so there is no creep, no chatter, and no tiny steps near v = 0.
+// Several contacts (Plant::num_contacts() > 1): each contact has its own mode, frozen position
+// and pair of root functions (2 per contact), and its own law (Contact::law, else the law given
+// to simulate()). By the plant's contract a contact's applied force does not depend on any
+// friction force, so each stuck contact is decided from its own applied force, alone. Dynamic
+// laws' states follow the plant's states, contact by contact.
+// The plant's own event functions (Plant::events) are root functions too: at a root the engine
+// calls Plant::on_event, decides the stuck contacts again (their applied force may have jumped),
+// records a PlantEvent and restarts CVODE.
 // Continuous static laws and dynamic laws: CVODE BDF with dense Newton; with a dynamic law and a
 // plant that has an analytic Jacobian the exact Newton matrix (StiffSystem), refreshed at every
 // update, else difference quotients. Output rows inside a step come from the step's polynomial.
-// Fixed-step mode: see SolverMode::fixed_step.
+// Fixed-step mode: see SolverMode::fixed_step; each contact steps with its own law, and a plant
+// event fires (on_event) at the first step after its function changed sign.
 
 #include "frictionlab/models/friction_law.hpp"
 #include "frictionlab/plants/plant.hpp"
