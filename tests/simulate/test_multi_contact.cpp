@@ -341,6 +341,29 @@ TEST(MultiContact, PlantEventFunctionIsLocatedAndFlipsTheForce) {
   }
 }
 
+// (c) The same event without stiction: a viscous law runs stiff (no contact root functions, and
+// no rows read from the step's polynomial past an event), and the event is located all the same.
+TEST(MultiContact, PlantEventIsLocatedInAStiffRunToo) {
+  const double Fv = 0.7, F0 = SwitchedForce::kF0;  // N s/m, N; unit mass
+  SimulationOptions o;
+  o.duration = 2.0;
+  o.rtol = 1e-10;
+  o.atol = 1e-12;
+  const Trajectory tr = simulate(SwitchedForce{}, Viscous{Fv}, InputSignal{}, o);
+  EXPECT_STREQ(tr.stats.solver, "stiff");
+  // x(t) = (F0/Fv) (t - (1 - exp(-Fv t)) / Fv) reaches 0.5 at the root of x(t) - 0.5 (Newton).
+  auto x = [&](double t) { return F0 / Fv * (t - (1 - std::exp(-Fv * t)) / Fv); };
+  auto v = [&](double t) { return F0 / Fv * (1 - std::exp(-Fv * t)); };
+  double t1 = 1.0;
+  for (int i = 0; i < 50; ++i) t1 -= (x(t1) - 0.5) / v(t1);
+  ASSERT_FALSE(tr.plant_events.empty());
+  constexpr double kEventTimeTol = 1e-9;  // s; as above
+  EXPECT_NEAR(tr.plant_events[0].time, t1, kEventTimeTol);
+  // After the event the force is -F0: the velocity falls faster than viscous decay alone.
+  const std::size_t r = static_cast<std::size_t>(std::ceil((t1 + 0.1) * o.output_rate));
+  EXPECT_EQ(tr.applied[r], -F0);
+}
+
 // (d) Input counts are checked, naming the plant type and both counts.
 TEST(MultiContact, InputCountErrorsNameThePlantAndTheCounts) {
   const MultiAxis plant(same_axes(3, 1.0));
