@@ -240,7 +240,7 @@ class Engine {
 
   // ---- physics -------------------------------------------------------------------------------
 
-  void eval_inputs(double t) {
+  [[gnu::always_inline]] void eval_inputs(double t) {
     if (u_.size() == 1) {
       u_[0] = inputs_[0].at(t);
       return;
@@ -251,21 +251,21 @@ class Engine {
   // The plant's methods at the evaluated inputs u_. A 1-DOF plant is called through its scalar
   // methods: one virtual call per evaluation instead of two (the span forwarders), on the
   // engine's hottest path.
-  void plant_applied(double t, std::span<const double> x) {
+  [[gnu::always_inline]] void plant_applied(double t, std::span<const double> x) {
     if (single_) {
       force_[0] = single_->applied(t, x, u_[0]);
     } else {
       plant_.applied(t, x, u_, force_);
     }
   }
-  void plant_derivatives(double t, std::span<const double> x, std::span<double> dx) {
+  [[gnu::always_inline]] void plant_derivatives(double t, std::span<const double> x, std::span<double> dx) {
     if (single_) {
       single_->derivatives(t, x, u_[0], friction_[0], dx);
     } else {
       plant_.derivatives(t, x, u_, friction_, dx);
     }
   }
-  void plant_signals(double t, std::span<const double> x) {
+  [[gnu::always_inline]] void plant_signals(double t, std::span<const double> x) {
     if (single_) {
       signals_[0] = single_->signals(t, x, u_[0]);
     } else {
@@ -289,7 +289,7 @@ class Engine {
 
   // The effective plant state: y itself, or a copy in scratch_ with the frozen positions and zero
   // velocities of stuck bodies, or the imposed velocity of a velocity drive. Inputs evaluated.
-  std::span<const double> effective_state(const double* y) {
+  [[gnu::always_inline]] std::span<const double> effective_state(const double* y) {
     if (stuck_count_ == 0 && !kinematic_) return {y, static_cast<std::size_t>(np_)};
     std::copy(y, y + n_, scratch_.begin());
     if (stuck_count_ > 0)
@@ -304,7 +304,7 @@ class Engine {
 
   // Friction on body b at effective state x (y for law states); force_ holds the applied forces
   // when a body is stuck.
-  double friction_of(const Body& b, std::span<const double> x, const double* y) const {
+  [[gnu::always_inline]] double friction_of(const Body& b, std::span<const double> x, const double* y) const {
     const double v = x[static_cast<std::size_t>(b.vel)];
     switch (b.mode) {
       case Mode::stuck: return force_[static_cast<std::size_t>(&b - bodies_.data())];
