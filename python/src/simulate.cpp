@@ -46,7 +46,7 @@ YAML::Node to_yaml(const py::handle& x, const std::string& where) {
 
 py::dict trajectory_dict(const Trajectory& tr) {
   py::dict d;
-  for (const auto& n : Trajectory::column_names()) d[py::str(n)] = to_array(tr.column(n));
+  for (const auto& n : tr.names()) d[py::str(n)] = to_array(tr.column(n));
   return d;
 }
 
@@ -91,6 +91,7 @@ A simulation problem: plant, friction law, input and options, read from a scenar
 Sampled simulation result, a read-only mapping of column name to numpy array:
 time (s), position (m or rad), velocity (m/s or rad/s), friction (N or N m), applied (N or N m,
 net non-friction force), current (A), voltage (V), reference (input signal), stuck (1 while stuck).
+A plant with several contacts names them by contact: x.position, x.velocity, ..., x.drive, y.position, ...
 dict(trajectory) gives the columns; also law_state, switches, stats, to_csv().)doc")
       .def("__getitem__", [](const Trajectory& t, const std::string& name) {
         try {
@@ -100,12 +101,12 @@ dict(trajectory) gives the columns; also law_state, switches, stats, to_csv().)d
         }
       })
       .def("__len__", [](const Trajectory& t) { return t.rows(); })
-      .def("__iter__", [](const Trajectory&) { return py::iter(py::cast(Trajectory::column_names())); })
-      .def("__contains__", [](const Trajectory&, const std::string& n) {
-        const auto& names = Trajectory::column_names();
+      .def("__iter__", [](const Trajectory& t) { return py::iter(py::cast(t.names())); })
+      .def("__contains__", [](const Trajectory& t, const std::string& n) {
+        const auto names = t.names();
         return std::find(names.begin(), names.end(), n) != names.end();
       })
-      .def("keys", [](const Trajectory&) { return Trajectory::column_names(); }, "Column names in CSV order.")
+      .def("keys", [](const Trajectory& t) { return t.names(); }, "Column names in CSV order.")
       .def("to_dict", &trajectory_dict, "The columns as a dict of numpy arrays.")
       .def_property_readonly("rows", &Trajectory::rows, "Number of samples.")
       .def_property_readonly("law_state", [](const Trajectory& t) {
@@ -124,10 +125,11 @@ dict(trajectory) gives the columns; also law_state, switches, stats, to_csv().)d
           d["position"] = s.position;
           d["applied"] = s.applied;
           d["direction"] = s.direction;
+          d["contact"] = s.contact;
           l.append(d);
         }
         return l;
-      }, "Mode switches of the hybrid solver: dicts {time (s), kind ('breakaway'|'stick'|'reversal'), position, applied (N or N m), direction}.")
+      }, "Mode switches of the hybrid solver: dicts {time (s), kind ('breakaway'|'stick'|'reversal'), position, applied (N or N m), direction, contact (index)}.")
       .def_property_readonly("stats", [](const Trajectory& t) {
         py::dict d;
         d["steps"] = t.stats.steps;

@@ -180,7 +180,8 @@ bool SpringBase::jacobian(double, std::span<const double>, const InputValue&, do
 }
 
 PlantSignals SpringBase::signals(double t, std::span<const double> x, const InputValue& u) const {
-  return {0.0, 0.0, p_.x0 + p_.V0 * t, applied(t, x, u)};
+  const double base = p_.x0 + p_.V0 * t;
+  return {0.0, 0.0, base, u.value - p_.k * (x[0] - base) - p_.c * (x[1] - p_.V0)};
 }
 
 // ---- DC motor ---------------------------------------------------------------------------------

@@ -74,6 +74,10 @@ void check_options(const SimulationOptions& o, SolverMode mode) {
   if (!std::isfinite(o.initial_position) || !std::isfinite(o.initial_velocity))
     throw std::invalid_argument("simulation option initial position/velocity must be finite, got " +
                                 detail::format_value(o.initial_position) + ", " + detail::format_value(o.initial_velocity));
+  for (const auto* list : {&o.initial_positions, &o.initial_velocities})
+    for (double v : *list)
+      if (!std::isfinite(v))
+        throw std::invalid_argument("simulation option initial_positions/initial_velocities must be finite, got " + detail::format_value(v));
   if (mode == SolverMode::fixed_step) {
     positive("dt", o.dt, "s");
     const double ratio = 1.0 / (o.output_rate * o.dt);
@@ -136,21 +140,56 @@ struct Sundials {
 
 class Engine {
  public:
-  Engine(const Plant& plant, const FrictionLaw& law, const InputSignal& input, const SimulationOptions& o,
-         SolverMode mode)
-      : plant_(plant), law_(law), input_(input), o_(o), mode_(mode) {
+  // `laws[k]` is contact k's law (never null: its Contact::law or `law`); the plant's contacts
+  // were checked by the caller.
+  Engine(const Plant& plant, const FrictionLaw& law, std::span<const FrictionLaw* const> laws,
+         std::span<const InputSignal> inputs, const SimulationOptions& o, SolverMode mode)
+      : plant_(plant), single_(dynamic_cast<const SingleContactPlant*>(&plant)), inputs_(inputs), o_(o), mode_(mode) {
     np_ = plant.num_states();
-    nz_ = law.is_dynamic() ? law.num_states() : 0;
-    n_ = np_ + nz_;
-    fbp_ = law.is_dynamic() ? 0.0 : law.breakaway_positive();
-    fbn_ = law.is_dynamic() ? 0.0 : law.breakaway_negative();
+    nc_ = plant.num_contacts();
+    ne_ = plant.num_events();
+    kinematic_ = plant.kinematic();
+    int z = np_;
+    bool all_dynamic = true;
+    for (int k = 0; k < nc_; ++k) {
+      const Contact c = plant.contact(k);
+      Body b;
+      b.law = laws[static_cast<std::size_t>(k)];
+      b.pos = c.position;
+      b.vel = c.velocity;
+      const bool dynamic = b.law->is_dynamic();
+      all_dynamic = all_dynamic && dynamic;
+      b.nz = dynamic ? b.law->num_states() : 0;
+      b.z = z;
+      z += b.nz;
+      b.fbp = dynamic ? 0.0 : b.law->breakaway_positive();
+      b.fbn = dynamic ? 0.0 : b.law->breakaway_negative();
+      // Hybrid modes only where stiction exists and the velocity is not imposed.
+      b.hybrid = mode == SolverMode::hybrid && has_stiction(*b.law) && !kinematic_;
+      hybrid_ = hybrid_ || b.hybrid;
+      bodies_.push_back(b);
+    }
+    n_ = z;
+    nz_ = n_ - np_;
+    nroots_ = (hybrid_ ? 2 * nc_ : 0) + ne_;
     scratch_.assign(static_cast<std::size_t>(n_), 0.0);
     y_row_.assign(static_cast<std::size_t>(n_), 0.0);
-    // Hybrid modes only where stiction exists and the velocity is not imposed.
-    kinematic_ = plant.kinematic();
-    hybrid_ = mode == SolverMode::hybrid && has_stiction(law) && !kinematic_;
+    u_.assign(inputs.size(), InputValue{});
+    force_.assign(static_cast<std::size_t>(nc_), 0.0);
+    friction_.assign(static_cast<std::size_t>(nc_), 0.0);
+    signals_.assign(static_cast<std::size_t>(nc_), PlantSignals{});
+    found_.assign(static_cast<std::size_t>(std::max(nroots_, 1)), 0);
+    g_prev_.assign(static_cast<std::size_t>(ne_), 0.0);
+    g_now_.assign(static_cast<std::size_t>(ne_), 0.0);
+    // The states that are no contact's position or velocity (integrated by explicit Euler in
+    // fixed-step mode).
+    for (int i = 0; i < np_; ++i) {
+      bool motion = false;
+      for (const Body& b : bodies_) motion = motion || b.pos == i || b.vel == i;
+      if (!motion) extras_.push_back(i);
+    }
     sample_period_ = plant.sample_period();
-    if (nz_ > 0 && mode != SolverMode::fixed_step) {
+    if (nz_ > 0 && all_dynamic && mode != SolverMode::fixed_step) {
       system_.emplace(plant, law);
       if (!system_->has_jacobian()) system_.reset();
     }
@@ -160,12 +199,17 @@ class Engine {
     Trajectory tr;
     const std::size_t rows = last_row(o_) + 1;
     // Columns come from this thread's pool of recycled ones (see column_pool.hpp).
-    for (auto* c : {&tr.time, &tr.position, &tr.velocity, &tr.friction, &tr.applied, &tr.current, &tr.voltage,
-                    &tr.reference, &tr.stuck})
-      *c = detail::take_column(rows);
-    tr.drive = detail::take_column(rows, detail::Shelf::side);
-    tr.law_state.resize(static_cast<std::size_t>(nz_));
-    for (auto& c : tr.law_state) c = detail::take_column(rows);
+    tr.time = detail::take_column(rows);
+    tr.others.resize(static_cast<std::size_t>(nc_ - 1));
+    for (int k = 0; k < nc_; ++k) {
+      ContactColumns& c = column_set(tr, k);
+      for (auto* col : {&c.position, &c.velocity, &c.friction, &c.applied, &c.current, &c.voltage, &c.reference, &c.stuck})
+        *col = detail::take_column(rows);
+      c.drive = detail::take_column(rows, k == 0 ? detail::Shelf::side : detail::Shelf::main);
+      c.law_state.resize(static_cast<std::size_t>(bodies_[static_cast<std::size_t>(k)].nz));
+      for (auto& col : c.law_state) col = detail::take_column(rows);
+      tr.contact_names.push_back(plant_.contact(k).name);
+    }
     if (mode_ == SolverMode::fixed_step) {
       run_fixed(tr, rows);
       tr.stats.solver = "fixed-step";
@@ -179,87 +223,136 @@ class Engine {
  private:
   enum class Mode { free, stuck, slide_pos, slide_neg };
 
+  // One friction contact: where it lives in y, its law and its hybrid mode.
+  struct Body {
+    const FrictionLaw* law = nullptr;
+    int pos = 0, vel = 1;  // state indices
+    int z = 0, nz = 0;     // its law states y[z .. z + nz)
+    double fbp = 0.0, fbn = 0.0;  // breakaway levels (static laws)
+    bool hybrid = false;   // has stuck/sliding modes
+    Mode mode = Mode::free;
+    double stuck_position = 0.0;
+  };
+
+  static ContactColumns& column_set(Trajectory& tr, int k) {
+    return k == 0 ? static_cast<ContactColumns&>(tr) : tr.others[static_cast<std::size_t>(k - 1)];
+  }
+
   // ---- physics -------------------------------------------------------------------------------
 
-  // One-contact calls of the plant's span-based interface.
-  double applied1(double t, std::span<const double> x, const InputValue& in) const {
-    double f = 0.0;
-    plant_.applied(t, x, Inputs(&in, 1), std::span<double>(&f, 1));
-    return f;
-  }
-  void deriv1(double t, std::span<const double> x, const InputValue& in, double friction, std::span<double> dx) const {
-    plant_.derivatives(t, x, Inputs(&in, 1), std::span<const double>(&friction, 1), dx);
-  }
-  PlantSignals signals1(double t, std::span<const double> x, const InputValue& in) const {
-    PlantSignals s;
-    plant_.signals(t, x, Inputs(&in, 1), std::span<PlantSignals>(&s, 1));
-    return s;
-  }
-  void sample1(double t, std::span<double> x, const InputValue& in) const { plant_.sample(t, x, Inputs(&in, 1)); }
-
-  // Sliding force in direction s, with the one-sided limit at v -> 0 from that side when v has
-  // not (or no longer) the sign s: keeps the right-hand side smooth over the step that finds v = 0.
-  double slide_force(double v, int s) const {
-    if (v * s > 0) return law_.sliding(v);
-    // 1e-300 is far below any velocity scale (vs, dv, table points), so this is the limit value.
-    return law_.sliding(s * 1e-300);
-  }
-
-  // The effective plant state: y itself, or a copy in scratch_ with the frozen position and zero
-  // velocity while stuck, or the imposed velocity of a velocity drive.
-  std::span<const double> effective_state(double t, const double* y, const InputValue& in) {
-    if (mode_now_ != Mode::stuck && !kinematic_) return {y, static_cast<std::size_t>(np_)};
-    std::copy(y, y + n_, scratch_.begin());
-    if (mode_now_ == Mode::stuck) {
-      scratch_[0] = stuck_position_;
-      scratch_[1] = 0.0;
+  [[gnu::always_inline]] void eval_inputs(double t) {
+    if (u_.size() == 1) {
+      u_[0] = inputs_[0].at(t);
+      return;
     }
-    if (kinematic_) scratch_[1] = in.value;
-    (void)t;
+    for (std::size_t i = 0; i < u_.size(); ++i) u_[i] = inputs_[i].at(t);
+  }
+
+  // The plant's methods at the evaluated inputs u_. A 1-DOF plant is called through its scalar
+  // methods: one virtual call per evaluation instead of two (the span forwarders), on the
+  // engine's hottest path.
+  [[gnu::always_inline]] void plant_applied(double t, std::span<const double> x) {
+    if (single_) {
+      force_[0] = single_->applied(t, x, u_[0]);
+    } else {
+      plant_.applied(t, x, u_, force_);
+    }
+  }
+  [[gnu::always_inline]] void plant_derivatives(double t, std::span<const double> x, std::span<double> dx) {
+    if (single_) {
+      single_->derivatives(t, x, u_[0], friction_[0], dx);
+    } else {
+      plant_.derivatives(t, x, u_, friction_, dx);
+    }
+  }
+  [[gnu::always_inline]] void plant_signals(double t, std::span<const double> x) {
+    if (single_) {
+      signals_[0] = single_->signals(t, x, u_[0]);
+    } else {
+      plant_.signals(t, x, u_, signals_);
+    }
+  }
+
+  void set_mode(Body& b, Mode m) {
+    stuck_count_ += (m == Mode::stuck) - (b.mode == Mode::stuck);
+    b.mode = m;
+  }
+
+  // Sliding force of body b in direction s, with the one-sided limit at v -> 0 from that side
+  // when v has not (or no longer) the sign s: keeps the right-hand side smooth over the step that
+  // finds v = 0.
+  static double slide_force(const Body& b, double v, int s) {
+    if (v * s > 0) return b.law->sliding(v);
+    // 1e-300 is far below any velocity scale (vs, dv, table points), so this is the limit value.
+    return b.law->sliding(s * 1e-300);
+  }
+
+  // The effective plant state: y itself, or a copy in scratch_ with the frozen positions and zero
+  // velocities of stuck bodies, or the imposed velocity of a velocity drive. Inputs evaluated.
+  [[gnu::always_inline]] std::span<const double> effective_state(const double* y) {
+    if (stuck_count_ == 0 && !kinematic_) return {y, static_cast<std::size_t>(np_)};
+    std::copy(y, y + n_, scratch_.begin());
+    if (stuck_count_ > 0)
+      for (const Body& b : bodies_)
+        if (b.mode == Mode::stuck) {
+          scratch_[static_cast<std::size_t>(b.pos)] = b.stuck_position;
+          scratch_[static_cast<std::size_t>(b.vel)] = 0.0;
+        }
+    if (kinematic_) scratch_[1] = u_[0].value;
     return {scratch_.data(), static_cast<std::size_t>(np_)};
   }
 
+  // Friction on body b at effective state x (y for law states); force_ holds the applied forces
+  // when a body is stuck.
+  [[gnu::always_inline]] double friction_of(const Body& b, std::span<const double> x, const double* y) const {
+    const double v = x[static_cast<std::size_t>(b.vel)];
+    switch (b.mode) {
+      case Mode::stuck: return force_[static_cast<std::size_t>(&b - bodies_.data())];
+      case Mode::slide_pos: return slide_force(b, v, 1);
+      case Mode::slide_neg: return slide_force(b, v, -1);
+      case Mode::free: break;
+    }
+    if (b.nz > 0) return b.law->force(std::span<const double>(y + b.z, static_cast<std::size_t>(b.nz)), v);
+    return b.law->sliding(v);
+  }
+
   void rhs(double t, const double* y, double* dy) {
-    const InputValue in = input_.at(t);
-    const auto x = effective_state(t, y, in);
+    eval_inputs(t);
+    const auto x = effective_state(y);
     std::span<double> dx(dy, static_cast<std::size_t>(np_));
-    const double v = x[1];
-    switch (mode_now_) {
-      case Mode::stuck: {
-        const double a = applied1(t, x, in);
-        deriv1(t, x, in, a, dx);
-        dx[0] = 0.0;
-        dx[1] = 0.0;
-        break;
+    if (stuck_count_ > 0) plant_applied(t, x);
+    for (std::size_t k = 0; k < bodies_.size(); ++k) friction_[k] = friction_of(bodies_[k], x, y);
+    plant_derivatives(t, x, dx);
+    for (const Body& b : bodies_) {
+      if (b.mode == Mode::stuck) {
+        dx[static_cast<std::size_t>(b.pos)] = 0.0;
+        dx[static_cast<std::size_t>(b.vel)] = 0.0;
+      } else if (b.nz > 0) {
+        b.law->derivative(std::span<const double>(y + b.z, static_cast<std::size_t>(b.nz)), x[static_cast<std::size_t>(b.vel)],
+                          std::span<double>(dy + b.z, static_cast<std::size_t>(b.nz)));
       }
-      case Mode::slide_pos:
-      case Mode::slide_neg:
-        deriv1(t, x, in, slide_force(v, mode_now_ == Mode::slide_pos ? 1 : -1), dx);
-        break;
-      case Mode::free:
-        if (nz_ > 0) {
-          std::span<const double> z(y + np_, static_cast<std::size_t>(nz_));
-          const double f = law_.force(z, v);
-          deriv1(t, x, in, f, dx);
-          law_.derivative(z, v, std::span<double>(dy + np_, static_cast<std::size_t>(nz_)));
-        } else {
-          deriv1(t, x, in, law_.sliding(v), dx);
-        }
-        break;
     }
   }
 
+  // Root functions: two per contact when any contact has hybrid modes (stuck: applied minus each
+  // breakaway level; sliding: v; no modes: constant), then the plant's own.
   void roots(double t, const double* y, double* g) {
-    const InputValue in = input_.at(t);
-    const auto x = effective_state(t, y, in);
-    if (mode_now_ == Mode::stuck) {
-      const double a = applied1(t, x, in);
-      g[0] = a - fbp_;
-      g[1] = a + fbn_;
-    } else {
-      g[0] = y[1];
-      g[1] = 1.0;  // unused in a sliding mode
+    eval_inputs(t);
+    const auto x = effective_state(y);
+    if (hybrid_) {
+      if (stuck_count_ > 0) plant_applied(t, x);
+      for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        const Body& b = bodies_[k];
+        if (b.mode == Mode::stuck) {
+          g[2 * k] = force_[k] - b.fbp;
+          g[2 * k + 1] = force_[k] + b.fbn;
+        } else {
+          g[2 * k] = b.hybrid ? x[static_cast<std::size_t>(b.vel)] : 1.0;
+          g[2 * k + 1] = 1.0;  // unused in a sliding mode
+        }
+      }
     }
+    if (ne_ > 0) plant_.events(t, x, u_, std::span<double>(g + (hybrid_ ? 2 * nc_ : 0), static_cast<std::size_t>(ne_)));
   }
 
   // An exception must not unwind through CVODE's C frames: the callbacks catch it, report an
@@ -281,12 +374,13 @@ class Engine {
   static int roots_cb(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
     return guarded(user, [&](Engine* self) { self->roots(t, N_VGetArrayPointer(y), g); });
   }
-  // The analytic Newton matrix (dense, column-major) of the free motion with a dynamic law.
+  // The analytic Newton matrix (dense, column-major) of the free motion with dynamic laws.
   static int jac_cb(sunrealtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix J, void* user, N_Vector, N_Vector,
                     N_Vector) {
     return guarded(user, [&](Engine* self) {
       const auto n = static_cast<std::size_t>(self->n_);
-      self->system_->jacobian(t, std::span<const double>(N_VGetArrayPointer(y), n), self->input_.at(t),
+      self->eval_inputs(t);
+      self->system_->jacobian(t, std::span<const double>(N_VGetArrayPointer(y), n), Inputs(self->u_),
                               std::span<double>(SM_DATA_D(J), n * n));
     });
   }
@@ -297,92 +391,122 @@ class Engine {
     }
   }
 
-  // One output row from the integrator state y at time t.
-  void record(Trajectory& tr, double t, const double* y, bool stuck_flag) {
-    const InputValue in = input_.at(t);
-    const auto x = effective_state(t, y, in);
-    double a = applied1(t, x, in);
-    double f = 0.0;
-    switch (mode_now_) {
-      case Mode::stuck: f = a; break;
-      case Mode::slide_pos: f = slide_force(x[1], 1); break;
-      case Mode::slide_neg: f = slide_force(x[1], -1); break;
-      case Mode::free:
-        f = nz_ > 0 ? law_.force(std::span<const double>(y + np_, static_cast<std::size_t>(nz_)), x[1])
-                    : law_.sliding(x[1]);
-        break;
-    }
-    PlantSignals s = signals1(t, x, in);
-    if (kinematic_) a += f, s.drive += f;  // the drive supplies the friction too
+  // One output row from the integrator state y at time t. Flattened (every call it makes that can
+  // be inlined is): it runs once per output row, and the compiler otherwise leaves each column's
+  // push_back and the input's evaluation as calls.
+  [[gnu::flatten]] void record(Trajectory& tr, double t, const double* y) {
+    eval_inputs(t);
+    const auto x = effective_state(y);
+    plant_applied(t, x);
+    plant_signals(t, x);
     tr.time.push_back(t);
-    tr.position.push_back(x[0]);
-    tr.velocity.push_back(x[1]);
-    tr.friction.push_back(f);
-    tr.applied.push_back(a);
-    tr.current.push_back(s.current);
-    tr.voltage.push_back(s.voltage);
-    tr.reference.push_back(s.reference);
-    tr.drive.push_back(s.drive);
-    tr.stuck.push_back(stuck_flag ? 1.0 : 0.0);
-    for (int i = 0; i < nz_; ++i) tr.law_state[static_cast<std::size_t>(i)].push_back(y[np_ + i]);
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+      const Body& b = bodies_[k];
+      const double f = friction_of(b, x, y);
+      double a = force_[k];
+      PlantSignals& s = signals_[k];
+      if (kinematic_) a += f, s.drive += f;  // the drive supplies the friction too
+      push_row(column_set(tr, static_cast<int>(k)), x[static_cast<std::size_t>(b.pos)], x[static_cast<std::size_t>(b.vel)], f, a,
+               s, b.mode == Mode::stuck ? 1.0 : 0.0, y + b.z, b.nz);
+    }
+  }
+
+  static void push_row(ContactColumns& c, double position, double velocity, double friction, double applied,
+                       const PlantSignals& s, double stuck, const double* z, int nz) {
+    c.position.push_back(position);
+    c.velocity.push_back(velocity);
+    c.friction.push_back(friction);
+    c.applied.push_back(applied);
+    c.current.push_back(s.current);
+    c.voltage.push_back(s.voltage);
+    c.reference.push_back(s.reference);
+    c.drive.push_back(s.drive);
+    c.stuck.push_back(stuck);
+    for (int i = 0; i < nz; ++i) c.law_state[static_cast<std::size_t>(i)].push_back(z[i]);
   }
 
   // ---- hybrid mode logic ---------------------------------------------------------------------
 
-  // The applied force at time t with y taken as a stuck state at its own position.
-  double applied_at_rest(double t, double* y) {
-    const InputValue in = input_.at(t);
-    y[1] = 0.0;
-    std::copy(y, y + n_, scratch_.begin());
-    scratch_[1] = 0.0;
-    return applied1(t, std::span<const double>(scratch_.data(), static_cast<std::size_t>(np_)), in);
+  // Pins every stuck body of y at its frozen position with zero velocity.
+  void pin_stuck(double* y) const {
+    if (stuck_count_ == 0) return;
+    for (const Body& b : bodies_)
+      if (b.mode == Mode::stuck) {
+        y[b.pos] = b.stuck_position;
+        y[b.vel] = 0.0;
+      }
   }
 
-  // Decides the mode of a body at rest at time t (start, after a stop, after an input jump).
-  // Returns the switch kind if it slides, and records it.
-  void settle_at_rest(Trajectory& tr, double t, double* y, bool from_stuck, int previous_dir) {
-    if (from_stuck) y[0] = stuck_position_;
-    const double a = applied_at_rest(t, y);
+  // The applied force on body k at time t with it at rest (y[vel] = 0, written) at its own
+  // position; the other bodies as they are (the stuck ones pinned). By the plant's contract it
+  // does not depend on any friction, so each body is decided on its own.
+  double applied_at_rest(std::size_t k, double t, double* y) {
+    eval_inputs(t);
+    y[bodies_[k].vel] = 0.0;
+    const auto x = effective_state(y);
+    if (x.data() != scratch_.data()) std::copy(x.begin(), x.end(), scratch_.begin());
+    scratch_[static_cast<std::size_t>(bodies_[k].vel)] = 0.0;
+    plant_applied(t, std::span<const double>(scratch_.data(), static_cast<std::size_t>(np_)));
+    return force_[k];
+  }
+
+  // Decides the mode of body k at rest at time t (start, after a stop, after an input jump or a
+  // controller sample), and records the switch it makes.
+  void settle_at_rest(Trajectory& tr, std::size_t k, double t, double* y, bool from_stuck, int previous_dir) {
+    Body& b = bodies_[k];
+    if (from_stuck) y[b.pos] = b.stuck_position;
+    const double a = applied_at_rest(k, t, y);
     Mode next;
-    if (a > fbp_) {
+    if (a > b.fbp) {
       next = Mode::slide_pos;
-    } else if (a < -fbn_) {
+    } else if (a < -b.fbn) {
       next = Mode::slide_neg;
     } else {
       next = Mode::stuck;
     }
-    const bool was_stuck = from_stuck;
+    const int contact = static_cast<int>(k);
     if (next == Mode::stuck) {
-      stuck_position_ = y[0];
-      if (!was_stuck && previous_dir != 0) tr.switches.push_back({t, SwitchKind::stick, y[0], a, 0});
+      b.stuck_position = y[b.pos];
+      if (!from_stuck && previous_dir != 0) tr.switches.push_back({t, SwitchKind::stick, y[b.pos], a, 0, contact});
     } else {
       const int dir = next == Mode::slide_pos ? 1 : -1;
-      if (was_stuck) {
-        y[0] = stuck_position_;
-        tr.switches.push_back({t, SwitchKind::breakaway, y[0], a, dir});
+      if (from_stuck) {
+        y[b.pos] = b.stuck_position;
+        tr.switches.push_back({t, SwitchKind::breakaway, y[b.pos], a, dir, contact});
       } else if (previous_dir != 0) {
-        tr.switches.push_back({t, SwitchKind::reversal, y[0], a, dir});
+        tr.switches.push_back({t, SwitchKind::reversal, y[b.pos], a, dir, contact});
       }
     }
-    mode_now_ = next;
+    set_mode(b, next);
+  }
+
+  // Every stuck body decided again (after an input corner, a sample or a plant event).
+  void settle_stuck(Trajectory& tr, double t, double* y) {
+    if (stuck_count_ == 0) return;
+    for (std::size_t k = 0; k < bodies_.size(); ++k)
+      if (bodies_[k].mode == Mode::stuck) settle_at_rest(tr, k, t, y, true, 0);
   }
 
   void set_root_directions() {
-    int dirs[2] = {1, -1};
-    if (mode_now_ == Mode::slide_pos) {
-      dirs[0] = -1;
-      dirs[1] = 0;
-    } else if (mode_now_ == Mode::slide_neg) {
-      dirs[0] = 1;
-      dirs[1] = 0;
+    dirs_.assign(static_cast<std::size_t>(nroots_), 0);
+    if (hybrid_) {
+      for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        int* d = dirs_.data() + 2 * k;
+        switch (bodies_[k].mode) {
+          case Mode::stuck: d[0] = 1, d[1] = -1; break;
+          case Mode::slide_pos: d[0] = -1, d[1] = 0; break;
+          case Mode::slide_neg: d[0] = 1, d[1] = 0; break;
+          case Mode::free: d[0] = 0, d[1] = 0; break;
+        }
+      }
     }
-    CVodeSetRootDirection(sd_.mem, dirs);
+    CVodeSetRootDirection(sd_.mem, dirs_.data());
   }
 
   void restart(double t) {
     accumulate_stats();
     if (CVodeReInit(sd_.mem, t, sd_.y) != CV_SUCCESS) fail(t, "CVodeReInit failed");
-    if (hybrid_) set_root_directions();
+    if (nroots_ > 0) set_root_directions();
     stop_set_ = -1.0;
     interpolant_->reset();
     ++restarts_;
@@ -400,6 +524,18 @@ class Engine {
     throw std::runtime_error("simulation failed at t = " + detail::format_value(t) + " s: " + why);
   }
 
+  // Initial state: the plant's extras, each contact's position and velocity from the options
+  // (a velocity drive: its input), law states 0.
+  void initial_state(double* y) {
+    std::fill(y, y + n_, 0.0);
+    plant_.initial_extras(std::span<double>(y, static_cast<std::size_t>(np_)));
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+      y[bodies_[k].pos] = o_.initial_positions.empty() ? o_.initial_position : o_.initial_positions[k];
+      y[bodies_[k].vel] = o_.initial_velocities.empty() ? o_.initial_velocity : o_.initial_velocities[k];
+    }
+    if (kinematic_) y[1] = inputs_[0].at(0.0).value;
+  }
+
   void run_cvode(Trajectory& tr, std::size_t rows) {
     const auto n = static_cast<sunindextype>(n_);
     sd_.y = N_VNew_Serial(n, sd_.ctx);
@@ -412,30 +548,31 @@ class Engine {
     double* y = N_VGetArrayPointer(sd_.y);
     double* atol = N_VGetArrayPointer(sd_.abstol);
 
-    // Initial state.
-    std::fill(y, y + n_, 0.0);
-    plant_.initial_extras(std::span<double>(y, static_cast<std::size_t>(np_)));
-    y[0] = o_.initial_position;
-    y[1] = kinematic_ ? input_.at(0.0).value : o_.initial_velocity;
+    initial_state(y);
     for (int i = 0; i < np_; ++i) atol[i] = o_.atol;
-    if (nz_ > 0) {
-      std::vector<double> zs(static_cast<std::size_t>(nz_));
-      law_.steady_state(1.0, zs);
+    for (const Body& b : bodies_) {
+      if (b.nz == 0) continue;
+      std::vector<double> zs(static_cast<std::size_t>(b.nz));
+      b.law->steady_state(1.0, zs);
       double scale = 0.0;
       for (double z : zs) scale = std::max(scale, std::abs(z));
       if (!(scale > 0)) scale = 1.0;
-      for (int i = np_; i < n_; ++i) atol[i] = o_.atol * scale;
+      for (int i = b.z; i < b.z + b.nz; ++i) atol[i] = o_.atol * scale;
     }
 
-    mode_now_ = Mode::free;
-    if (sample_period_ > 0) sample1(0.0, std::span<double>(y, static_cast<std::size_t>(np_)), input_.at(0.0));
-    if (hybrid_) {
-      if (o_.initial_velocity > 0) {
-        mode_now_ = Mode::slide_pos;
-      } else if (o_.initial_velocity < 0) {
-        mode_now_ = Mode::slide_neg;
+    if (sample_period_ > 0) {
+      eval_inputs(0.0);
+      plant_.sample(0.0, std::span<double>(y, static_cast<std::size_t>(np_)), u_);
+    }
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+      Body& b = bodies_[k];
+      if (!b.hybrid) continue;
+      if (y[b.vel] > 0) {
+        set_mode(b, Mode::slide_pos);
+      } else if (y[b.vel] < 0) {
+        set_mode(b, Mode::slide_neg);
       } else {
-        settle_at_rest(tr, 0.0, y, false, 0);
+        settle_at_rest(tr, k, 0.0, y, false, 0);
       }
     }
 
@@ -449,7 +586,7 @@ class Engine {
     sd_.LS = SUNLinSol_Dense(sd_.y, sd_.A, sd_.ctx);
     if (!sd_.A || !sd_.LS || CVodeSetLinearSolver(sd_.mem, sd_.LS, sd_.A) != CV_SUCCESS)
       fail(0.0, "dense linear solver: " + error_);
-    // Free motion with a dynamic law (the stiff case): exact Jacobian instead of n extra
+    // Free motion with dynamic laws (the stiff case): exact Jacobian instead of n extra
     // right-hand sides per Newton matrix, and no difference-quotient noise in it.
     // It is cheap (a few states), so it is refreshed at every Newton matrix update instead of
     // every 51 steps: Newton then converges at once after a slip starts, and fewer steps fail
@@ -460,15 +597,16 @@ class Engine {
     }
     CVodeSetMaxNumSteps(sd_.mem, o_.max_steps);
     double hmax = o_.max_step;
-    if (input_.max_step() > 0) hmax = hmax > 0 ? std::min(hmax, input_.max_step()) : input_.max_step();
+    for (const InputSignal& in : inputs_)
+      if (in.max_step() > 0) hmax = hmax > 0 ? std::min(hmax, in.max_step()) : in.max_step();
     if (hmax > 0) CVodeSetMaxStep(sd_.mem, hmax);
-    if (hybrid_) {
-      if (CVodeRootInit(sd_.mem, 2, &Engine::roots_cb) != CV_SUCCESS) fail(0.0, "CVodeRootInit: " + error_);
+    if (nroots_ > 0) {
+      if (CVodeRootInit(sd_.mem, nroots_, &Engine::roots_cb) != CV_SUCCESS) fail(0.0, "CVodeRootInit: " + error_);
       set_root_directions();
       CVodeSetNoInactiveRootWarn(sd_.mem);
     }
 
-    // Corners of the input and, for a sampled controller, its sample instants k Ts (flagged).
+    // Corners of the inputs and, for a sampled controller, its sample instants k Ts (flagged).
     std::vector<double> corners;
     std::vector<char> is_sample;
     merge_corners(corners, is_sample);
@@ -476,7 +614,7 @@ class Engine {
     const double rate = o_.output_rate;
     auto close = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); };
 
-    record(tr, 0.0, y, mode_now_ == Mode::stuck);
+    record(tr, 0.0, y);
     double t = 0.0;
     double last_switch_time = -1.0;
     int switches_without_progress = 0;
@@ -485,10 +623,10 @@ class Engine {
       // Rows inside the step already taken come from its interpolant, without a CVode call.
       // Only without root functions (CVode checks roots up to each output time) and before
       // the next corner (whose handling must precede its row).
-      if (!hybrid_ && (next_corner >= corners.size() || tout < corners[next_corner]) &&
+      if (nroots_ == 0 && (next_corner >= corners.size() || tout < corners[next_corner]) &&
           interpolant_->eval(sd_.mem, tout, y_row_.data())) {
         t = tout;
-        record(tr, tout, y_row_.data(), false);
+        record(tr, tout, y_row_.data());
         continue;
       }
       while (!close(t, tout)) {
@@ -533,14 +671,14 @@ class Engine {
             ++next_corner;
             if (sample_now) {
               take_sample(tr, t_corner, y);
-            } else if (mode_now_ == Mode::stuck) {
-              settle_at_rest(tr, t, y, true, 0);
+            } else {
+              settle_stuck(tr, t, y);
             }
             restart(t);
           }
         }
       }
-      record(tr, tout, y, mode_now_ == Mode::stuck);
+      record(tr, tout, y);
     }
     accumulate_stats();
     tr.stats.steps = steps_;
@@ -552,7 +690,8 @@ class Engine {
   // time order; equal times (as the table of a data input sampled on the same grid) merge.
   void merge_corners(std::vector<double>& corners, std::vector<char>& is_sample) const {
     std::vector<std::pair<double, char>> all;
-    for (double c : input_.breakpoints(0.0, o_.duration)) all.emplace_back(c, 0);
+    for (const InputSignal& in : inputs_)
+      for (double c : in.breakpoints(0.0, o_.duration)) all.emplace_back(c, 0);
     if (sample_period_ > 0) {
       for (long k = 1;; ++k) {
         const double ts = static_cast<double>(k) * sample_period_;  // same product as a table built as k * dt
@@ -575,42 +714,71 @@ class Engine {
   // The controller update at the sample instant t = k Ts (exactly that product, so a data input
   // tabulated at k dt gives its sample k); a stuck body may break loose under the new output.
   void take_sample(Trajectory& tr, double t, double* y) {
-    if (mode_now_ == Mode::stuck) {
-      y[0] = stuck_position_;
-      y[1] = 0.0;
-    }
-    sample1(t, std::span<double>(y, static_cast<std::size_t>(np_)), input_.at(t));
-    if (mode_now_ == Mode::stuck) settle_at_rest(tr, t, y, true, 0);
+    pin_stuck(y);
+    eval_inputs(t);
+    plant_.sample(t, std::span<double>(y, static_cast<std::size_t>(np_)), u_);
+    settle_stuck(tr, t, y);
   }
 
   void handle_root(Trajectory& tr, double t, double* y) {
-    int found[2] = {0, 0};
-    CVodeGetRootInfo(sd_.mem, found);
-    if (mode_now_ == Mode::stuck) {
-      // breakaway: the applied force reached a level
-      const double a = applied_at_rest(t, y);
-      y[0] = stuck_position_;
-      y[1] = 0.0;
-      const int dir = found[0] != 0 ? 1 : -1;
-      mode_now_ = dir > 0 ? Mode::slide_pos : Mode::slide_neg;
-      tr.switches.push_back({t, SwitchKind::breakaway, y[0], a, dir});
-    } else {
-      const int dir = mode_now_ == Mode::slide_pos ? 1 : -1;
-      y[1] = 0.0;  // the velocity reached zero: exactly zero from now on
-      settle_at_rest(tr, t, y, false, dir);
+    CVodeGetRootInfo(sd_.mem, found_.data());
+    pin_stuck(y);
+    if (hybrid_) {
+      for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        if (!found_[2 * k] && !found_[2 * k + 1]) continue;
+        Body& b = bodies_[k];
+        if (b.mode == Mode::stuck) {
+          // breakaway: the applied force reached a level
+          const double a = applied_at_rest(k, t, y);
+          y[b.pos] = b.stuck_position;
+          y[b.vel] = 0.0;
+          const int dir = found_[2 * k] != 0 ? 1 : -1;
+          set_mode(b, dir > 0 ? Mode::slide_pos : Mode::slide_neg);
+          tr.switches.push_back({t, SwitchKind::breakaway, y[b.pos], a, dir, static_cast<int>(k)});
+        } else {
+          const int dir = b.mode == Mode::slide_pos ? 1 : -1;
+          y[b.vel] = 0.0;  // the velocity reached zero: exactly zero from now on
+          settle_at_rest(tr, k, t, y, false, dir);
+        }
+      }
     }
+    const std::size_t first_event = hybrid_ ? 2 * bodies_.size() : 0;
+    bool any_event = false;
+    for (int e = 0; e < ne_; ++e) {
+      if (!found_[first_event + static_cast<std::size_t>(e)]) continue;
+      eval_inputs(t);
+      plant_.on_event(t, std::span<double>(y, static_cast<std::size_t>(np_)), u_, e);
+      tr.plant_events.push_back({t, e});
+      any_event = true;
+    }
+    // The plant's discrete states changed: the applied force on a stuck body may have jumped.
+    if (any_event) settle_stuck(tr, t, y);
   }
 
   // ---- fixed-step --------------------------------------------------------------------------
 
+  // The plant's events in fixed-step mode: checked after each step, on_event at the first step
+  // where g[k] changed sign (what a controller sampled at 1/dt sees).
+  void fixed_events(Trajectory& tr, double t, std::vector<double>& x) {
+    plant_.events(t, x, u_, g_now_);
+    for (int e = 0; e < ne_; ++e) {
+      const auto i = static_cast<std::size_t>(e);
+      if ((g_prev_[i] < 0 && g_now_[i] >= 0) || (g_prev_[i] > 0 && g_now_[i] <= 0)) {
+        plant_.on_event(t, x, u_, e);
+        tr.plant_events.push_back({t, e});
+      }
+    }
+    plant_.events(t, x, u_, g_prev_);
+  }
+
   void run_fixed(Trajectory& tr, std::size_t rows) {
     const double dt = o_.dt;
     const long per_row = std::lround(1.0 / (o_.output_rate * dt));
-    std::vector<double> x(static_cast<std::size_t>(np_), 0.0), dx(x.size(), 0.0), z(static_cast<std::size_t>(nz_), 0.0);
-    plant_.initial_extras(x);
-    x[0] = o_.initial_position;
-    x[1] = kinematic_ ? input_.at(0.0).value : o_.initial_velocity;
-    mode_now_ = Mode::free;
+    std::vector<double> y(static_cast<std::size_t>(n_), 0.0), dx(static_cast<std::size_t>(np_), 0.0);
+    initial_state(y.data());
+    std::span<double> x(y.data(), static_cast<std::size_t>(np_));
+    bool any_static = false;
+    for (const Body& b : bodies_) any_static = any_static || b.nz == 0;
     long per_sample = 0;  // steps per controller sample (sampled plants)
     if (sample_period_ > 0) {
       const double ratio = sample_period_ / dt;
@@ -618,7 +786,12 @@ class Engine {
       if (per_sample < 1 || std::abs(ratio - static_cast<double>(per_sample)) > 1e-6 * ratio)
         throw std::invalid_argument("simulation option dt = " + detail::format_value(dt) + " s must divide the controller's sample period " +
                                     detail::format_value(sample_period_) + " s a whole number of times");
-      sample1(0.0, x, input_.at(0.0));
+      eval_inputs(0.0);
+      plant_.sample(0.0, x, u_);
+    }
+    if (ne_ > 0) {
+      eval_inputs(0.0);
+      plant_.events(0.0, x, u_, g_prev_);
     }
     long step = 0;
     for (std::size_t k = 0; k < rows; ++k) {
@@ -626,73 +799,86 @@ class Engine {
       const long target = static_cast<long>(k) * per_row;
       for (; step < target;) {
         const double t = static_cast<double>(step) * dt;
-        const InputValue in = input_.at(t);
-        if (kinematic_) x[1] = in.value;
-        const double v = x[1];
-        double f;
-        if (nz_ > 0) {
-          f = law_.step(z, v, dt);  // the law's exact update at constant v over the sample
-        } else {
-          const double a = applied1(t, x, in);
-          f = law_.force(v, a);  // stiction only at v == 0 exactly (or in Karnopp's band)
+        eval_inputs(t);
+        if (kinematic_) x[1] = u_[0].value;
+        if (any_static) plant_applied(t, x);
+        for (std::size_t c = 0; c < bodies_.size(); ++c) {
+          const Body& b = bodies_[c];
+          const double v = x[static_cast<std::size_t>(b.vel)];
+          if (b.nz > 0) {
+            // the law's exact update at constant v over the sample
+            friction_[c] = b.law->step(std::span<double>(y.data() + b.z, static_cast<std::size_t>(b.nz)), v, dt);
+          } else {
+            friction_[c] = b.law->force(v, force_[c]);  // stiction only at v == 0 exactly (or in Karnopp's band)
+          }
         }
-        deriv1(t, x, in, f, dx);
-        if (kinematic_) {
-          x[0] += dt * in.value;
-        } else {
-          x[1] += dt * dx[1];  // symplectic Euler: new velocity, then position with it
-          x[0] += dt * x[1];
+        plant_derivatives(t, x, dx);
+        for (const Body& b : bodies_) {
+          const auto p = static_cast<std::size_t>(b.pos), v = static_cast<std::size_t>(b.vel);
+          if (kinematic_) {
+            x[p] += dt * u_[0].value;
+          } else {
+            x[v] += dt * dx[v];  // symplectic Euler: new velocity, then position with it
+            x[p] += dt * x[v];
+          }
         }
-        for (int i = 2; i < np_; ++i) x[static_cast<std::size_t>(i)] += dt * dx[static_cast<std::size_t>(i)];
+        for (int i : extras_) x[static_cast<std::size_t>(i)] += dt * dx[static_cast<std::size_t>(i)];
         ++step;
         if (per_sample > 0 && step % per_sample == 0) {
           const double ts = static_cast<double>(step / per_sample) * sample_period_;
-          sample1(ts, x, input_.at(ts));
+          eval_inputs(ts);
+          plant_.sample(ts, x, u_);
+        }
+        if (ne_ > 0) {
+          const double ts = static_cast<double>(step) * dt;
+          eval_inputs(ts);
+          fixed_events(tr, ts, y);
         }
       }
       const double t = static_cast<double>(step) * dt;
-      const InputValue in = input_.at(t);
-      if (kinematic_) x[1] = in.value;
-      double a = applied1(t, x, in);
-      double f;
-      if (nz_ > 0) {
-        f = law_.force(std::span<const double>(z), x[1]);
-      } else {
-        f = law_.force(x[1], a);
-      }
-      PlantSignals s = signals1(t, x, in);
-      if (kinematic_) a += f, s.drive += f;
+      eval_inputs(t);
+      if (kinematic_) x[1] = u_[0].value;
+      plant_applied(t, x);
+      plant_signals(t, x);
       tr.time.push_back(static_cast<double>(k) / o_.output_rate);
-      tr.position.push_back(x[0]);
-      tr.velocity.push_back(x[1]);
-      tr.friction.push_back(f);
-      tr.applied.push_back(a);
-      tr.current.push_back(s.current);
-      tr.voltage.push_back(s.voltage);
-      tr.reference.push_back(s.reference);
-      tr.drive.push_back(s.drive);
-      tr.stuck.push_back(x[1] == 0.0 && !kinematic_ && !law_.is_dynamic() ? 1.0 : 0.0);
-      for (int i = 0; i < nz_; ++i) tr.law_state[static_cast<std::size_t>(i)].push_back(z[static_cast<std::size_t>(i)]);
+      for (std::size_t c = 0; c < bodies_.size(); ++c) {
+        const Body& b = bodies_[c];
+        const double v = x[static_cast<std::size_t>(b.vel)];
+        const double f = b.nz > 0 ? b.law->force(std::span<const double>(y.data() + b.z, static_cast<std::size_t>(b.nz)), v)
+                                  : b.law->force(v, force_[c]);
+        double a = force_[c];
+        PlantSignals& s = signals_[c];
+        if (kinematic_) a += f, s.drive += f;
+        push_row(column_set(tr, static_cast<int>(c)), x[static_cast<std::size_t>(b.pos)], v, f, a, s,
+                 v == 0.0 && !kinematic_ && b.nz == 0 ? 1.0 : 0.0, y.data() + b.z, b.nz);
+      }
     }
     tr.stats.steps = step;
     tr.stats.rhs_evaluations = step;
   }
 
   const Plant& plant_;
-  const FrictionLaw& law_;
-  const InputSignal& input_;
+  const SingleContactPlant* single_;  // the plant as a 1-DOF one, or null
+  std::span<const InputSignal> inputs_;
   const SimulationOptions& o_;
   SolverMode mode_;
-  int np_ = 2, nz_ = 0, n_ = 2;
-  double fbp_ = 0.0, fbn_ = 0.0;
-  bool hybrid_ = false;
-  bool kinematic_ = false;  // the plant imposes the velocity (plant_.kinematic(), asked once)
+  int np_ = 2, nz_ = 0, n_ = 2, nc_ = 1, ne_ = 0;
+  int nroots_ = 0;  // root functions: 2 per contact when hybrid_, then the plant's ne_
+  std::vector<Body> bodies_;
+  std::vector<int> extras_;  // plant states that are no contact's position or velocity
+  int stuck_count_ = 0;      // bodies in Mode::stuck
+  bool hybrid_ = false;      // some body has hybrid modes
+  bool kinematic_ = false;   // the plant imposes the velocity (plant_.kinematic(), asked once)
   double sample_period_ = 0.0;  // s; > 0 for a plant with a sampled controller
-  Mode mode_now_ = Mode::free;
-  double stuck_position_ = 0.0;
+  std::vector<InputValue> u_;       // the inputs at the time being evaluated
+  std::vector<double> force_;       // applied force on each contact
+  std::vector<double> friction_;    // friction on each contact
+  std::vector<PlantSignals> signals_;
+  std::vector<int> found_, dirs_;   // root information and directions (nroots_)
+  std::vector<double> g_prev_, g_now_;  // plant event functions (fixed-step mode)
   std::vector<double> scratch_;
   Sundials sd_;
-  std::optional<StiffSystem> system_;  // dynamic law with a plant that has an analytic Jacobian
+  std::optional<StiffSystem> system_;  // dynamic laws with a plant that has an analytic Jacobian
   std::string error_;
   std::exception_ptr callback_exception_;  // what a callback threw (see guarded)
   double stop_set_ = -1.0;
@@ -724,19 +910,90 @@ SolverMode resolve_solver_mode(const FrictionLaw& law, SolverMode requested) {
   return requested;
 }
 
+SolverMode resolve_solver_mode(std::span<const FrictionLaw* const> laws, SolverMode requested) {
+  if (requested == SolverMode::automatic) {
+    for (const FrictionLaw* l : laws)
+      if (has_stiction(*l)) return SolverMode::hybrid;
+    return SolverMode::stiff;
+  }
+  for (const FrictionLaw* l : laws) resolve_solver_mode(*l, requested);
+  return requested;
+}
+
+namespace {
+
+// Each contact's law, after checking the plant's contacts: state indices in range and not shared,
+// distinct non-empty names when there are several, a velocity drive with one contact.
+std::vector<const FrictionLaw*> contact_laws(const Plant& plant, const FrictionLaw& law) {
+  const int nc = plant.num_contacts(), np = plant.num_states();
+  const std::string who = "plant '" + plant.type() + "'";
+  if (nc < 1) throw std::invalid_argument(who + " declares " + std::to_string(nc) + " contacts; it needs at least 1");
+  if (plant.kinematic() && nc != 1)
+    throw std::invalid_argument(who + " imposes its velocity with " + std::to_string(nc) + " contacts; a velocity drive has 1");
+  std::vector<const FrictionLaw*> laws;
+  std::vector<char> used(static_cast<std::size_t>(std::max(np, 0)), 0);
+  std::vector<std::string> names;
+  for (int k = 0; k < nc; ++k) {
+    const Contact c = plant.contact(k);
+    for (int index : {c.position, c.velocity}) {
+      if (index < 0 || index >= np)
+        throw std::invalid_argument(who + ": contact " + std::to_string(k) + " has state index " + std::to_string(index) +
+                                    " outside 0.." + std::to_string(np - 1));
+      if (used[static_cast<std::size_t>(index)]++)
+        throw std::invalid_argument(who + ": state " + std::to_string(index) + " is the position or velocity of two contacts");
+    }
+    if (nc > 1) {
+      if (c.name.empty()) throw std::invalid_argument(who + ": contact " + std::to_string(k) + " has no name (several contacts need names)");
+      if (std::find(names.begin(), names.end(), c.name) != names.end())
+        throw std::invalid_argument(who + ": two contacts are named '" + c.name + "'");
+      names.push_back(c.name);
+    }
+    laws.push_back(c.law ? c.law : &law);
+  }
+  return laws;
+}
+
+}  // namespace
+
+Trajectory simulate(const Plant& plant, const FrictionLaw& law, std::span<const InputSignal> inputs,
+                    const SimulationOptions& options) {
+  if (static_cast<int>(inputs.size()) != plant.num_inputs())
+    throw std::invalid_argument("simulate: plant '" + plant.type() + "' takes " + std::to_string(plant.num_inputs()) +
+                                " inputs; " + std::to_string(inputs.size()) + " given");
+  const std::vector<const FrictionLaw*> laws = contact_laws(plant, law);
+  const SolverMode mode = laws.size() == 1 ? resolve_solver_mode(*laws[0], options.mode) : resolve_solver_mode(std::span<const FrictionLaw* const>(laws), options.mode);
+  check_options(options, mode);
+  const auto nc = laws.size();
+  for (const auto* list : {&options.initial_positions, &options.initial_velocities})
+    if (!list->empty() && list->size() != nc)
+      throw std::invalid_argument("simulation option initial_" + std::string(list == &options.initial_positions ? "positions" : "velocities") +
+                                  " has " + std::to_string(list->size()) + " entries; plant '" + plant.type() + "' has " +
+                                  std::to_string(nc) + " contacts");
+  int extra_columns = 9 * static_cast<int>(nc - 1);  // other contacts' columns, then the law states
+  for (const FrictionLaw* l : laws) extra_columns += l->is_dynamic() ? l->num_states() : 0;
+  check_output_size(options, extra_columns);
+  if (inputs.size() == 1) {
+    inputs[0].validate();
+  } else {
+    for (std::size_t i = 0; i < inputs.size(); ++i) inputs[i].validate("input " + std::to_string(i));
+  }
+  Engine engine(plant, law, laws, inputs, options, mode);
+  return engine.run();
+}
+
 Trajectory simulate(const Plant& plant, const FrictionLaw& law, const InputSignal& input,
                     const SimulationOptions& options) {
-  const SolverMode mode = resolve_solver_mode(law, options.mode);
-  check_options(options, mode);
-  check_output_size(options, law.is_dynamic() ? law.num_states() : 0);
-  input.validate();
-  Engine engine(plant, law, input, options, mode);
-  return engine.run();
+  return simulate(plant, law, std::span<const InputSignal>(&input, 1), options);
 }
 
 Trajectory simulate(const Scenario& scenario) {
   if (!scenario.plant) throw std::invalid_argument("scenario: no plant given");
-  return simulate(*scenario.plant, scenario.law, scenario.input, scenario.options);
+  const Plant& plant = *scenario.plant;
+  if (scenario.inputs.empty()) return simulate(plant, scenario.law, scenario.input, scenario.options);
+  if (static_cast<int>(scenario.inputs.size()) != plant.num_inputs())
+    throw std::invalid_argument("scenario: plant '" + plant.type() + "' takes " + std::to_string(plant.num_inputs()) +
+                                " inputs; scenario.inputs has " + std::to_string(scenario.inputs.size()));
+  return simulate(plant, scenario.law, std::span<const InputSignal>(scenario.inputs), scenario.options);
 }
 
 }  // namespace frictionlab

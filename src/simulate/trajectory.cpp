@@ -10,10 +10,26 @@
 namespace frictionlab {
 
 namespace {
-// The nine columns, in the order of column_names() (the CSV's).
-constexpr std::array<std::vector<double> Trajectory::*, 9> kColumns = {
-    &Trajectory::time,    &Trajectory::position, &Trajectory::velocity,  &Trajectory::friction, &Trajectory::applied,
-    &Trajectory::current, &Trajectory::voltage,  &Trajectory::reference, &Trajectory::stuck};
+// A contact's CSV columns, in CSV order, and their names; the 1-DOF CSV has the first eight.
+constexpr std::array<std::vector<double> ContactColumns::*, 9> kContactColumns = {
+    &ContactColumns::position, &ContactColumns::velocity,  &ContactColumns::friction,
+    &ContactColumns::applied,  &ContactColumns::current,   &ContactColumns::voltage,
+    &ContactColumns::reference, &ContactColumns::stuck,    &ContactColumns::drive};
+constexpr std::array<const char*, 9> kContactNames = {"position", "velocity",  "friction", "applied", "current",
+                                                      "voltage",  "reference", "stuck",    "drive"};
+constexpr std::size_t kSingleColumns = 8;  // a 1-DOF CSV leaves out drive
+
+void recycle(ContactColumns& c, bool own) {
+  for (std::size_t k = 0; k < kContactColumns.size(); ++k) {
+    // A trajectory's own drive column lives on the side shelf (see column_pool.hpp).
+    const bool side = own && kContactColumns[k] == &ContactColumns::drive;
+    detail::recycle_column(std::move(c.*kContactColumns[k]), side ? detail::Shelf::side : detail::Shelf::main);
+  }
+  for (auto& z : c.law_state) detail::recycle_column(std::move(z));
+}
+
+// One unnamed contact: a 1-DOF plant's trajectory, with today's column names.
+bool single(const Trajectory& t) { return t.contact_names.empty() || (t.contact_names.size() == 1 && t.contact_names[0].empty()); }
 }  // namespace
 
 const char* switch_kind_name(SwitchKind kind) {
@@ -33,17 +49,25 @@ Trajectory& Trajectory::operator=(Trajectory&& other) noexcept {
 
 void Trajectory::swap(Trajectory& other) noexcept {
   using std::swap;
-  for (auto column : kColumns) swap(this->*column, other.*column);
-  swap(drive, other.drive);
-  swap(law_state, other.law_state);
+  swap(static_cast<ContactColumns&>(*this), static_cast<ContactColumns&>(other));
+  swap(time, other.time);
+  swap(contact_names, other.contact_names);
+  swap(others, other.others);
   swap(switches, other.switches);
+  swap(plant_events, other.plant_events);
   swap(stats, other.stats);
 }
 
 Trajectory::~Trajectory() {
-  for (auto column : kColumns) detail::recycle_column(std::move(this->*column));
-  detail::recycle_column(std::move(drive), detail::Shelf::side);
-  for (auto& c : law_state) detail::recycle_column(std::move(c));
+  detail::recycle_column(std::move(time));
+  recycle(*this, true);
+  for (auto& c : others) recycle(c, false);
+}
+
+const ContactColumns& Trajectory::contact(int i) const {
+  if (i < 0 || i >= num_contacts())
+    throw std::out_of_range("trajectory has no contact " + std::to_string(i) + "; it has " + std::to_string(num_contacts()));
+  return i == 0 ? static_cast<const ContactColumns&>(*this) : others[static_cast<std::size_t>(i - 1)];
 }
 
 const std::vector<std::string>& Trajectory::column_names() {
@@ -52,26 +76,47 @@ const std::vector<std::string>& Trajectory::column_names() {
   return names;
 }
 
+std::vector<std::string> Trajectory::names() const {
+  if (single(*this)) return column_names();
+  std::vector<std::string> out{"time"};
+  for (const auto& c : contact_names)
+    for (const char* n : kContactNames) out.push_back(c + "." + n);
+  return out;
+}
+
 const std::vector<double>& Trajectory::column(std::string_view name) const {
-  const auto& names = column_names();
-  for (std::size_t c = 0; c < kColumns.size(); ++c)
-    if (name == names[c]) return this->*kColumns[c];
+  if (name == "time") return time;
+  if (single(*this)) {
+    for (std::size_t k = 0; k < kContactColumns.size(); ++k)
+      if (name == kContactNames[k]) return this->*kContactColumns[k];
+  } else {
+    for (std::size_t c = 0; c < contact_names.size(); ++c) {
+      const std::string& prefix = contact_names[c];
+      if (name.size() <= prefix.size() + 1 || name.substr(0, prefix.size()) != prefix || name[prefix.size()] != '.') continue;
+      const std::string_view rest = name.substr(prefix.size() + 1);
+      for (std::size_t k = 0; k < kContactColumns.size(); ++k)
+        if (rest == kContactNames[k]) return contact(static_cast<int>(c)).*kContactColumns[k];
+    }
+  }
   std::string list;
-  for (const auto& n : column_names()) list += (list.empty() ? "" : ", ") + n;
+  for (const auto& n : names()) list += (list.empty() ? "" : ", ") + n;
   throw std::invalid_argument("trajectory has no column '" + std::string(name) + "'; columns: " + list);
 }
 
 std::string Trajectory::to_csv() const {
-  const auto& names = column_names();
+  const bool one = single(*this);
+  const std::size_t per_contact = one ? kSingleColumns : kContactColumns.size();
+  std::vector<const std::vector<double>*> cols{&time};
+  for (int c = 0; c < num_contacts(); ++c)
+    for (std::size_t k = 0; k < per_contact; ++k) cols.push_back(&(contact(c).*kContactColumns[k]));
+  const auto header = names();
   std::string out;
-  out.reserve(rows() * 9 * 14 + 128);
-  for (std::size_t c = 0; c < names.size(); ++c) {
+  out.reserve(rows() * cols.size() * 14 + 16 * cols.size());
+  for (std::size_t c = 0; c < header.size(); ++c) {
     if (c) out += ',';
-    out += names[c];
+    out += header[c];
   }
   out += '\n';
-  std::array<const std::vector<double>*, kColumns.size()> cols{};
-  for (std::size_t c = 0; c < kColumns.size(); ++c) cols[c] = &(this->*kColumns[c]);
   char buf[32];
   for (std::size_t r = 0; r < rows(); ++r) {
     for (std::size_t c = 0; c < cols.size(); ++c) {

@@ -1,6 +1,8 @@
 #pragma once
 // Options of a simulation run: duration, output rate, initial state and the solver.
 
+#include <vector>
+
 namespace frictionlab {
 
 /// How the engine integrates.
@@ -32,6 +34,10 @@ struct SimulationOptions {
   double initial_position = 0.0;
   /// Initial velocity (m/s or rad/s). Default 0. Dynamic laws start at their zero state (z = 0).
   double initial_velocity = 0.0;
+  /// Plants with several contacts: initial position and velocity of each contact (one entry per
+  /// contact, m or rad, m/s or rad/s); empty (default) = initial_position and initial_velocity
+  /// for every contact.
+  std::vector<double> initial_positions, initial_velocities;
   /// Solver choice. Default automatic.
   SolverMode mode = SolverMode::automatic;
   /// Relative tolerance of CVODE, > 0. Default 1e-8: tighter costs steps, looser shifts event times.

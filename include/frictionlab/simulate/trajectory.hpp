@@ -21,6 +21,13 @@ struct ModeSwitch {
   double position = 0.0;  ///< m or rad
   double applied = 0.0;   ///< applied force at the switch (N or N m)
   int direction = 0;      ///< sliding direction after the switch (+1 / -1), 0 when stuck
+  int contact = 0;        ///< the contact that switched (Plant::contact index; 0 for a 1-DOF plant)
+};
+
+/// One of the plant's own events (Plant::events), at the time the root finder located it.
+struct PlantEvent {
+  double time = 0.0;  ///< s
+  int index = 0;      ///< which event function changed sign (0 <= index < Plant::num_events())
 };
 
 /// Counters of the integrator.
@@ -31,11 +38,8 @@ struct SimulationStats {
   const char* solver = "";    ///< the solver mode actually used ("hybrid", "stiff", "fixed-step")
 };
 
-/// Sampled simulation result. All columns have rows() entries.
-/// Destroying a Trajectory keeps its large columns' storage (at most 64 MiB per thread) for the
-/// next simulate() on the same thread, so a loop of simulations maps no new memory.
-struct Trajectory {
-  std::vector<double> time;       ///< s
+/// The sampled signals of one contact. All columns have the trajectory's rows() entries.
+struct ContactColumns {
   std::vector<double> position;   ///< m or rad
   std::vector<double> velocity;   ///< m/s or rad/s
   std::vector<double> friction;   ///< friction force (N or N m), sign of motion
@@ -44,12 +48,25 @@ struct Trajectory {
   std::vector<double> voltage;    ///< motor voltage (V); 0 without a motor
   std::vector<double> reference;  ///< input signal (reference of a loop, command, base position)
   std::vector<double> stuck;      ///< 1 while stuck (hybrid mode), else 0
-  /// Force the drive or controller commands (N or N m; PlantSignals::drive). Not part of the CSV.
+  /// Force the drive or controller commands on the contact (N or N m; PlantSignals::drive): what
+  /// validation compares with a recorded force. Not part of a 1-DOF plant's CSV.
   std::vector<double> drive;
   /// Dynamic laws: law_state[i] is the column of internal state i (m or rad: bristle or element
   /// deflections); empty for static laws. Not part of the CSV.
   std::vector<std::vector<double>> law_state;
-  std::vector<ModeSwitch> switches;  ///< hybrid mode: every mode switch, in time order
+};
+
+/// Sampled simulation result. Its own ContactColumns are contact 0's (a 1-DOF plant's only
+/// contact); `others` holds contacts 1..N-1. All columns have rows() entries.
+/// Destroying a Trajectory keeps its large columns' storage (at most 64 MiB per thread) for the
+/// next simulate() on the same thread, so a loop of simulations maps no new memory.
+struct Trajectory : ContactColumns {
+  std::vector<double> time;  ///< s
+  /// Contact names (Contact::name), one per contact: {""} for a 1-DOF plant.
+  std::vector<std::string> contact_names;
+  std::vector<ContactColumns> others;  ///< contacts 1..N-1
+  std::vector<ModeSwitch> switches;    ///< hybrid mode: every mode switch, in time order
+  std::vector<PlantEvent> plant_events;  ///< every event of the plant's own event functions, in time order
   SimulationStats stats;
 
   Trajectory() = default;
@@ -63,13 +80,22 @@ struct Trajectory {
   void swap(Trajectory& other) noexcept;
 
   std::size_t rows() const { return time.size(); }
-  /// Column names in CSV order: time, position, velocity, friction, applied, current, voltage,
-  /// reference, stuck.
+  /// Number of contacts (1 for a 1-DOF plant, and for an empty trajectory).
+  int num_contacts() const { return 1 + static_cast<int>(others.size()); }
+  /// Columns of contact i (0 <= i < num_contacts()). \throws std::out_of_range otherwise.
+  const ContactColumns& contact(int i) const;
+  /// A 1-DOF trajectory's column names in CSV order: time, position, velocity, friction, applied,
+  /// current, voltage, reference, stuck.
   static const std::vector<std::string>& column_names();
-  /// Column by name (one of column_names()). \throws std::invalid_argument listing the names.
+  /// This trajectory's column names in CSV order: column_names() when its plant has one unnamed
+  /// contact; otherwise time, then for each contact NAME.position, NAME.velocity, NAME.friction,
+  /// NAME.applied, NAME.current, NAME.voltage, NAME.reference, NAME.stuck, NAME.drive.
+  std::vector<std::string> names() const;
+  /// Column by name (one of names(); "drive" too for a 1-DOF trajectory).
+  /// \throws std::invalid_argument listing the names.
   const std::vector<double>& column(std::string_view name) const;
-  /// The CSV text: header row, then one row per sample (shortest round-trip
-  /// form of each number, so reading it back gives the same doubles).
+  /// The CSV text: header row names(), then one row per sample (shortest round-trip form of each
+  /// number, so reading it back gives the same doubles).
   std::string to_csv() const;
 };
 
