@@ -212,9 +212,7 @@ class RecordingFeedback : public FeedbackCompensation {
   std::shared_ptr<std::vector<Switch>> switches_ = std::make_shared<std::vector<Switch>>();
 };
 
-// DISABLED until the engine runs the plant's event functions (Plant::num_events; the plant API
-// commit declares them, the engine's next change calls them): enable it then.
-TEST(ClosedLoopCompensation, DISABLED_EngineLocatesTheCompensatorsSwitch) {
+TEST(ClosedLoopCompensation, EngineLocatesTheCompensatorsSwitch) {
   // The hunting loop's first slip with feedback compensation (dead band 0.02 m/s): the velocity
   // rises through +0.02 m/s and falls back through it; each switch of the compensation (a jump of
   // about 1 N) is located where v = 0.02 m/s, not stepped over.
