@@ -291,7 +291,7 @@ class Engine {
   // velocities of stuck bodies, or the imposed velocity of a velocity drive. Inputs evaluated.
   [[gnu::always_inline]] std::span<const double> effective_state(const double* y) {
     if (stuck_count_ == 0 && !kinematic_) return {y, static_cast<std::size_t>(np_)};
-    std::copy(y, y + n_, scratch_.begin());
+    std::copy(y, y + np_, scratch_.begin());  // the plant's states (law states are read from y)
     if (stuck_count_ > 0)
       for (const Body& b : bodies_)
         if (b.mode == Mode::stuck) {
@@ -337,6 +337,16 @@ class Engine {
   // Root functions: two per contact when any contact has hybrid modes (stuck: applied minus each
   // breakaway level; sliding: v; no modes: constant), then the plant's own.
   void roots(double t, const double* y, double* g) {
+    // Sliding bodies need only their velocity: the inputs and the plant are evaluated only when a
+    // body is stuck or the plant has event functions (most root evaluations happen while sliding).
+    if (stuck_count_ == 0 && ne_ == 0) {
+      for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        const Body& b = bodies_[k];
+        g[2 * k] = b.hybrid ? y[b.vel] : 1.0;
+        g[2 * k + 1] = 1.0;  // unused in a sliding mode
+      }
+      return;
+    }
     eval_inputs(t);
     const auto x = effective_state(y);
     if (hybrid_) {
