@@ -118,11 +118,21 @@ TEST(ClosedLoopCompensation, FeedforwardOfTheExactModelTracksASine) {
   };
   const double e_plain = tracking(simulate(ClosedLoop(unit_mass(), c), lugre, sine, o));
   const auto ff = std::make_shared<const FeedforwardCompensation>(lugre);
-  const double e_ff = tracking(simulate(ClosedLoop(unit_mass(), c, ff), lugre, sine, o));
+  const Trajectory ff_run = simulate(ClosedLoop(unit_mass(), c, ff), lugre, sine, o);
+  const double e_ff = tracking(ff_run);
   std::printf("sine tracking: largest error over the last 5 periods %.3g m plain, %.3g m with feedforward\n", e_plain,
               e_ff);
   EXPECT_GT(e_plain, 5e-2);
   EXPECT_LT(e_ff, 1e-3);
+  // The feedforward's band edges, dr/dt = 0.05 cos(0.5 t) = +-b, are the loop's events: four a
+  // period, each located where the rate crosses the edge (edge 0 at +b, edge 1 at -b).
+  const double b = FeedforwardParams{}.band;
+  ASSERT_EQ(ff_run.plant_events.size(), 40u);
+  for (const PlantEvent& ev : ff_run.plant_events) {
+    const double rate = 0.05 * std::cos(0.5 * ev.time);
+    constexpr double kRateTol = 1e-10;  // m/s: CVODE's root to ~1e-12 s times |d2r/dt2| <= 0.025 m/s^2, with margin
+    EXPECT_NEAR(rate, ev.index == 0 ? b : -b, kRateTol) << "t " << ev.time;
+  }
 }
 
 TEST(ClosedLoopCompensation, FeedforwardGainsTrackWithoutError) {
