@@ -45,7 +45,6 @@ std::string kind_words(DecayKind k) {
   return "none";
 }
 
-
 }  // namespace
 
 std::string label(std::string_view quantity, Quantity q, Axis axis) {
@@ -108,7 +107,6 @@ FigureSeries gapped_at_zero(const std::string& name, const std::vector<double>& 
   return s;
 }
 
-
 // Measured against simulated, one panel per signal that has both (or at least the measurement).
 Figure compare_figure(const Result& r, const std::string& what, const std::string& force_word,
                       const std::string& file) {
@@ -136,7 +134,6 @@ Figure compare_figure(const Result& r, const std::string& what, const std::strin
   }
   return f;
 }
-
 
 // Velocities for drawing a law over [-vmax, vmax]: dense near zero, where Stribeck laws bend;
 // a NaN between the two signs so that the jump at v = 0 is a gap, not a vertical line.
@@ -177,7 +174,6 @@ double max_abs(const std::vector<double>& v) {
   return m;
 }
 
-
 // Friction samples binned by velocity, each sign on its own (friction jumps at v = 0): the mean
 // and the standard deviation of each bin holding enough samples for them to mean something.
 FigureSeries binned(const std::vector<double>& v, const std::vector<double>& F, double vmax) {
@@ -216,14 +212,12 @@ FigurePanel map_panel(Axis axis) {
   return p;
 }
 
-
 bool has_data(const Figure& f) {
   for (const auto& p : f.panels)
     for (const auto& s : p.series)
       if (!s.x.empty()) return true;
   return false;
 }
-
 
 // The position signal with its turning points and the fitted envelope drawn as +-A(t) about the
 // centre of the oscillation (the mean of the midpoints of consecutive turning points).
@@ -256,7 +250,6 @@ FigurePanel position_with_envelope(std::span<const double> t, std::span<const do
   }
   return p;
 }
-
 
 std::vector<ReportFigure> result_figures(const Result& r) {
   std::vector<ReportFigure> out;

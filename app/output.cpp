@@ -15,6 +15,7 @@
 
 #include "figures.hpp"
 #include "frictionlab/format.hpp"
+#include "frictionlab/identify/method.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/io/figure.hpp"
 #include "frictionlab/io/report.hpp"
@@ -364,7 +365,7 @@ std::string result_text(const Result& r) {
       << (p.flag.empty() ? "" : "  (" + p.flag + ")") << "\n";
   }
   // The fitted signal's unit comes with the result (set by its method: identify/method.hpp).
-  const std::string& fit_unit = r.fit.unit;
+  const std::string fit_unit = fit_signal_and_unit(r).second;
   s << "fit: relative error " << format_number(r.fit.relative_error_percent, 4) << " %, rmse "
     << format_number(r.fit.rmse, 4) << " " << fit_unit << "\n";
   if (r.validation)

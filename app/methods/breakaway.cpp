@@ -64,7 +64,6 @@ Figure breakaway_figure(const Result& r) {
   return f;
 }
 
-
 // Breakaway: the applied force against velocity over the experiment, the breakaway force at rest
 // with its std, and the identified static law.
 Figure breakaway_map(const Result& r) {
@@ -95,7 +94,6 @@ Figure breakaway_map(const Result& r) {
   f.panels.push_back(p);
   return f;
 }
-
 
 }  // namespace
 

@@ -62,7 +62,6 @@ Figure decay_figure(const Result& r) {
   return f;
 }
 
-
 }  // namespace
 
 CliMethod decay_method() {

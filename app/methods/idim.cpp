@@ -131,7 +131,6 @@ Figure idim_figure(const Result& r) {
   return f;
 }
 
-
 // IDIM: the force less the identified inertia and offset terms, against the filtered velocity.
 Figure idim_map(const Result& r) {
   const Axis axis = r.axis;
@@ -160,7 +159,6 @@ Figure idim_map(const Result& r) {
   return f;
 }
 
-
 // The cross-test: the identified model predicting the drive force of a second record.
 Figure cross_test_figure(const Result& r) {
   const Axis axis = r.axis;
@@ -187,7 +185,6 @@ Figure cross_test_figure(const Result& r) {
   f.panels.push_back(q);
   return f;
 }
-
 
 }  // namespace
 

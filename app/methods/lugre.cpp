@@ -91,7 +91,6 @@ Figure lugre_map(const Result& r) {
   return f;
 }
 
-
 }  // namespace
 
 CliMethod lugre_method() {

@@ -86,7 +86,6 @@ Figure sweep_figure(const Result& r) {
   return f;
 }
 
-
 }  // namespace
 
 CliMethod sweep_method() {

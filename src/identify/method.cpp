@@ -40,4 +40,11 @@ Result new_result(const MethodInfo& method, const std::string& model, Axis axis)
   return r;
 }
 
+std::pair<std::string, std::string> fit_signal_and_unit(const Result& r) {
+  if (!r.fit.quantity.empty() || !r.fit.unit.empty()) return {r.fit.quantity, r.fit.unit};
+  for (const auto& m : identification_methods())
+    if (m.name == r.method && m.fit_quantity) return {m.fit_signal, std::string(unit(*m.fit_quantity, r.axis))};
+  return {};
+}
+
 }  // namespace frictionlab

@@ -215,7 +215,8 @@ std::string report_html(const Result& r, const std::vector<std::pair<std::string
 
   // Fit and validation figures.
   // The fitted signal and its unit come with the result (set by its method).
-  const std::string rmse_unit = r.fit.unit.empty() ? "" : " " + r.fit.unit;
+  const auto [fit_signal, fit_unit] = fit_signal_and_unit(r);
+  const std::string rmse_unit = fit_unit.empty() ? "" : " " + fit_unit;
   h << "<h2 id=\"fit\">Fit</h2>\n";
   table_head(h, {"data", "relative error", "rmse", "samples"});
   h << "<tr><td>identification: <code>" << esc(fs::path(r.data_file).filename().string()) << "</code></td><td class=\"num\">"
@@ -228,7 +229,7 @@ std::string report_html(const Result& r, const std::vector<std::pair<std::string
       << r.validation->samples << "</td></tr>\n";
   h << "</tbody></table>\n<p class=\"note\">Relative error = 100 &middot; ||y &minus; &#375;|| / ||y||; rmse in the "
        "unit of the fitted signal"
-    << (r.fit.quantity.empty() ? "" : " (" + esc(r.fit.quantity) + ")") << ".</p>\n";
+    << (fit_signal.empty() ? "" : " (" + esc(fit_signal) + ")") << ".</p>\n";
 
   // Warnings.
   h << "<h2 id=\"warnings\">Warnings</h2>\n";

@@ -72,6 +72,17 @@ TEST(Method, NewResultTakesTheUnitOfTheFittedSignalOnTheAxis) {
   EXPECT_FALSE(nlohmann::json::parse(to_json(v))["fit"].contains("unit"));
 }
 
+TEST(Method, AHandMadeResultGetsItsMethodsFitUnitOnItsAxis) {
+  Result r;  // as a program would make one without new_result: method and axis only
+  r.method = "sweep";
+  r.axis = Axis::rotary;
+  EXPECT_EQ(fit_signal_and_unit(r), std::make_pair(std::string("friction force"), std::string("N m")));
+  r.method = "not-a-method";
+  EXPECT_EQ(fit_signal_and_unit(r), std::make_pair(std::string(), std::string()));
+  r.fit.unit = "J";  // the result's own word wins
+  EXPECT_EQ(fit_signal_and_unit(r).second, "J");
+}
+
 TEST(Method, EveryMethodHasASummaryAndUnknownNamesAreListed) {
   ASSERT_GE(identification_methods().size(), 6u);
   for (const auto& m : identification_methods()) {

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "frictionlab/identify/result.hpp"
@@ -36,5 +37,10 @@ const MethodInfo& method_info(std::string_view name);
 /// An empty ok result of `method` fitting `model` on `axis`: method, model, axis, and the fit's
 /// quantity (fit.quantity, words) and unit (fit.unit, e.g. "N m" on a rotary axis) set.
 Result new_result(const MethodInfo& method, const std::string& model, Axis axis);
+
+/// The fitted signal of a result in words and its unit: the result's own (fit.quantity, fit.unit),
+/// or for a result made without new_result (by hand, an older program) its method's on the
+/// result's axis; both empty when neither says.
+std::pair<std::string, std::string> fit_signal_and_unit(const Result& r);
 
 }  // namespace frictionlab
