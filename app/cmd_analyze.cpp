@@ -1,8 +1,8 @@
 // frictionlab analyze envelope|stick-slip DATA [--time C] [--position C] [--velocity C] [--force C]
-//                     [--json FILE|-] [--plot FILE] [--overwrite]
+//                     [--json FILE|-] [--plot FILE] [--overwrite]: out through emit (output.hpp),
+//                     the one output path of identify and validate.
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -14,7 +14,8 @@
 #include "output.hpp"
 #include "frictionlab/analysis/envelope.hpp"
 #include "frictionlab/analysis/stick_slip.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "frictionlab/format.hpp"
+#include "methods/method.hpp"
 #include "frictionlab/io/load.hpp"
 
 namespace frictionlab::cli {
@@ -24,9 +25,7 @@ struct AnalyzeArgs {
   std::string method;
   std::string data;
   std::string time = "time", position = "position", velocity = "velocity", force = "friction";
-  std::string json;
-  std::string plot;
-  bool overwrite = false;
+  OutputOptions output;  // --json, --plot, --overwrite (no --report)
   double threshold = 0.0;
   ReadOptions read;  // --names, --resample, --max-gap, --drop-invalid
 };
@@ -82,34 +81,33 @@ nlohmann::json stick_slip_json(const StickSlipResult& r) {
 }
 
 std::string envelope_text(const EnvelopeResult& r) {
+  const auto n = [](double x) { return format_number(x); };
   std::ostringstream o;
-  o.precision(6);
   o << "decay        " << decay_kind_name(r.kind) << " (" << r.amplitudes.size() << " half cycles, half period "
-    << r.half_period << " s)\n"
-    << "amplitude    " << r.amplitudes.front() << " -> " << r.amplitudes.back() << " (lost "
-    << 100.0 * r.decay_fraction << " %)\n"
-    << "linear       " << r.decrement_per_half_cycle << " per half cycle (rms " << 100 * r.linear.relative_rms
+    << n(r.half_period) << " s)\n"
+    << "amplitude    " << n(r.amplitudes.front()) << " -> " << n(r.amplitudes.back()) << " (lost "
+    << n(100.0 * r.decay_fraction) << " %)\n"
+    << "linear       " << n(r.decrement_per_half_cycle) << " per half cycle (rms " << n(100 * r.linear.relative_rms)
     << " %)\n"
-    << "exponential  rate " << r.exponential.lambda << " 1/s, log decrement " << r.log_decrement << " (rms "
-    << 100 * r.exponential.relative_rms << " %)\n"
-    << "mixed        rate " << r.mixed.lambda << " 1/s, offset " << r.mixed.q << " (rms "
-    << 100 * r.mixed.relative_rms << " %)\n";
+    << "exponential  rate " << n(r.exponential.lambda) << " 1/s, log decrement " << n(r.log_decrement) << " (rms "
+    << n(100 * r.exponential.relative_rms) << " %)\n"
+    << "mixed        rate " << n(r.mixed.lambda) << " 1/s, offset " << n(r.mixed.q) << " (rms "
+    << n(100 * r.mixed.relative_rms) << " %)\n";
   return o.str();
 }
 
 std::string stick_slip_text(const StickSlipResult& r, bool with_force) {
+  const auto n = [](double x) { return format_number(x); };
   std::ostringstream o;
-  o.precision(6);
-  o << "slips        " << r.slip.size() << " (velocity threshold " << r.velocity_threshold << ")\n"
-    << "period       " << (std::isfinite(r.period) ? (std::ostringstream() << std::setprecision(6) << r.period << " s").str()
-                                              : std::string("n/a (fewer than two slips)"))
+  o << "slips        " << r.slip.size() << " (velocity threshold " << n(r.velocity_threshold) << ")\n"
+    << "period       " << (std::isfinite(r.period) ? n(r.period) + " s" : std::string("n/a (fewer than two slips)"))
     << "\n"
-    << "peak slip    " << r.peak_slip_velocity << " (velocity unit)\n"
-    << "slip length  " << r.mean_slip_duration << " s (mean)\n";
+    << "peak slip    " << n(r.peak_slip_velocity) << " (velocity unit)\n"
+    << "slip length  " << n(r.mean_slip_duration) << " s (mean)\n";
   if (with_force)
-    o << "breakaway    " << r.mean_breakaway_force << " (force unit, mean)\n"
-      << "re-stick     " << r.mean_restick_force << "\n"
-      << "force drop   " << r.mean_force_drop << "\n";
+    o << "breakaway    " << n(r.mean_breakaway_force) << " (force unit, mean)\n"
+      << "re-stick     " << n(r.mean_restick_force) << "\n"
+      << "force drop   " << n(r.mean_force_drop) << "\n";
   return o.str();
 }
 
@@ -134,95 +132,57 @@ Handler register_analyze(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--threshold", a->threshold,
                   "stick-slip: |v| at or below counts as stuck (0 = automatic: exact zeros or 1 % of max |v|)");
-  CLI::Option* json = cmd->add_option("--json", a->json, "write the result as JSON to FILE, or '-' for stdout");
-  add_plot_option(cmd, a->plot);
-  cmd->add_flag("--overwrite", a->overwrite, "replace an existing --json or --plot file");
+  CLI::Option* json = cmd->add_option("--json", a->output.json, "write the result as JSON to FILE, or '-' for stdout");
+  add_plot_option(cmd, a->output.plot);
+  cmd->add_flag("--overwrite", a->output.overwrite, "replace an existing --json or --plot file");
   add_read_options(cmd, a->read);
+  a->output.command = cmd;
   register_json_output(cmd, json, [a] { return a->method.empty() ? std::string("analyze") : a->method; });
   return [a]() -> int {
-    check_output_file(a->json, a->overwrite, "--json");
-    check_plot(a->plot, a->overwrite);
-    if (!a->plot.empty()) {
-      const FigureFiles files = figure_files(a->plot);
-      check_distinct_outputs(
-          {{"--json", a->json}, {"--plot", files.figure}, {"--plot data", files.data}, {"--plot script", files.script}});
-    }
+    check_outputs(a->output);
     const Dataset d = load_data(a->data, a->read, a->time);
-    // The result (or the reason there is none) to stdout with --json -, or atomically to FILE.
-    const auto write_json = [&a](const nlohmann::json& j) {
-      if (a->json == "-") {
-        std::cout << j.dump(2) << "\n";
-      } else if (!a->json.empty()) {
-        AtomicWriteOptions w;
-        w.overwrite = a->overwrite;
-        write_file_atomic(a->json, j.dump(2) + "\n", w);
-      }
-    };
-    std::optional<Figure> figure;
+    // The analysis goes out as identify's results do (emit): its figures as JSON under "result",
+    // the data file, its digest and the data notes (resampling, warnings) in the usual places.
+    Result r;
+    r.method = a->method;
+    stamp(r, d);
+    std::vector<ReportFigure> figures;
     const std::string name = std::filesystem::path(a->data).filename().string();
     const std::vector<double> t = column(d, a->time, "--time");
-    nlohmann::json result;
     std::string text;
     if (a->method == "envelope") {
       const std::vector<double> x = column(d, a->position, "--position");
-      EnvelopeResult r;
+      EnvelopeResult e;
       try {
-        r = decay_envelope(t, x);
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(d.where() + e.what());
+        e = decay_envelope(t, x);
+      } catch (const std::invalid_argument& ex) {
+        throw std::invalid_argument(d.where() + ex.what());
       }
-      result = envelope_json(r);
-      if (!a->plot.empty()) figure = envelope_figure(t, x, r, name);
-      text = envelope_text(r);
+      r.json_sections["result"] = envelope_json(e).dump();
+      if (!a->output.plot.empty()) figures.push_back({"fit", "", envelope_figure(t, x, e, name)});
+      text = envelope_text(e);
     } else {
       const std::vector<double> v = column(d, a->velocity, "--velocity");
       std::vector<double> f;
       if (d.has_column(a->force)) f = column(d, a->force, "--force");
       StickSlipOptions o;
       o.velocity_threshold = a->threshold;
-      StickSlipResult r;
+      StickSlipResult ss;
       try {
-        r = detect_stick_slip(t, v, f, o);
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(d.where() + e.what());
+        ss = detect_stick_slip(t, v, f, o);
+      } catch (const std::invalid_argument& ex) {
+        throw std::invalid_argument(d.where() + ex.what());
       }
-      if (!r.found()) {  // data that cannot give an answer: exit 2, with the JSON if asked for
-        const std::string message = d.where() + r.message;
-        const nlohmann::json j = {{"schema", 1},
-                                  {"status", "error"},
-                                  {"message", message},
-                                  {"method", a->method},
-                                  {"data", {{"file", d.file}, {"sha256", d.sha256}}}};
-        print_error(message);
-        write_json(j);
-        return 2;
+      if (!ss.found()) {  // data that cannot give an answer: exit 2, with the JSON if asked for
+        r.status = ResultStatus::error;
+        r.message = d.where() + ss.message;
+        return emit(r, a->output);
       }
-      result = stick_slip_json(r);
-      if (!a->plot.empty()) figure = stick_slip_figure(t, v, f, r, name);
-      text = stick_slip_text(r, !f.empty());
+      r.json_sections["result"] = stick_slip_json(ss).dump();
+      if (!a->output.plot.empty()) figures.push_back({"fit", "", stick_slip_figure(t, v, f, ss, name)});
+      text = stick_slip_text(ss, !f.empty());
     }
-    text = data_note(d) + text;
-    nlohmann::json j = {{"schema", 1},
-                        {"status", "ok"},
-                        {"message", ""},
-                        {"method", a->method},
-                        {"data", {{"file", d.file}, {"sha256", d.sha256}}},
-                        {"result", result}};
-    if (d.resampling || !d.warnings.empty()) {
-      Result notes;  // the data's resampling record and warnings, as identify reports them
-      note_data(notes, d);
-      j["diagnostics"]["warnings"] = notes.diagnostics.warnings;
-      if (d.resampling) j["diagnostics"]["resampling"] = notes.diagnostics.groups.at("resampling");
-    }
-    (a->json == "-" ? std::cerr : std::cout) << text;
-    // The figure (gnuplot may fail) before the JSON, so that a failed run leaves no JSON saying ok.
-    if (figure) {
-      const FigureFiles files = write_figure(*figure, a->plot, a->overwrite);
-      (a->json == "-" ? std::cerr : std::cout) << "figure " << files.figure << " (data " << files.data
-                                               << ", gnuplot script " << files.script << ")\n";
-    }
-    write_json(j);
-    return 0;
+    return emit(r, a->output, data_note(d) + text, &figures);
   };
 }
 

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "frictionlab/format.hpp"
 #include "figures.hpp"
 #include "frictionlab/io/figure.hpp"
 #include "output.hpp"
@@ -25,7 +26,6 @@ struct SimulateArgs {
 // A short human summary of a run: what ran, where it ended, the mode switches.
 std::string summary(const std::string& file, const Scenario& sc, const Trajectory& tr) {
   std::ostringstream out;
-  out.precision(6);
   double vmax = 0.0, fmax = 0.0;
   for (std::size_t i = 0; i < tr.rows(); ++i) {
     vmax = std::max(vmax, std::abs(tr.velocity[i]));
@@ -36,16 +36,16 @@ std::string summary(const std::string& file, const Scenario& sc, const Trajector
       << "friction   " << sc.law.name() << "\n"
       << "solver     " << tr.stats.solver << " (" << tr.stats.steps << " steps, " << tr.stats.restarts
       << " restarts)\n"
-      << "samples    " << tr.rows() << " rows, t = 0 .. " << tr.time.back() << " s\n"
-      << "final      position " << tr.position.back() << ", velocity " << tr.velocity.back() << "\n"
-      << "peak       |velocity| " << vmax << ", |friction| " << fmax << "\n";
+      << "samples    " << tr.rows() << " rows, t = 0 .. " << format_number(tr.time.back()) << " s\n"
+      << "final      position " << format_number(tr.position.back()) << ", velocity " << format_number(tr.velocity.back()) << "\n"
+      << "peak       |velocity| " << format_number(vmax) << ", |friction| " << format_number(fmax) << "\n";
   if (!tr.switches.empty()) {
     out << "switches   " << tr.switches.size() << " (stick/slip mode changes)\n";
     const std::size_t shown = std::min<std::size_t>(tr.switches.size(), 6);
     for (std::size_t i = 0; i < shown; ++i) {
       const auto& s = tr.switches[i];
-      out << "  t = " << s.time << " s  " << switch_kind_name(s.kind) << "  at position " << s.position
-          << ", applied " << s.applied << "\n";
+      out << "  t = " << format_number(s.time) << " s  " << switch_kind_name(s.kind) << "  at position " << format_number(s.position)
+          << ", applied " << format_number(s.applied) << "\n";
     }
     if (shown < tr.switches.size()) out << "  ... (" << tr.switches.size() - shown << " more)\n";
   }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "frictionlab/format.hpp"
 #include "data_options.hpp"
 #include "frictionlab/identify/validate.hpp"
 #include "frictionlab/io/atomic_write.hpp"
@@ -79,14 +80,14 @@ std::string text_of(const Result& r, const std::string& scenario) {
     return s.str();
   }
   for (const auto& p : r.parameters)
-    s << "  " << std::left << std::setw(7) << p.name << " = " << std::right << std::setw(12) << std::setprecision(6) << p.value
+    s << "  " << std::left << std::setw(7) << p.name << " = " << std::right << std::setw(12) << format_number(p.value)
       << " " << p.unit << "\n";
   const auto& v = *r.validation;
   const auto& full = r.diagnostics.groups.at("relative_error_percent_full_rate");
   s << "data " << v.file << ": relative error % (IDIM grid, " << v.samples << " samples; every sample)\n";
   for (const char* name : {"position", "velocity", "acceleration", "force"})
-    s << "  " << std::left << std::setw(13) << name << std::right << std::setw(10) << std::setprecision(4)
-      << v.signal_errors_percent.at(name) << std::setw(10) << full.at(name) << "\n";
+    s << "  " << std::left << std::setw(13) << name << std::right << std::setw(10)
+      << format_number(v.signal_errors_percent.at(name), 4) << std::setw(10) << format_number(full.at(name), 4) << "\n";
   for (const auto& w : r.diagnostics.warnings) s << "warning: " << w << "\n";
   return s.str();
 }

@@ -1,5 +1,7 @@
 #include "data_options.hpp"
 
+#include "frictionlab/format.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -31,13 +33,6 @@ double parse_step(const std::string& text) {
                                 "step (put --resample after DATA, or write --resample=DT)");
   }
   return v;
-}
-
-std::string fmt(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
 }
 
 }  // namespace
@@ -121,6 +116,12 @@ Dataset load_data(const std::string& path, const DataOptions& o) {
   return d;
 }
 
+void stamp(Result& r, const Dataset& d) {
+  r.data_file = d.file;
+  r.data_sha256 = d.sha256;
+  note_data(r, d);
+}
+
 void note_data(Result& r, const Dataset& d) {
   if (d.resampling) {
     const ResampleReport& s = *d.resampling;
@@ -140,8 +141,8 @@ std::string data_note(const Dataset& d) {
   std::string out;
   if (d.resampling) {
     const ResampleReport& s = *d.resampling;
-    out += "resampled    " + std::to_string(s.samples_in) + " samples (steps " + fmt(s.dt_min) + " to " + fmt(s.dt_max) +
-           " s, median " + fmt(s.dt_median) + " s) onto " + std::to_string(s.samples_out) + " at dt " + fmt(s.dt) + " s\n";
+    out += "resampled    " + std::to_string(s.samples_in) + " samples (steps " + format_number(s.dt_min) + " to " + format_number(s.dt_max) +
+           " s, median " + format_number(s.dt_median) + " s) onto " + std::to_string(s.samples_out) + " at dt " + format_number(s.dt) + " s\n";
   }
   for (const auto& w : d.warnings) out += "warning: " + w + "\n";
   return out;

@@ -62,6 +62,9 @@ Dataset load_data(const std::string& path, const ReadOptions& o, const std::stri
 /// load_data with o.read and o.time, then the --scale factors.
 Dataset load_data(const std::string& path, const DataOptions& o);
 
+/// The result stamped with the data file, its digest and the data notes (note_data).
+void stamp(Result& r, const Dataset& d);
+
 /// Puts what reading did into a result: diagnostics.groups["resampling"] = {dt_min, dt_median,
 /// dt_max, dt, max_gap, samples_in, samples_out, merged} (s and sample counts) when the data
 /// were resampled, and the data's warnings into diagnostics.warnings.

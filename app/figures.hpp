@@ -1,5 +1,5 @@
 #pragma once
-// The figure a user would draw first for each kind of result, built from the signals the
+// The figures a user would draw first for each kind of result, built from the signals the
 // library returns (Result::series, Trajectory columns, analysis results). Axis labels carry
 // quantities and SI units.
 
@@ -18,27 +18,12 @@
 
 namespace frictionlab::cli {
 
-/// The axis a result is on, read off its parameter units (N m, rad: rotary; else linear).
-Axis result_axis(const Result& r);
-
-/// The figure of a result by its method: idim (measured and reconstructed force, residual),
-/// sweep (friction map: segment means with std error bars and the fitted law), breakaway
-/// (applied force and velocity over time, breakaway marked), decay (position, turning points
-/// and the fitted envelope), validate (measured and simulated position, velocity, force),
-/// lugre (measured and simulated position, force). Empty when the result has no signals for it.
-std::optional<Figure> result_figure(const Result& r);
-
-/// The friction-velocity map of a result: idim (each fitted sample's force less the inertia and
-/// offset terms, their means and stds in velocity bins, the identified law), sweep (its fit
-/// figure), breakaway (applied force against velocity, Fs at rest with its std, the static law),
-/// lugre (the identified law's steady state). Empty for other methods or without the signals.
-std::optional<Figure> friction_map_figure(const Result& r);
-
-/// The report's figures after the fit figure: "friction-map" (friction_map_figure, except for
-/// sweep, whose fit figure is its map) and, when the result carries a cross-test's signals
-/// (identify idim --validate), "cross-test" (measured and predicted force on the second record,
-/// and their difference). Empty when the result is not ok.
-std::vector<ReportFigure> report_extra_figures(const Result& r);
+/// The figures of a result, in order: the first ("fit") is what --plot draws and the report shows
+/// first; the others follow in the report ("friction-map", "cross-test", ...). Each method
+/// declares its figures and captions in its file under app/methods/ (methods/method.hpp); a
+/// result of no registered method gets its measured and simulated signals, if it has any. Figures
+/// without data are left out; empty when there is nothing to draw.
+std::vector<ReportFigure> result_figures(const Result& r);
 
 /// A simulation's time series: position, velocity, friction and applied force (and motor
 /// current when there is one). `title` names the scenario.

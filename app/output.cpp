@@ -14,6 +14,8 @@
 #include <unistd.h>
 
 #include "figures.hpp"
+#include "frictionlab/format.hpp"
+#include "frictionlab/identify/method.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/io/figure.hpp"
 #include "frictionlab/io/report.hpp"
@@ -180,24 +182,6 @@ ReportInfo report_info(const Result& r, const OutputOptions& o) {
   }
   info.command_line = line;
   return info;
-}
-
-std::string caption(const Result& r) {
-  if (r.method == "idim")
-    return "Measured drive force and the force the identified inverse dynamic model reconstructs from position "
-           "(top), and their difference (bottom), on the identification data after filtering and decimation.";
-  if (r.method == "sweep")
-    return "Friction against velocity: the mean of each steady segment with its standard deviation, and the "
-           "fitted law.";
-  if (r.method == "breakaway")
-    return "Applied force and velocity over the experiment; the point marks the breakaway (Fs), the line the "
-           "identified Coulomb level.";
-  if (r.method == "decay")
-    return "Free oscillation with its turning points and the envelope fitted to their half swings.";
-  if (r.method == "validate")
-    return "Measured signals and the simulation of the identified model driven by the same input.";
-  if (r.method == "lugre") return "Measured and simulated position and force of the identified LuGre model.";
-  return "Signals of the result.";
 }
 
 }  // namespace
@@ -377,24 +361,22 @@ std::string result_text(const Result& r) {
   for (const auto& p : r.parameters) w = std::max(w, p.name.size());
   for (const auto& p : r.parameters) {
     s << "  " << std::left << std::setw(static_cast<int>(w)) << p.name << " = " << std::right << std::setw(12)
-      << std::setprecision(6) << p.value << "  +- " << std::left << std::setw(10) << std::setprecision(3) << p.std << " "
-      << p.unit << (p.flag.empty() ? "" : "  (" + p.flag + ")") << "\n";
+      << format_number(p.value, 6) << "  +- " << std::left << std::setw(10) << format_number(p.std, 3) << " " << p.unit
+      << (p.flag.empty() ? "" : "  (" + p.flag + ")") << "\n";
   }
-  // The fitted signal: force for most methods, the energy lost per half cycle for decay, the
-  // position for lugre's output error.
-  const Axis axis = result_axis(r);
-  const std::string fit_unit = r.method == "decay"   ? "J"
-                               : r.method == "lugre" ? std::string(unit(Quantity::displacement, axis))
-                                                     : std::string(unit(Quantity::force, axis));
-  s << std::setprecision(4) << "fit: relative error " << r.fit.relative_error_percent << " %, rmse " << r.fit.rmse << " "
-    << fit_unit << "\n";
+  // The fitted signal's unit comes with the result (set by its method: identify/method.hpp).
+  const std::string fit_unit = fit_signal_and_unit(r).second;
+  s << "fit: relative error " << format_number(r.fit.relative_error_percent, 4) << " %, rmse "
+    << format_number(r.fit.rmse, 4) << " " << fit_unit << "\n";
   if (r.validation)
-    s << "cross-test " << r.validation->file << ": relative error " << r.validation->relative_error_percent << " %, rmse "
-      << r.validation->rmse << " " << fit_unit << "\n";
-  if (std::isfinite(r.diagnostics.condition_number)) s << "condition number " << r.diagnostics.condition_number << "\n";
+    s << "cross-test " << r.validation->file << ": relative error "
+      << format_number(r.validation->relative_error_percent, 4) << " %, rmse " << format_number(r.validation->rmse, 4)
+      << " " << fit_unit << "\n";
+  if (std::isfinite(r.diagnostics.condition_number))
+    s << "condition number " << format_number(r.diagnostics.condition_number, 4) << "\n";
   for (const auto& [name, group] : r.diagnostics.groups) {
     s << name << ":";
-    for (const auto& [k, v] : group) s << " " << k << " = " << std::setprecision(6) << v;
+    for (const auto& [k, v] : group) s << " " << k << " = " << format_number(v, 6);
     s << "\n";
   }
   for (const auto& [name, word] : r.diagnostics.texts) s << name << ": " << word << "\n";
@@ -402,7 +384,8 @@ std::string result_text(const Result& r) {
   return s.str();
 }
 
-int emit(const Result& r, const OutputOptions& o, const std::string& text_override) {
+int emit(const Result& r, const OutputOptions& o, const std::string& text_override,
+         const std::vector<ReportFigure>* figures) {
   progress_stage("writing results");
   std::ostream& note = o.json == "-" ? std::cerr : std::cout;
   if (!r.ok()) {
@@ -416,18 +399,17 @@ int emit(const Result& r, const OutputOptions& o, const std::string& text_overri
     (o.json == "-" ? std::cerr : std::cout) << (text_override.empty() ? result_text(r) : text_override);
     // The figure and the report first: they run gnuplot and may fail; the JSON, written last,
     // then never says ok for a run that failed (the error JSON replaces it, see fail()).
-    const std::optional<Figure> figure = result_figure(r);
+    // The method's figures (app/methods/), or the ones the command drew itself.
+    const std::vector<ReportFigure> figs = figures ? *figures : result_figures(r);
+    const bool has_fit = !figs.empty() && figs.front().name == "fit";
     if (!o.plot.empty()) {
-      if (!figure) throw std::runtime_error("--plot: the " + r.method + " result carries no signals to draw");
+      if (!has_fit) throw std::runtime_error("--plot: the " + r.method + " result carries no signals to draw");
       progress_stage("drawing " + o.plot);
-      const FigureFiles files = write_figure(*figure, o.plot, o.overwrite);
+      const FigureFiles files = write_figure(figs.front().figure, o.plot, o.overwrite);
       note << "figure " << files.figure << " (data " << files.data << ", gnuplot script " << files.script << ")\n";
     }
     if (!o.report.empty()) {
       progress_stage("writing report " + o.report);
-      std::vector<ReportFigure> figs;
-      if (figure) figs.push_back({"fit", caption(r), *figure});
-      for (auto& f : report_extra_figures(r)) figs.push_back(std::move(f));
       const std::string page = write_report(r, figs, report_info(r, o), o.report, o.overwrite);
       note << "report " << page << "\n";
     }

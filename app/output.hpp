@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "frictionlab/identify/result.hpp"
+#include "frictionlab/io/report.hpp"
 
 namespace frictionlab::cli {
 
@@ -80,7 +81,11 @@ std::string result_text(const Result& r);
 /// exit status: 0 when the result is ok, 2 when its status is error (the data could not give an
 /// answer: one error line on stderr as fail() prints it; the JSON and the report still say why;
 /// no figure is drawn).
-int emit(const Result& r, const OutputOptions& o, const std::string& text_override = "");
+/// The figures are the method's (result_figures of figures.hpp: the first, "fit", is what --plot
+/// draws), or `figures` when given (analyze draws its own from the analysis result).
+/// This is the one output path of identify, validate and analyze.
+int emit(const Result& r, const OutputOptions& o, const std::string& text_override = "",
+         const std::vector<ReportFigure>* figures = nullptr);
 
 /// A progress line on stderr for long runs, only when stderr is a terminal (and
 /// FRICTIONLAB_NO_PROGRESS is unset): "frictionlab identify idim: fitting ... 3.2 s", shown once

@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "common.hpp"
+#include "frictionlab/format.hpp"
 #include "frictionlab/identify/breakaway.hpp"
 #include "frictionlab/identify/decay.hpp"
 #include "frictionlab/identify/idim.hpp"
@@ -34,14 +35,25 @@ std::string static_model_name(StaticFitModel m) {
   return "?";
 }
 
-std::string num(double x, int precision = 6) {
-  std::ostringstream s;
-  s << std::setprecision(precision) << x;
-  return s.str();
+std::string num(double x, int precision = 6) { return format_number(x, precision); }
+
+// The one conversion of parameters to a Python dict: name -> get(parameter), in their order.
+template <class Get>
+py::dict by_name(const std::vector<Parameter>& ps, Get get) {
+  py::dict d;
+  for (const auto& p : ps) d[py::str(p.name)] = get(p);
+  return d;
+}
+
+// A static fit's parameters with the units of `axis` (the fit itself knows quantities only).
+std::vector<Parameter> with_units(const std::vector<Parameter>& ps, Axis axis) {
+  std::vector<Parameter> out;
+  for (const auto& p : ps) out.push_back(p.with_unit(axis));
+  return out;
 }
 
 // The aligned parameter table of a result (name, value, +- std, unit), one line each.
-std::string parameter_table(const std::vector<ParameterEstimate>& ps) {
+std::string parameter_table(const std::vector<Parameter>& ps) {
   std::size_t wn = 4, wv = 5, ws = 3;
   for (const auto& p : ps) {
     wn = std::max(wn, p.name.size());
@@ -118,13 +130,13 @@ void axis_property(py::class_<Options>& c) {
 
 void init_identify(py::module_& m) {
   // ---- the result -------------------------------------------------------------------------
-  py::class_<ParameterEstimate>(m, "Parameter", "One identified parameter: value and standard deviation in `unit` (SI).")
-      .def_readonly("name", &ParameterEstimate::name, "Parameter name, e.g. 'M', 'Fc', 'Fv_pos'.")
-      .def_readonly("value", &ParameterEstimate::value, "Estimate, SI unit `unit`.")
-      .def_readonly("std", &ParameterEstimate::std, "Standard deviation, same unit (NaN when unknown).")
-      .def_readonly("unit", &ParameterEstimate::unit, "Unit, e.g. 'N', 'N s/m', 'kg', 'N m', 'N m s/rad', 'kg m^2'.")
-      .def("__iter__", [](const ParameterEstimate& p) { return py::iter(py::make_tuple(p.value, p.std, p.unit)); })
-      .def("__repr__", [](const ParameterEstimate& p) {
+  py::class_<Parameter>(m, "Parameter", "One identified parameter: value and standard deviation in `unit` (SI).")
+      .def_readonly("name", &Parameter::name, "Parameter name, e.g. 'M', 'Fc', 'Fv_pos'.")
+      .def_readonly("value", &Parameter::value, "Estimate, SI unit `unit`.")
+      .def_readonly("std", &Parameter::std, "Standard deviation, same unit (NaN when unknown).")
+      .def_readonly("unit", &Parameter::unit, "Unit, e.g. 'N', 'N s/m', 'kg', 'N m', 'N m s/rad', 'kg m^2'.")
+      .def("__iter__", [](const Parameter& p) { return py::iter(py::make_tuple(p.value, p.std, p.unit)); })
+      .def("__repr__", [](const Parameter& p) {
         return "Parameter(" + p.name + " = " + num(p.value) + " \u00b1 " + num(p.std, 3) + " " + p.unit + ")";
       });
 
@@ -173,26 +185,15 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
       .def_readonly("model", &Result::model, "Model name, e.g. 'coulomb-viscous'.")
       .def_readonly("data_file", &Result::data_file, "Identification data file ('' for arrays).")
       .def_readonly("data_sha256", &Result::data_sha256, "Its SHA-256 ('' for arrays).")
-      .def_property_readonly("parameters", [](const Result& r) {
-        py::dict d;
-        for (const auto& p : r.parameters) d[py::str(p.name)] = p;
-        return d;
-      }, "Parameters by name (in the method's order): Parameter(name, value, std, unit).")
-      .def_property_readonly("values", [](const Result& r) {
-        py::dict d;
-        for (const auto& p : r.parameters) d[py::str(p.name)] = p.value;
-        return d;
-      }, "Parameter values by name (SI units).")
-      .def_property_readonly("std", [](const Result& r) {
-        py::dict d;
-        for (const auto& p : r.parameters) d[py::str(p.name)] = p.std;
-        return d;
-      }, "Standard deviations by name (SI units).")
-      .def_property_readonly("units", [](const Result& r) {
-        py::dict d;
-        for (const auto& p : r.parameters) d[py::str(p.name)] = p.unit;
-        return d;
-      }, "Units by name.")
+      .def_property_readonly("parameters", [](const Result& r) { return by_name(r.parameters, [](const Parameter& p) { return p; }); },
+                             "Parameters by name (in the method's order): Parameter(name, value, std, unit).")
+      .def_property_readonly("values", [](const Result& r) { return by_name(r.parameters, [](const Parameter& p) { return p.value; }); },
+                             "Parameter values by name (SI units).")
+      .def_property_readonly("std", [](const Result& r) { return by_name(r.parameters, [](const Parameter& p) { return p.std; }); },
+                             "Standard deviations by name (SI units).")
+      .def_property_readonly("units", [](const Result& r) { return by_name(r.parameters, [](const Parameter& p) { return p.unit; }); },
+                             "Units by name.")
+      .def_property_readonly("axis", [](const Result& r) { return axis_name(r.axis); }, "'linear' or 'rotary': the axis the units are on.")
       .def_readonly("fit", &Result::fit, "FitFigures on the identification data.")
       .def_readonly("validation", &Result::validation, "ValidationFigures on a second data set, or None.")
       .def_readonly("diagnostics", &Result::diagnostics, "Diagnostics: condition_number, warnings, numbers, groups, lists.")
@@ -408,30 +409,22 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
       .def_readonly("converged", &StaticFit::converged, "True when the solver converged.")
       .def_readonly("warnings", &StaticFit::warnings, "Human-readable warnings.")
       .def("parameters", [](const StaticFit& f, const std::string& axis) {
-        const Axis a = parse_axis(axis);
-        py::dict d;
-        for (const auto& p : f.parameters)
-          d[py::str(p.name)] = ParameterEstimate{p.name, p.value, p.std, std::string(unit(p.quantity, a)), ""};
-        return d;
+        // The flag stays out, as before: the fit's parameters are shown as a result's would be.
+        std::vector<Parameter> ps = with_units(f.parameters, parse_axis(axis));
+        for (auto& p : ps) p.flag.clear();
+        return by_name(ps, [](const Parameter& p) { return p; });
       }, py::arg("axis") = "linear", "Fitted parameters by name: Parameter(name, value, std, unit) with units of the axis.")
-      .def_property_readonly("values", [](const StaticFit& f) {
-        py::dict d;
-        for (const auto& p : f.parameters) d[py::str(p.name)] = p.value;
-        return d;
-      }, "Fitted values by name (SI).")
-      .def_property_readonly("std", [](const StaticFit& f) {
-        py::dict d;
-        for (const auto& p : f.parameters) d[py::str(p.name)] = p.std;
-        return d;
-      }, "Standard deviations by name (SI).")
+      .def_property_readonly("values", [](const StaticFit& f) { return by_name(f.parameters, [](const Parameter& p) { return p.value; }); },
+                             "Fitted values by name (SI).")
+      .def_property_readonly("std", [](const StaticFit& f) { return by_name(f.parameters, [](const Parameter& p) { return p.std; }); },
+                             "Standard deviations by name (SI).")
       .def("__getitem__", [](const StaticFit& f, const std::string& name) {
         for (const auto& p : f.parameters)
           if (p.name == name) return p.value;
         throw py::key_error(name);
       })
       .def("__repr__", [](const StaticFit& f) {
-        std::vector<ParameterEstimate> ps;
-        for (const auto& p : f.parameters) ps.push_back({p.name, p.value, p.std, std::string(unit(p.quantity, Axis::linear)), p.flag});
+        const std::vector<Parameter> ps = with_units(f.parameters, Axis::linear);
         std::string s = "<frictionlab.StaticFit law='" + f.law.name() + "' converged=" + (f.converged ? "True" : "False") + ">\n" +
                         parameter_table(ps) + "  relative error " + num(f.relative_error_percent, 4) + " %, rmse " +
                         num(f.rmse, 4) + ", " + std::to_string(f.samples) + " points\n";

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "frictionlab/format.hpp"
+
 namespace frictionlab {
 
 const char* decay_kind_name(DecayKind kind) {
@@ -140,7 +142,7 @@ EnvelopeResult decay_envelope(std::span<const double> t, std::span<const double>
   for (std::size_t i = 1; i < t.size(); ++i)
     if (!(t[i] > t[i - 1]))
       throw std::invalid_argument("decay envelope: time must increase strictly; sample " + std::to_string(i + 1) +
-                                  " has t = " + std::to_string(t[i]) + " after " + std::to_string(t[i - 1]));
+                                  " has t = " + format_number(t[i]) + " after " + format_number(t[i - 1]));
 
   // Extremes: sign changes of the slope, skipping flat stretches.
   // The start of the record counts as an extreme when it starts at rest (a release from an

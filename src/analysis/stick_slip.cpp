@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "frictionlab/format.hpp"
+
 namespace frictionlab {
 
 StickSlipResult detect_stick_slip(std::span<const double> t, std::span<const double> v, std::span<const double> force,
@@ -18,7 +20,7 @@ StickSlipResult detect_stick_slip(std::span<const double> t, std::span<const dou
   for (std::size_t i = 1; i < t.size(); ++i)
     if (!(t[i] > t[i - 1]))
       throw std::invalid_argument("stick-slip: time must increase strictly; sample " + std::to_string(i + 1) +
-                                  " has t = " + std::to_string(t[i]) + " after " + std::to_string(t[i - 1]));
+                                  " has t = " + format_number(t[i]) + " after " + format_number(t[i - 1]));
   if (!(options.velocity_threshold >= 0))
     throw std::invalid_argument("stick-slip: velocity_threshold = " + std::to_string(options.velocity_threshold) +
                                 " must be >= 0 (m/s or rad/s; 0 = 1 % of the largest |v|)");
@@ -67,12 +69,12 @@ StickSlipResult detect_stick_slip(std::span<const double> t, std::span<const dou
   for (const Run& run : runs)
     if (run.i0 > 0) starts.push_back(t[run.i0]);
   if (runs.empty()) {
-    r.message = "no slip found: velocity never exceeded " + std::to_string(thr) +
+    r.message = "no slip found: velocity never exceeded " + format_number(thr) +
                 " m/s (rad/s on a rotary axis; the stuck threshold" +
                 (options.velocity_threshold > 0 ? std::string(" given") : std::string(", 1 % of the largest |v|")) +
-                ", largest |v| = " + std::to_string(vmax) + ")";
+                ", largest |v| = " + format_number(vmax) + ")";
   } else if (starts.empty()) {
-    r.message = "no slip from stick found: the record slides from its start (|v| above " + std::to_string(thr) +
+    r.message = "no slip from stick found: the record slides from its start (|v| above " + format_number(thr) +
                 " m/s or rad/s) and never sticks then slips again";
   }
   if (starts.size() < 2) {

@@ -54,7 +54,7 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
     throw std::invalid_argument("breakaway: time, force and velocity must have equal lengths (have " + std::to_string(n) +
                                 ", " + std::to_string(d.force.size()) + ", " + std::to_string(d.velocity.size()) + ")");
   const double dt = regular_time_step(d.time, "breakaway");
-  Result r = make_result("breakaway", "static-coulomb-viscous");
+  Result r = make_result("breakaway", "static-coulomb-viscous", o.axis);
   const auto warn = [&](const std::string& w) { r.diagnostics.warnings.push_back(w); };
   const auto add = [&](const std::string& name, double v, double s, Quantity q) { add_parameter(r, name, v, s, q, o.axis); };
 

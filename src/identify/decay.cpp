@@ -118,7 +118,7 @@ Result identify_decay(const DecayData& d, const DecayOptions& o) {
   const double dt = regular_time_step(d.time, "decay");
   const bool relative = !have_k && !(std::isfinite(o.inertia) && o.inertia > 0);
   const double k = have_k ? o.stiffness : (relative ? 1.0 : o.inertia * o.natural_frequency * o.natural_frequency);
-  Result r = make_result("decay", "coulomb-viscous");
+  Result r = make_result("decay", "coulomb-viscous", o.axis);
 
   const EnergyBalance full = energy_balance(d.time, d.position, dt, o, k);
   if (!full.message.empty()) return fail(r, full.message);

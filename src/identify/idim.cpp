@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "frictionlab/identify/method.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 #include "frictionlab/signal/butterworth.hpp"
 #include "frictionlab/signal/decimate.hpp"
@@ -400,7 +401,7 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
 
 namespace {
 Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
-  Result r;
+  Result r = new_result(method_info("idim"), "", options.axis);
   r.method = "idim";
   r.data_file = data.file;
   r.data_sha256 = data.sha256;

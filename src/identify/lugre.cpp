@@ -266,7 +266,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   st.vd = o.vd;
   if (given) st = static_part_of(*o.static_law, o);
 
-  Result r = make_result("lugre", "lugre");
+  Result r = make_result("lugre", "lugre", o.axis);
   const auto warn = [&](const std::string& w) { r.diagnostics.warnings.push_back(w); };
   const auto vunit = std::string(unit(Quantity::velocity, o.axis));
   const auto punit = std::string(unit(Quantity::displacement, o.axis));
@@ -715,7 +715,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
     Result probe = r;
     set_uncertainty_from_information(probe, names, information, s2, states);
     for (std::size_t i = 0; i < names.size(); ++i) {
-      const ParameterEstimate* p = probe.find(names[i]);
+      const Parameter* p = probe.find(names[i]);
       if (!states[i].at_bound && std::isfinite(p->std) && p->std > std::abs(p->value)) {
         states[i].undetermined = true;
         states[i].reason = "its linearised std " + format_number(p->std) + " exceeds its value";

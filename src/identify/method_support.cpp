@@ -9,11 +9,8 @@
 
 namespace frictionlab::detail {
 
-Result make_result(const std::string& method, const std::string& model) {
-  Result r;
-  r.method = method;
-  r.model = model;
-  return r;
+Result make_result(const std::string& method, const std::string& model, Axis axis) {
+  return new_result(method_info(method), model, axis);
 }
 
 Result fail(Result& r, const std::string& message) {
@@ -24,7 +21,7 @@ Result fail(Result& r, const std::string& message) {
 }
 
 void add_parameter(Result& r, const std::string& name, double value, double std, Quantity q, Axis axis) {
-  r.parameters.push_back({name, value, std, std::string(unit(q, axis)), ""});
+  r.parameters.emplace_back(name, value, std, q, axis);
 }
 
 void set_fit(Result& r, const Eigen::VectorXd& y, const Eigen::VectorXd& y_hat) {

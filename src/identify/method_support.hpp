@@ -5,16 +5,16 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "frictionlab/format.hpp"
+#include "frictionlab/identify/method.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
 
 namespace frictionlab::detail {
 
-/// A number for messages: 6 significant digits, no trailing zeros.
-inline std::string format_number(double x) { return format_value(x, 6); }
-
-/// An empty ok Result of `method` fitting `model`, reporting units for `axis`.
-Result make_result(const std::string& method, const std::string& model);
+/// An empty ok Result of `method` (identify/method.hpp) fitting `model` on `axis`: the axis and
+/// the fit's quantity and unit set (new_result).
+Result make_result(const std::string& method, const std::string& model, Axis axis);
 
 /// Sets status error with `message` and returns the result (for `return fail(r, "...")`).
 Result fail(Result& r, const std::string& message);

@@ -11,7 +11,7 @@ nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : 
 
 }  // namespace
 
-const ParameterEstimate* Result::find(const std::string& name) const {
+const Parameter* Result::find(const std::string& name) const {
   for (const auto& p : parameters)
     if (p.name == name) return &p;
   return nullptr;
@@ -33,12 +33,15 @@ std::string to_json(const Result& r, int indent) {
   j["method"] = r.method;
   j["model"] = r.model;
   j["data"] = {{"file", r.data_file}, {"sha256", r.data_sha256}};
+  j["axis"] = r.axis == Axis::rotary ? "rotary" : "linear";
   nlohmann::json params = nlohmann::json::object();
   for (const auto& p : r.parameters) params[p.name] = {{"value", number(p.value)}, {"std", number(p.std)}, {"unit", p.unit}};
   j["parameters"] = params;
   j["fit"] = {{"relative_error_percent", number(r.fit.relative_error_percent)},
               {"rmse", number(r.fit.rmse)},
               {"samples", r.fit.samples}};
+  if (!r.fit.quantity.empty()) j["fit"]["quantity"] = r.fit.quantity;
+  if (!r.fit.unit.empty()) j["fit"]["unit"] = r.fit.unit;
   if (r.validation) {
     const auto& v = *r.validation;
     j["validation"] = {{"file", v.file},
@@ -89,6 +92,13 @@ std::string to_json(const Result& r, int indent) {
     for (const auto& [k, v] : r.law->arrays) law[k] = v;
     for (const auto& [k, v] : r.law->strings) law[k] = v;
     j["law"] = law;
+  }
+  for (const auto& [key, text] : r.json_sections) {
+    try {
+      j[key] = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+      throw std::invalid_argument("result of " + r.method + ": section '" + key + "' is not valid JSON: " + e.what());
+    }
   }
   return j.dump(indent);
 }

@@ -398,7 +398,7 @@ void finish(StaticFit& fit, const Eigen::VectorXd& v, const Eigen::VectorXd& f, 
 }
 
 // Stribeck parameters of one side in the law's order (Fc, Fs, vs, delta, Fv) with std.
-std::vector<FittedParameter> stribeck_parameters(const OneSided& s, const std::string& suffix) {
+std::vector<Parameter> stribeck_parameters(const OneSided& s, const std::string& suffix) {
   auto sd = [&](int k) { return std::sqrt(std::max(0.0, s.cov(k, k))); };
   const double var_fs = s.cov(kFc, kFc) + s.cov(kDF, kDF) + 2 * s.cov(kFc, kDF);
   return {{"Fc" + suffix, s.p[kFc], sd(kFc), Quantity::force, ""},

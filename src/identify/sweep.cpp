@@ -130,7 +130,7 @@ Result identify_sweep(const SweepData& d, const SweepOptions& o) {
                             : o.fit.model == StaticFitModel::stribeck_asymmetric ? "stribeck-asymmetric"
                             : o.fit.model == StaticFitModel::coulomb_viscous ? "coulomb-viscous"
                                                                               : "coulomb-viscous-asymmetric";
-  Result r = make_result("sweep", model);
+  Result r = make_result("sweep", model, o.axis);
   if (d.time.size() >= 2 && o.windows.empty()) {
     const double dt = (d.time[d.time.size() - 1] - d.time[0]) / static_cast<double>(d.time.size() - 1);
     r.diagnostics.numbers["smoothing_samples"] =

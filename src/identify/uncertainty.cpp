@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-ParameterEstimate& find_parameter(Result& r, const std::string& name) {
+Parameter& find_parameter(Result& r, const std::string& name) {
   for (auto& p : r.parameters)
     if (p.name == name) return p;
   std::string have;
@@ -53,7 +53,7 @@ Eigen::MatrixXd set_uncertainty_from_information(Result& r, const std::vector<st
     throw std::invalid_argument("uncertainty: " + std::to_string(states_in.size()) + " parameter states for " +
                                 std::to_string(p) + " parameters");
   std::vector<ParameterState> st = states_in.empty() ? std::vector<ParameterState>(static_cast<std::size_t>(p)) : states_in;
-  std::vector<ParameterEstimate*> est;
+  std::vector<Parameter*> est;
   for (const auto& n : names) est.push_back(&find_parameter(r, n));
 
   // 1. Columns without information, and the method's own verdicts.
@@ -115,7 +115,7 @@ Eigen::MatrixXd set_uncertainty_from_information(Result& r, const std::vector<st
   diag.correlation.matrix.assign(static_cast<std::size_t>(p), std::vector<double>(static_cast<std::size_t>(p), kNaN));
   for (Eigen::Index i = 0; i < p; ++i) {
     const auto u = static_cast<std::size_t>(i);
-    ParameterEstimate& e = *est[u];
+    Parameter& e = *est[u];
     diag.correlation.matrix[u][u] = 1.0;
     if (excluded[u]) {
       e.std = kNaN;

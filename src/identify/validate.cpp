@@ -1,6 +1,7 @@
 // Validation by simulation: see include/frictionlab/identify/validate.hpp.
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/identify/validate.hpp"
+#include "frictionlab/identify/method.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -67,7 +68,7 @@ IdentifiedModel model_from_result(const Result& r) {
   if (!r.law)
     throw std::invalid_argument("model: the " + r.method + " result has no friction law ('law'); expected one to simulate");
   IdentifiedModel m{FrictionLaw::from_spec(*r.law), AxisParams{}, r.method, r.data_file};
-  const ParameterEstimate* M = r.find("M");
+  const Parameter* M = r.find("M");
   if (!M) throw std::invalid_argument("model: no parameter 'M' (inertia, kg or kg m^2); expected one to simulate");
   m.axis.M = M->value;
   if (const auto* off = r.find("offset")) m.axis.offset = off->value;
@@ -111,7 +112,7 @@ Result validate_model(const IdentifiedModel& model, const Scenario& scenario, co
   const Vec f_sim = Eigen::Map<const Vec>(tr.drive.data(), n);
   const Motion sim = derive(q_sim, dt, po);
 
-  Result r;
+  Result r = new_result(method_info("validate"), "", options.processing.axis);
   r.method = "validate";
   r.model = model.law.name();
   r.data_file = model.source;

@@ -21,6 +21,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "frictionlab/format.hpp"
+
 extern char** environ;
 
 namespace frictionlab {
@@ -58,12 +60,8 @@ std::string enhanced(const std::string& s) {
   return gp_quote(out);
 }
 
-std::string number(double x) {
-  if (!std::isfinite(x)) return "NaN";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", x);
-  return buf;
-}
+// A data file value: gnuplot's "NaN" for a gap, else 10 significant digits (a figure's precision).
+std::string number(double x) { return std::isfinite(x) ? format_number(x, 10) : "NaN"; }
 
 bool drawable(const FigureSeries& s) { return !s.x.empty(); }
 

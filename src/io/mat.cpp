@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "frictionlab/format.hpp"
 #include "frictionlab/io/sha256.hpp"
 
 namespace frictionlab {
@@ -354,8 +355,7 @@ Dataset read_mat(const std::string& path) {
     }
     if (bytes > kMaxInflateRatio * file_bytes) {
       if (info->rank > 3) shape = "rank-" + std::to_string(info->rank) + " array of";
-      char gigabytes[32];
-      std::snprintf(gigabytes, sizeof gigabytes, "%.3g", bytes / 1e9);  // may be far beyond any integer
+      const std::string gigabytes = format_number(bytes / 1e9, 3);  // may be far beyond any integer
       fail("variable " + (info->name != nullptr ? "'" + std::string(info->name) + "'" : std::to_string(declared_count) + " (no name)") +
            " declares " + shape + " values (" + gigabytes + " GB) but the file has " + std::to_string(file_size) +
            " bytes: corrupt file");

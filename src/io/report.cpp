@@ -16,6 +16,8 @@
 
 #include <sys/stat.h>
 
+#include "frictionlab/format.hpp"
+#include "frictionlab/identify/method.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 
 namespace frictionlab {
@@ -39,41 +41,8 @@ std::string esc(const std::string& s) {
   return out;
 }
 
-std::string general(double x, int digits = 6) {
-  if (std::isnan(x)) return "n/a";
-  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
-  return buf;
-}
-
-// A value to the precision its standard deviation supports: the std to two significant digits
-// and the value to the same decimal place (95.10 +- 0.11). Plain 6 significant digits when the
-// std is unknown or zero; scientific notation for very large or small magnitudes.
-std::pair<std::string, std::string> value_and_std(double value, double sd) {
-  if (!std::isfinite(value)) return {general(value), general(sd, 2)};
-  if (!std::isfinite(sd) || sd <= 0) return {general(value), sd == 0 ? "0" : "n/a"};
-  const int decimals = 1 - static_cast<int>(std::floor(std::log10(sd)));
-  const double mag = std::max(std::abs(value), sd);
-  char v[48], s[48];
-  if (decimals >= 0 && decimals <= 8 && mag < 1e7) {
-    std::snprintf(v, sizeof v, "%.*f", decimals, value);
-    std::snprintf(s, sizeof s, "%.*f", decimals, sd);
-  } else {
-    const int exponent = static_cast<int>(std::floor(std::log10(mag)));
-    const int sig = std::clamp(exponent + decimals, 1, 15);  // digits after the point in d.ddd e+XX
-    std::snprintf(v, sizeof v, "%.*e", std::max(sig, 1), value);
-    std::snprintf(s, sizeof s, "%.1e", sd);
-  }
-  return {v, s};
-}
-
-// The force unit of a result, read off its parameters (rotary axes print "N m").
-std::string force_unit(const Result& r) {
-  for (const auto& p : r.parameters)
-    if (p.unit == "N m" || p.unit.rfind("N m ", 0) == 0 || p.unit == "kg m^2") return "N m";
-  return "N";
-}
+// A number in a table cell: format_number, "n/a" for NaN (a figure not computed).
+std::string general(double x, int digits = 6) { return std::isnan(x) ? "n/a" : format_number(x, digits); }
 
 std::string now_utc() {
   const std::time_t t = std::time(nullptr);
@@ -219,7 +188,10 @@ std::string report_html(const Result& r, const std::vector<std::pair<std::string
   if (r.validation)
     h << "<tr><th>validation file</th><td><code>" << esc(r.validation->file) << "</code></td></tr>\n"
       << "<tr><th>its SHA-256</th><td><code>" << esc(r.validation->sha256) << "</code></td></tr>\n";
-  h << "<tr><th>method</th><td>" << esc(r.method) << "</td></tr>\n"
+  std::string summary;  // the library's line on the method, when it is one of the library's
+  for (const auto& m : identification_methods())
+    if (m.name == r.method) summary = m.summary;
+  h << "<tr><th>method</th><td>" << esc(r.method) << (summary.empty() ? "" : ": " + esc(summary)) << "</td></tr>\n"
     << "<tr><th>model</th><td>" << esc(r.model) << "</td></tr>\n";
   if (!info.command_line.empty())
     h << "<tr><th>command</th><td><code>" << esc(info.command_line) << "</code></td></tr>\n";
@@ -232,7 +204,7 @@ std::string report_html(const Result& r, const std::vector<std::pair<std::string
     h << "<table id=\"parameter-table\"><thead><tr><th>parameter</th><th>value</th><th>&plusmn; std</th><th>unit</th>"
       << "<th>relative std</th></tr></thead><tbody>\n";
     for (const auto& p : r.parameters) {
-      const auto [v, s] = value_and_std(p.value, p.std);
+      const auto [v, s] = format_with_std(p.value, p.std);
       const double rel = std::abs(p.value) > 0 ? 100.0 * p.std / std::abs(p.value) : NAN;
       h << "<tr><td><b>" << esc(p.name) << "</b></td><td class=\"num\" title=\"" << general(p.value, 17) << "\">" << v
         << "</td><td class=\"num\">" << (p.flag.empty() ? s : "n/a (" + esc(p.flag) + ")") << "</td><td>" << esc(p.unit) << "</td><td class=\"num\">"
@@ -242,10 +214,9 @@ std::string report_html(const Result& r, const std::vector<std::pair<std::string
   }
 
   // Fit and validation figures.
-  const bool force_fit = r.method == "idim" || r.method == "sweep" || r.method == "breakaway" || r.method == "lugre";
-  std::string rmse_unit;
-  if (force_fit) rmse_unit.append(" ").append(force_unit(r));
-  else if (r.method == "decay") rmse_unit = " J";
+  // The fitted signal and its unit come with the result (set by its method).
+  const auto [fit_signal, fit_unit] = fit_signal_and_unit(r);
+  const std::string rmse_unit = fit_unit.empty() ? "" : " " + fit_unit;
   h << "<h2 id=\"fit\">Fit</h2>\n";
   table_head(h, {"data", "relative error", "rmse", "samples"});
   h << "<tr><td>identification: <code>" << esc(fs::path(r.data_file).filename().string()) << "</code></td><td class=\"num\">"
@@ -258,7 +229,7 @@ std::string report_html(const Result& r, const std::vector<std::pair<std::string
       << r.validation->samples << "</td></tr>\n";
   h << "</tbody></table>\n<p class=\"note\">Relative error = 100 &middot; ||y &minus; &#375;|| / ||y||; rmse in the "
        "unit of the fitted signal"
-    << (r.method == "decay" ? " (energy lost per half cycle)" : "") << ".</p>\n";
+    << (fit_signal.empty() ? "" : " (" + esc(fit_signal) + ")") << ".</p>\n";
 
   // Warnings.
   h << "<h2 id=\"warnings\">Warnings</h2>\n";

@@ -162,8 +162,8 @@ int FrictionLaw::num_states() const {
       law_);
 }
 
-std::vector<ParameterValue> FrictionLaw::parameters() const {
-  std::vector<ParameterValue> out;
+std::vector<Parameter> FrictionLaw::parameters() const {
+  std::vector<Parameter> out;
   std::visit(
       [&](const auto& law) {
         using Law = std::decay_t<decltype(law)>;

@@ -16,6 +16,7 @@ std::string_view unit(Quantity q, Axis axis) {
     case Quantity::rate: return "1/s";
     case Quantity::force_rate: return rot ? "N m/s" : "N/s";
     case Quantity::dimensionless: return "";
+    case Quantity::energy: return "J";
   }
   return "";
 }

@@ -14,22 +14,15 @@
 
 namespace frictionlab {
 
-/// One identified parameter.
-struct ParameterEstimate {
-  std::string name;  ///< DESIGN.md name: "M", "Fv", "Fc", "offset", "Fc_pos", ...
-  double value = 0;  ///< SI units, see `unit`
-  double std = 0;    ///< standard deviation, same unit (NaN when unknown or not determined by the data)
-  std::string unit;  ///< e.g. "N", "N s/m", "kg"
-  /// Why `std` is NaN, for text output and reports: "" (determined), "undetermined" (the data
-  /// cannot determine it) or "at bound" (the fit ended at a bound). See identify/uncertainty.hpp.
-  std::string flag;
-};
-
 /// How well the identified model reproduces the data it was identified on.
 struct FitFigures {
   double relative_error_percent = std::numeric_limits<double>::quiet_NaN();  ///< 100 ||y - y_hat|| / ||y||
   double rmse = std::numeric_limits<double>::quiet_NaN();                    ///< sqrt(mean((y - y_hat)^2)), unit of y
   std::size_t samples = 0;                                                   ///< samples in the fit
+  /// The fitted signal in words ("drive force", "energy lost per half cycle", "position"), set by
+  /// the method (identify/method.hpp); empty when there is no single one.
+  std::string quantity;
+  std::string unit;  ///< rmse's unit on the result's axis ("N", "N m", "J", "m"); empty with quantity
 };
 
 /// The same figures on a second data set (cross-test), with that file's name and digest.
@@ -83,7 +76,9 @@ struct Result {
   std::string model;        ///< friction law name, e.g. "coulomb-viscous"
   std::string data_file;    ///< identification data file
   std::string data_sha256;  ///< its sha256
-  std::vector<ParameterEstimate> parameters;
+  /// The axis the units are on (set by the method from its options; never guessed from units).
+  Axis axis = Axis::linear;
+  std::vector<Parameter> parameters;
   FitFigures fit;
   std::optional<ValidationFigures> validation;
   Diagnostics diagnostics;
@@ -96,22 +91,27 @@ struct Result {
   /// over a velocity grid); sweep "velocity", "force", "force_std"; decay "time",
   /// "position", "peak_time", "peak_position". Series that share a prefix share a length.
   std::map<std::string, std::vector<double>> series;
+  /// Figures that are not parameters, as JSON text by key, each written under its key at the top
+  /// level of to_json: `frictionlab analyze`'s "result" (the envelope or stick-slip figures).
+  std::map<std::string, std::string> json_sections;
 
   bool ok() const { return status == ResultStatus::ok; }
   /// The parameter named `name`, or nullptr.
-  const ParameterEstimate* find(const std::string& name) const;
+  const Parameter* find(const std::string& name) const;
   /// Value of the parameter `name`. \throws std::invalid_argument listing the parameters.
   double value(const std::string& name) const;
 };
 
 /// JSON text of a result (schema 1 of DESIGN.md):
 /// {"schema":1,"status":"ok"|"error","message":...,"method":...,"model":...,
-///  "data":{"file":...,"sha256":...},"parameters":{"Fc":{"value":v,"std":s,"unit":"N"},...},
-///  "fit":{"relative_error_percent":e,"rmse":r,"samples":n},"validation":{...} (only when set),
+///  "data":{"file":...,"sha256":...},"axis":"linear"|"rotary","parameters":{"Fc":{"value":v,"std":s,"unit":"N"},...},
+///  "fit":{"relative_error_percent":e,"rmse":r,"samples":n,"quantity":...,"unit":...} (the last two when set),"validation":{...} (only when set),
 ///  "diagnostics":{"condition_number":c,"warnings":[...],"undetermined":[...],"at_bound":[...],
 ///  "correlation":{"names":[...],"matrix":[[...]]} (only when computed), ...numbers, ...groups,
 ///  ...lists, ...texts}}. Non-finite numbers are null.
-/// `indent` < 0 gives one line. (Returns text so nlohmann_json stays a private dependency.)
+/// Then each of json_sections under its key. `indent` < 0 gives one line. (Returns text so
+/// nlohmann_json stays a private dependency.)
+/// \throws std::invalid_argument naming the key when a json_sections text is not valid JSON.
 std::string to_json(const Result& result, int indent = 2);
 
 }  // namespace frictionlab

@@ -34,21 +34,13 @@ struct StaticFitOptions {
   int num_threads = 2;
 };
 
-/// One fitted parameter: value, standard deviation (from the residual variance and the
-/// Jacobian at the solution, s^2 (J'J)^-1; NaN when the fit ended at a bound or the points do
-/// not determine it, see identify/uncertainty.hpp; 0 for a held exponent), and the quantity that
-/// gives its unit.
-struct FittedParameter {
-  std::string name;
-  double value = 0;
-  double std = 0;
-  Quantity quantity = Quantity::force;
-  std::string flag;  ///< "", "undetermined" or "at bound"
-};
-
 struct StaticFit {
   FrictionLaw law;                          ///< the fitted law, ready to simulate
-  std::vector<FittedParameter> parameters;  ///< in the law's order (Fc, Fs, vs, delta, Fv, ...)
+  /// In the law's order (Fc, Fs, vs, delta, Fv, ...): value, standard deviation (from the residual
+  /// variance and the Jacobian at the solution, s^2 (J'J)^-1; NaN when the fit ended at a bound or
+  /// the points do not determine it, see identify/uncertainty.hpp; 0 for a held exponent), the
+  /// quantity that gives the unit, flag "", "undetermined" or "at bound". `unit` is left empty.
+  std::vector<Parameter> parameters;
   double relative_error_percent = 0;        ///< 100 ||F - F_hat|| / ||F||
   double rmse = 0;                          ///< root mean square residual (N or N m)
   std::size_t samples = 0;

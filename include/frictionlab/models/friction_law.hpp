@@ -37,13 +37,6 @@ struct LawSpec {
   std::map<std::string, std::string> strings;
 };
 
-/// One scalar parameter of a law, with the quantity that gives its unit.
-struct ParameterValue {
-  std::string name;
-  double value;
-  Quantity quantity;
-};
-
 /// Any friction law of frictionlab, selected by name. Static laws answer `force(v, applied)`;
 /// dynamic laws (`is_dynamic()`) answer the state-based calls. Calling a call of the other kind
 /// throws std::logic_error naming the law.
@@ -75,7 +68,8 @@ class FrictionLaw {
   /// Number of internal states: 0 for static laws.
   int num_states() const;
   /// Scalar parameters in the law's order (arrays of table and gms are in to_spec()).
-  std::vector<ParameterValue> parameters() const;
+  /// Each with its value and quantity (std 0, unit empty: see Parameter::with_unit).
+  std::vector<Parameter> parameters() const;
   void validate() const;
 
   // Static laws.

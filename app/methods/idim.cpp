@@ -1,0 +1,213 @@
+// frictionlab identify idim: inverse dynamic model least squares on a trajectory (EMPS recipe):
+// options, run, figures (measured and reconstructed force, friction map, cross-test).
+#include <sstream>
+
+#include "../figure_kit.hpp"
+#include "frictionlab/format.hpp"
+#include "frictionlab/identify/idim.hpp"
+#include "method.hpp"
+
+namespace frictionlab::cli {
+namespace {
+
+struct IdimArgs {
+  std::string terms = "inertia,viscous,coulomb,offset";
+  double cutoff = 100, delta = 2;  // cutoff, decimate, skip: from the sample rate unless given
+  std::string from;                // "position", "velocity" or "" (position unless only --velocity is given)
+  std::string vs = "0.01";
+  long delay = 0;
+  int decimate = 10;
+  long skip = 49;
+  std::string validate;
+};
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+IdimData idim_data(const Dataset& d, const DataOptions& c, const std::string& from) {
+  IdimData x;
+  x.time = time_column(d, c);
+  const bool use_velocity =
+      from == "velocity" || (from.empty() && c.velocity_opt->count() > 0 && c.position_opt->count() == 0);
+  if (use_velocity) x.velocity = velocity_column(d, c);
+  else x.position = position_column(d, c);
+  x.force = force_column(d, c);
+  x.file = d.file;
+  x.sha256 = d.sha256;
+  return x;
+}
+
+int run(const IdimArgs& a, const MethodIO& io, const CLI::App& cmd) {
+  check_outputs(io.output);
+  IdimOptions o;
+  o.terms = split_list(a.terms);
+  o.cutoff_hz = a.cutoff;
+  o.decimation = a.decimate;
+  o.skip = a.skip;
+  // Not given: chosen from the sample rate (idim_rate_defaults; the EMPS recipe at 1 kHz).
+  o.auto_cutoff = cmd.get_option("--cutoff")->count() == 0;
+  o.auto_decimation = cmd.get_option("--decimate")->count() == 0;
+  o.auto_skip = cmd.get_option("--skip")->count() == 0;
+  if (a.from == "position") o.source = IdimSource::position;
+  else if (a.from == "velocity") o.source = IdimSource::velocity;
+  else if (!a.from.empty())
+    throw std::invalid_argument("--from '" + a.from + "': expected position or velocity");
+  if (a.vs == "search") {
+    o.search_stribeck_vs = true;
+  } else {
+    try {
+      o.stribeck_vs = std::stod(a.vs);
+    } catch (const std::exception&) {
+      throw std::invalid_argument("--vs '" + a.vs + "': expected a Stribeck velocity (m/s or rad/s) or 'search'");
+    }
+  }
+  o.input_delay = a.delay;
+  o.stribeck_delta = a.delta;
+  o.axis = io.columns.parsed_axis();
+  const Dataset d = load_data(io.data, io.columns);
+  const IdimData data = idim_data(d, io.columns, a.from);
+  Result r = identify_idim(data, o);
+  r.data_file = data.file;
+  r.data_sha256 = data.sha256;
+  note_data(r, d);
+  if (r.ok() && !a.validate.empty())
+    r.validation = cross_test(r, idim_data(load_data(a.validate, io.columns), io.columns, a.from), o);
+  return emit(r, io.output);
+}
+
+MethodRun add_options(CLI::App* idim) {
+  auto a = std::make_shared<IdimArgs>();
+  idim->add_option("--terms", a->terms,
+                   "Comma-separated regressors: inertia, viscous, coulomb, offset, asymmetric (Fv_pos, Fc_pos, Fv_neg, "
+                   "Fc_neg; then leave out offset), stribeck (Fs_minus_Fc with --vs, --delta)")
+      ->capture_default_str();
+  idim->add_option("--cutoff", a->cutoff,
+                   "Position low-pass cut-off (Hz). Default from the sample rate fs: min(100 Hz, fs/10) (EMPS: 100 Hz at "
+                   "1 kHz)");
+  idim->add_option("--decimate", a->decimate,
+                   "Keep one sample in N after the anti-alias filter. Default from fs: floor(fs/100 Hz), 1 to 10 (EMPS: 10)");
+  idim->add_option("--skip", a->skip,
+                   "Samples dropped at the start (filter transient). Default from fs: five periods of the cut-off less one "
+                   "sample (EMPS: 49)");
+  idim->add_option("--from", a->from,
+                   "What the regressors are built from when the file has both: position (filtered, differentiated "
+                   "twice) or velocity (the measured velocity filtered like the position, differentiated once). "
+                   "Default: position, or velocity when only --velocity is given")
+      ->check(CLI::IsMember({"position", "velocity"}));
+  idim->add_option("--vs", a->vs, "Stribeck velocity of the stribeck term (m/s or rad/s), or 'search' for the value "
+                                  "that minimises the identification error")
+      ->capture_default_str();
+  idim->add_option("--delay", a->delay,
+                   "Samples by which the applied force lags the recorded input (EMPS: 1, its controller output is "
+                   "applied one sample later)")
+      ->capture_default_str();
+  idim->add_option("--delta", a->delta, "Stribeck exponent of the stribeck term")->capture_default_str();
+  idim->add_option("--validate", a->validate, "Second data file for a cross-test with the identified parameters");
+  return [a](const MethodIO& io, const CLI::App& cmd) { return run(*a, io, cmd); };
+}
+
+Figure idim_figure(const Result& r) {
+  Figure f;
+  f.title = title_for(r, "IDIM least squares: measured and reconstructed " + force_name(r.axis));
+  const Axis axis = r.axis;
+  const auto *t = find(r, "time"), *y = find(r, "force"), *m = find(r, "force_model");
+  if (!t || !y) return f;
+  FigurePanel p = time_panel(label("drive " + force_name(axis), Quantity::force, axis));
+  p.series.push_back(series("measured", *t, *y, SeriesStyle::lines, "#0072b2"));
+  if (m) p.series.push_back(series("model (M a + friction + offset)", *t, *m, SeriesStyle::lines, "#d55e00"));
+  f.panels.push_back(p);
+  if (m) {
+    std::vector<double> e(std::min(y->size(), m->size()));
+    for (std::size_t i = 0; i < e.size(); ++i) e[i] = (*y)[i] - (*m)[i];
+    FigurePanel q = time_panel(label("residual", Quantity::force, axis));
+    q.series.push_back(series("measured - model", *t, e, SeriesStyle::lines, "#555555"));
+    f.panels.push_back(q);
+  }
+  return f;
+}
+
+// IDIM: the force less the identified inertia and offset terms, against the filtered velocity.
+Figure idim_map(const Result& r) {
+  const Axis axis = r.axis;
+  Figure f;
+  f.title = title_for(r, "Friction map: identified friction " + force_name(axis) + " against velocity");
+  f.panel_height = 560;
+  const auto *v = find(r, "velocity"), *F = find(r, "friction");
+  if (!v || !F) return f;
+  FigurePanel p = map_panel(axis);
+  const bool inertia = r.find("M") != nullptr, offset = r.find("offset") != nullptr;
+  const std::string less = inertia && offset ? " - M a - offset" : inertia ? " - M a" : offset ? " - offset" : "";
+  FigureSeries pts = series("samples: drive " + force_name(axis) + less, *v, *F, SeriesStyle::points, "#a8a8a8");
+  pts.point_size = 0.25;
+  p.series.push_back(pts);
+  const double vmax = max_abs(*v);
+  p.series.push_back(binned(*v, *F, vmax));
+  if (auto law = law_curve(r, -vmax, vmax, "identified law (" + (r.law ? r.law->name : r.model) + ")")) {
+    p.series.push_back(*law);
+  } else if (const auto *lv = find(r, "law_velocity"), *lF = find(r, "law_force"); lv && lF) {
+    // No law to simulate (e.g. Fs below Fc): the identified friction terms as they are.
+    FigureSeries s = gapped_at_zero("identified friction terms (" + r.model + ")", *lv, *lF);
+    s.line_width = 2.2;
+    p.series.push_back(s);
+  }
+  f.panels.push_back(p);
+  return f;
+}
+
+// The cross-test: the identified model predicting the drive force of a second record.
+Figure cross_test_figure(const Result& r) {
+  const Axis axis = r.axis;
+  Figure f;
+  if (!r.validation) return f;
+  const ValidationFigures& val = *r.validation;
+  f.title = "Cross-test: measured and predicted " + force_name(axis) + " - " + file_name(val.file) +
+            " (relative error " + format_number(val.relative_error_percent, 3) + " %)";
+  const auto get = [&](const char* n) -> const std::vector<double>* {
+    const auto it = val.series.find(n);
+    return it == val.series.end() || it->second.empty() ? nullptr : &it->second;
+  };
+  const auto *t = get("time"), *y = get("force"), *m = get("force_model");
+  if (!t || !y || !m) return f;
+  FigurePanel p = time_panel(label("drive " + force_name(axis), Quantity::force, axis));
+  p.series.push_back(series("measured", *t, *y, SeriesStyle::lines, "#0072b2"));
+  p.series.push_back(series("predicted by the identified model", *t, *m, SeriesStyle::lines, "#d55e00"));
+  p.series.back().line_width = 1.0;  // thinner, so that the measurement shows where they differ
+  f.panels.push_back(p);
+  std::vector<double> e(std::min(y->size(), m->size()));
+  for (std::size_t i = 0; i < e.size(); ++i) e[i] = (*y)[i] - (*m)[i];
+  FigurePanel q = time_panel(label("residual", Quantity::force, axis));
+  q.series.push_back(series("measured - predicted", *t, e, SeriesStyle::lines, "#555555"));
+  f.panels.push_back(q);
+  return f;
+}
+
+}  // namespace
+
+CliMethod idim_method() {
+  return {"idim",
+          "Inverse dynamic model least squares on a trajectory: force = M qdd + friction(qd) + offset "
+          "(EMPS benchmark recipe). Best cross-test on EMPS: --terms inertia,asymmetric,stribeck --delay 1",
+          "linear",
+          add_options,
+          {{"fit",
+            "Measured drive force and the force the identified inverse dynamic model reconstructs from position "
+            "(top), and their difference (bottom), on the identification data after filtering and decimation.",
+            idim_figure},
+           {"friction-map",
+            "Friction against velocity: each fitted sample's drive force less the identified inertia and "
+            "offset terms (grey), their mean and standard deviation in velocity bins, and the identified "
+            "friction law.",
+            idim_map},
+           {"cross-test",
+            "Cross-test: the drive force measured on the second record and the force the model "
+            "identified on the first predicts from its position (top), and their difference "
+            "(bottom), after the same filtering and decimation.",
+            cross_test_figure}}};
+}
+
+}  // namespace frictionlab::cli

@@ -1,0 +1,113 @@
+// frictionlab identify lugre: LuGre parameters by output error: options, run, figures (measured
+// and simulated signals, the identified law's steady state).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "../figure_kit.hpp"
+#include "frictionlab/models/friction_law.hpp"
+#include "method.hpp"
+#include "frictionlab/identify/lugre.hpp"
+#include "frictionlab/io/law_file.hpp"
+
+namespace frictionlab::cli {
+namespace {
+
+struct LugreArgs {
+  double inertia = std::numeric_limits<double>::quiet_NaN();
+  std::string static_law;
+  int substeps = 4;
+  double vd = 0;
+};
+
+int run(const LugreArgs& a, const MethodIO& io) {
+  check_outputs(io.output);
+  LugreOptions o;
+  o.inertia = a.inertia;
+  o.substeps = a.substeps;
+  o.vd = a.vd;
+  o.axis = io.columns.parsed_axis();
+  if (!a.static_law.empty()) o.static_law = load_law(a.static_law);
+  const Dataset d = load_data(io.data, io.columns);
+  LugreData x{time_column(d, io.columns), force_column(d, io.columns), position_column(d, io.columns)};
+  o.progress = [](int iteration, double cost, double) {
+    progress_stage("output-error fit, iteration " + std::to_string(iteration) + ", cost " + std::to_string(cost) + " m^2");
+  };
+  Result r = identify_lugre(x, o);
+  stamp(r, d);
+  return emit(r, io.output);
+}
+
+MethodRun add_options(CLI::App* lugre) {
+  auto a = std::make_shared<LugreArgs>();
+  lugre->add_option("--inertia", a->inertia, "Mass or inertia of the axis (kg or kg m^2), > 0")->required();
+  lugre->add_option("--static", a->static_law,
+                    "MODEL.json (or .yaml) with the static law (stribeck, lugre, static-coulomb-viscous, coulomb-viscous), "
+                    "e.g. from identify sweep: held fixed instead of identified");
+  lugre->add_option("--vd", a->vd,
+                    "Damping decay velocity (m/s or rad/s) of the damping sigma1 exp(-(v/vd)^2), held fixed; 0 = constant "
+                    "damping. A --static lugre model with vd > 0 gives its own")
+      ->capture_default_str();
+  lugre->add_option("--substeps", a->substeps, "Simulation steps per sample interval of the fit")->capture_default_str();
+  return [a](const MethodIO& io, const CLI::App&) { return run(*a, io); };
+}
+
+Figure lugre_figure(const Result& r) {
+  return compare_figure(r, "LuGre identification: measured and simulated", "applied", r.data_file);
+}
+
+// LuGre: the identified law's steady state (the force while sliding at constant velocity) over
+// the velocities the record reached (from the simulated position, which is smooth).
+Figure lugre_map(const Result& r) {
+  const Axis axis = r.axis;
+  Figure f;
+  f.title = title_for(r, "Friction map: steady-state friction of the identified LuGre law");
+  f.panel_height = 420;
+  const auto *t = find(r, "time"), *x = find(r, "position_sim");
+  double vmax = 0;
+  if (t && x && t->size() >= 2 && x->size() == t->size())
+    for (std::size_t i = 1; i < t->size(); ++i)
+      if ((*t)[i] > (*t)[i - 1]) vmax = std::max(vmax, std::abs(((*x)[i] - (*x)[i - 1]) / ((*t)[i] - (*t)[i - 1])));
+  const double vs = parameter(r, "vs");
+  if (std::isfinite(vs)) vmax = std::max(vmax, 5 * vs);  // a record that stayed slow: still the Stribeck part
+  const std::string name = "steady state Fc + (Fs - Fc) exp(-|v/vs|^delta) + sigma2 v";
+  auto law = law_curve(r, -vmax, vmax, name);
+  if (!law) return f;
+  FigurePanel p = map_panel(axis);
+  p.title = "over the velocities of the record";
+  p.series.push_back(*law);
+  f.panels.push_back(p);
+  // The Stribeck region is often a small fraction of the record's speed: drawn again, near zero.
+  if (std::isfinite(vs) && vs < 0.2 * vmax) {
+    FigurePanel z = map_panel(axis);
+    z.title = "near zero velocity: |v| <= 10 vs";
+    z.series.push_back(*law_curve(r, -10 * vs, 10 * vs, name));
+    const FrictionLaw lg = FrictionLaw::from_spec(*r.law);
+    z.series.push_back(series("v = +-vs", {-vs, vs}, {lg.sliding(-vs), lg.sliding(vs)}, SeriesStyle::points, "#009e73"));
+    z.series.back().point_size = 1.2;
+    f.panels.push_back(z);
+  }
+  return f;
+}
+
+}  // namespace
+
+CliMethod lugre_method() {
+  return {"lugre",
+          "LuGre parameters by output error: simulate the axis with the measured force, compare positions, "
+          "Ceres least squares. From one record that starts at rest and breaks away both ways (presliding, "
+          "sliding, reversals), all six: sigma0, sigma1 and the static part Fc, Fs, vs, sigma2 (started "
+          "from the sliding samples and a grid of Fs and vs), unless --static gives the static part. A "
+          "parameter the record cannot determine, or that ends at a bound, has std null (nan) and a warning",
+          "linear",
+          add_options,
+          {{"fit", "Measured and simulated position and force of the identified LuGre model.", lugre_figure},
+           {"friction-map",
+            "Steady-state friction of the identified LuGre law (the force while sliding at constant "
+            "velocity) over the velocities of the record and, where the Stribeck part is narrow, near zero "
+            "velocity.",
+            lugre_map}}};
+}
+
+}  // namespace frictionlab::cli
