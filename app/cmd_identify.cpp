@@ -11,6 +11,7 @@
 #include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/lugre.hpp"
 #include "frictionlab/identify/sweep.hpp"
+#include "flag_names.hpp"
 #include "frictionlab/io/law_file.hpp"
 #include "output.hpp"
 
@@ -128,6 +129,7 @@ int run_idim(const IdentifyArgs& a, const MethodIO& io, const CLI::App& cmd) {
   r.data_sha256 = data.sha256;
   note_data(r, d);
   if (r.ok() && !a.validate.empty()) r.validation = cross_test(r, idim_data(a.validate, io.columns, a.from), o);
+  name_flags(r);
   return emit(r, io.output);
 }
 
@@ -203,6 +205,7 @@ int run_lugre(const IdentifyArgs& a, const MethodIO& io) {
   };
   Result r = identify_lugre(x, o);
   stamp(r, d);
+  name_flags(r);
   return emit(r, io.output);
 }
 

@@ -456,7 +456,7 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, dou
   if (!(reg.y.cwiseAbs().maxCoeff() > 0.0)) {
     return error_result(r, where(data) + "the force is zero throughout (max |force| = 0" +
                                std::string(options.input_delay > 0 ? " after the delay" : "") +
-                               "): check the force column or the drive gain (--gain); the data cannot give an answer");
+                               "): check the force column or the drive gain; the data cannot give an answer");
   }
   std::vector<std::string> names;
   for (const auto& t : reg.terms) names.push_back(t.parameter);
