@@ -92,6 +92,7 @@ Dataset load_data(const std::string& path, const ReadOptions& o, const std::stri
   csv.header = CsvHeader::detect;
   if (!o.names.empty()) csv.names = split_names(o.names);
   csv.names_option = "--names";
+  csv.drop_invalid_option = "--drop-invalid";
   const double dt = o.resample_given() ? parse_step(o.resample) : 0.0;  // a bad DT is named before the file is read
   Dataset d = load_dataset(path, csv);
   if (!o.names.empty() && d.lines.empty()) {
@@ -112,7 +113,7 @@ Dataset load_data(const std::string& path, const ReadOptions& o, const std::stri
 
 Dataset load_data(const std::string& path, const DataOptions& o) {
   Dataset d = load_data(path, o.read, o.time);
-  apply_scales(d, o.scales);
+  apply_scales(d, o.scales, "--scale");
   return d;
 }
 

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "../figure_kit.hpp"
+#include "../flag_names.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/identify/idim.hpp"
 #include "method.hpp"
@@ -77,6 +78,7 @@ int run(const IdimArgs& a, const MethodIO& io, const CLI::App& cmd) {
   note_data(r, d);
   if (r.ok() && !a.validate.empty())
     r.validation = cross_test(r, idim_data(load_data(a.validate, io.columns), io.columns, a.from), o);
+  name_flags(r);
   return emit(r, io.output);
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "../figure_kit.hpp"
+#include "../flag_names.hpp"
 #include "frictionlab/models/friction_law.hpp"
 #include "method.hpp"
 #include "frictionlab/identify/lugre.hpp"
@@ -36,6 +37,7 @@ int run(const LugreArgs& a, const MethodIO& io) {
   };
   Result r = identify_lugre(x, o);
   stamp(r, d);
+  name_flags(r);
   return emit(r, io.output);
 }
 

@@ -114,9 +114,9 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
     else X.row(ii) << sg, d.velocity[k];
     y[ii] = d.force[k] - (fit_inertia ? 0.0 : o.inertia * a[k]);
   }
-  const LinearFit fit = least_squares(X, y);
+  const LeastSquaresFit fit = linear_least_squares(X, y, fit_inertia ? std::vector<std::string>{"Fc", "Fv", "M"} : std::vector<std::string>{"Fc", "Fv"}, separable());
   if (!fit.ok) return fail(r, "the sliding data cannot separate Coulomb, viscous and inertial forces: " + fit.message);
-  const double Fc = fit.beta[0], Fv = fit.beta[1], M = fit_inertia ? fit.beta[2] : o.inertia;
+  const double Fc = fit.theta[0], Fv = fit.theta[1], M = fit_inertia ? fit.theta[2] : o.inertia;
   if (!(M > 0)) return fail(r, "the estimated inertia " + format_number(M) + " is not positive: the record has too little acceleration");
 
   // Fs: the force at the instant the axis broke away, from the fitted dynamics.
@@ -138,7 +138,7 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
   // Fs keeps its propagated std; the regression's parameters get the common rules.
   set_uncertainty_from_information(r, fit_inertia ? std::vector<std::string>{"Fc", "Fv", "M"} : std::vector<std::string>{"Fc", "Fv"},
                                    fit.information, fit.residual_variance);
-  set_fit(r, y, X * fit.beta);
+  set_fit(r, y, X * fit.theta);
   if (!std::isfinite(r.fit.relative_error_percent) || !std::isfinite(Fs))
     return fail(r, "the fit gave figures that are not finite numbers (force zero throughout?); the data cannot give an answer");
   r.diagnostics.condition_number = fit.condition_number;

@@ -34,7 +34,7 @@ double parabolic_peak(const Eigen::VectorXd& x, Eigen::Index m) {
 struct EnergyBalance {
   Eigen::MatrixXd X;
   Eigen::VectorXd y;
-  LinearFit fit;
+  LeastSquaresFit fit;
   std::vector<TurningPoint> turning_points;
   std::string message;  // why it failed; empty when it worked
 };
@@ -87,7 +87,7 @@ EnergyBalance energy_balance(const Eigen::VectorXd& time, const Eigen::VectorXd&
     X(h, 1) = integral;
     y[h] = potential(a.position) - potential(b.position);
   }
-  const LinearFit fit = least_squares(X, y);
+  const LeastSquaresFit fit = linear_least_squares(X, y, {"Fc", "Fv"}, separable());
   if (!fit.ok) {
     eb.message = "the half cycles cannot separate Coulomb from viscous friction: " + fit.message;
     return eb;
@@ -122,7 +122,7 @@ Result identify_decay(const DecayData& d, const DecayOptions& o) {
 
   const EnergyBalance full = energy_balance(d.time, d.position, dt, o, k);
   if (!full.message.empty()) return fail(r, full.message);
-  const LinearFit& fit = full.fit;
+  const LeastSquaresFit& fit = full.fit;
   // The statistical std misses the discretisation error (sampling, differences, peak
   // interpolation), which dominates on clean data. Repeating the balance on every second sample
   // measures it: the difference of the two estimates (an O(dt^2) error quadruples at 2 dt) is
@@ -136,7 +136,7 @@ Result identify_decay(const DecayData& d, const DecayOptions& o) {
       xh[i] = d.position[2 * i];
     }
     const EnergyBalance half = energy_balance(th, xh, 2 * dt, o, k);
-    if (half.message.empty()) discretisation = (half.fit.beta - fit.beta).cwiseAbs();
+    if (half.message.empty()) discretisation = (half.fit.theta - fit.theta).cwiseAbs();
   }
   Eigen::VectorXd stdev(2);
   for (int i = 0; i < 2; ++i) stdev[i] = std::hypot(fit.stdev[i], discretisation[i]);
@@ -146,15 +146,15 @@ Result identify_decay(const DecayData& d, const DecayOptions& o) {
   const Axis axis = o.axis;
   if (relative) {
     // Fc / k has the unit of position; zeta = (Fv / k) * wn / 2.
-    add_parameter(r, "Fc_over_k", fit.beta[0], stdev[0], Quantity::displacement, axis);
-    add_parameter(r, "zeta", fit.beta[1] * o.natural_frequency / 2, stdev[1] * o.natural_frequency / 2,
+    add_parameter(r, "Fc_over_k", fit.theta[0], stdev[0], Quantity::displacement, axis);
+    add_parameter(r, "zeta", fit.theta[1] * o.natural_frequency / 2, stdev[1] * o.natural_frequency / 2,
                   Quantity::dimensionless, axis);
   } else {
-    add_parameter(r, "Fc", fit.beta[0], stdev[0], Quantity::force, axis);
-    add_parameter(r, "Fv", fit.beta[1], stdev[1], Quantity::viscous, axis);
+    add_parameter(r, "Fc", fit.theta[0], stdev[0], Quantity::force, axis);
+    add_parameter(r, "Fv", fit.theta[1], stdev[1], Quantity::viscous, axis);
   }
   {  // Covariance with the statistical correlation and the std widened by the discretisation error.
-    const Eigen::MatrixXd cb = fit.residual_variance * fit.information.inverse();
+    const Eigen::MatrixXd& cb = fit.covariance;
     Eigen::Matrix2d cov;
     const double scale1 = relative ? o.natural_frequency / 2 : 1.0;
     const Eigen::Vector2d sd(stdev[0], stdev[1] * scale1);
@@ -164,7 +164,7 @@ Result identify_decay(const DecayData& d, const DecayOptions& o) {
     if (!cov.allFinite()) cov = Eigen::Vector2d(sd.array().square()).asDiagonal();
     set_uncertainty_from_covariance(r, {r.parameters[0].name, r.parameters[1].name}, cov);
   }
-  set_fit(r, y, X * fit.beta);
+  set_fit(r, y, X * fit.theta);
   if (!std::isfinite(r.fit.relative_error_percent))
     return fail(r, "the energy balance gave figures that are not finite numbers; the data cannot give an answer");
   r.diagnostics.condition_number = fit.condition_number;
@@ -178,8 +178,8 @@ Result identify_decay(const DecayData& d, const DecayOptions& o) {
     r.series["peak_time"].push_back(d.time[q.sample]);
     r.series["peak_position"].push_back(q.position);
   }
-  if (!relative && fit.beta[0] >= 0 && fit.beta[1] >= 0)
-    r.law = FrictionLaw(CoulombViscous{fit.beta[0], fit.beta[1]}).to_spec();
+  if (!relative && fit.theta[0] >= 0 && fit.theta[1] >= 0)
+    r.law = FrictionLaw(CoulombViscous{fit.theta[0], fit.theta[1]}).to_spec();
   for (const auto& p : r.parameters)
     if (p.flag.empty() && std::abs(p.value) <= 2 * p.std)
       r.diagnostics.warnings.push_back(p.name + " = " + format_number(p.value) + " is zero within 2 std (" +

@@ -1,16 +1,15 @@
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/identify/idim.hpp"
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "frictionlab/identify/method.hpp"
+#include "frictionlab/identify/least_squares.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 #include "frictionlab/signal/butterworth.hpp"
 #include "frictionlab/signal/decimate.hpp"
@@ -41,7 +40,8 @@ void check_signal(const IdimData& d, const Vec& v, const char* name, Eigen::Inde
   }
 }
 
-// Mean sample step after checking time is finite, strictly increasing and regular (1 %).
+// Mean sample step after checking time is finite, strictly increasing and regular (1 %). Run
+// once per identification: the pipeline's passes take the step from their caller.
 double checked_step(const IdimData& d) {
   RegularSamplingCheck check;  // the one rule of signal/sampling.hpp: 1 % of the median step
   check.where = where(d);
@@ -162,37 +162,37 @@ std::vector<IdimTerm> idim_terms(const IdimOptions& options) {
 
 namespace {
 
-// IDIM's work buffers: this thread's scratch, or buffers of its own when a user's column
-// function has called IDIM again inside an outer regression (whose buffers are in use).
-class IdimBuffers {
- public:
-  IdimBuffers() : nested_(active_++ > 0) {}
-  ~IdimBuffers() { --active_; }
-  IdimBuffers(const IdimBuffers&) = delete;
-  IdimBuffers& operator=(const IdimBuffers&) = delete;
-  Eigen::Map<Vec> get(int slot, Eigen::Index size) {
-    if (!nested_) return detail::scratch(slot, size);
-    Vec& v = own_.emplace_back(size);
-    return {v.data(), size};
-  }
+// True when the regressors are built from the measured velocity (asked for, or automatic with
+// no position); else from the position.
+bool regressors_from_velocity(const IdimData& d, const IdimOptions& o) {
+  return o.source == IdimSource::velocity || (o.source == IdimSource::automatic && d.position.size() == 0);
+}
 
- private:
-  static thread_local int active_;
-  detail::ScratchScope scope_;
-  bool nested_;
-  std::deque<Vec> own_;  // a deque: growing it never moves the vectors handed out
+// IDIM's work buffers for n samples, from a frame of the thread's scratch arena
+// (signal/scratch.hpp): the filter input with `pad` samples of odd extension each side, the
+// velocity and the acceleration. The columns of terms that fill a buffer come from the same
+// frame afterwards; a user's column function that runs IDIM again gets buffers above these.
+struct IdimWorkspace {
+  Eigen::Map<Vec> padded, qd, qdd;  // taken in this order
+  IdimWorkspace(detail::ScratchFrame& frame, Eigen::Index n, Eigen::Index pad)
+      : padded(frame.get(n + 2 * pad)), qd(frame.get(n)), qdd(frame.get(n)) {}
 };
-thread_local int IdimBuffers::active_ = 0;
 
-}  // namespace
-
-IdimRegression idim_regression(const IdimData& data, const IdimOptions& options_in) {
-  IdimBuffers buffers;
+// One pass of steps 1-4 on options already resolved for the data's mean step dt (s); with
+// `velocity`, also the filtered velocity at the fitted samples (the friction map's abscissa).
+struct Pass {
   IdimRegression reg;
-  reg.terms = idim_terms(options_in);
+  bool from_velocity = false;
+  Vec velocity;  // decimated like the columns; empty unless asked for
+};
+
+Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt, bool want_velocity_column) {
+  detail::ScratchFrame frame;
+  Pass pass;
+  IdimRegression& reg = pass.reg;
+  reg.terms = idim_terms(options);
   const Eigen::Index n = data.time.size();
-  reg.dt = checked_step(data);
-  const IdimOptions options = resolved(options_in, reg.dt);
+  reg.dt = dt;
   check_signal(data, data.force, "force", n);
   if (options.decimation < 1) {
     throw std::invalid_argument("idim: decimation = " + std::to_string(options.decimation) + " must be >= 1");
@@ -212,13 +212,12 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options_
   // 1-2: zero-phase low-pass and central differences, in this thread's work buffers.
   const TransferFunction lp = butter(options.filter_order, normalized_cutoff(options.cutoff_hz, reg.dt));
   const Vec* measured = nullptr;
-  const bool want_velocity = options.source == IdimSource::velocity ||
-                             (options.source == IdimSource::automatic && data.position.size() == 0);
+  pass.from_velocity = regressors_from_velocity(data, options);
   if (options.source == IdimSource::position && data.position.size() == 0)
     throw std::invalid_argument(where(data) + "no position given; the regressors were asked to be built from the position");
   if (options.source == IdimSource::velocity && data.velocity.size() == 0)
     throw std::invalid_argument(where(data) + "no velocity given; the regressors were asked to be built from the velocity");
-  if (!want_velocity && data.position.size() > 0) {
+  if (!pass.from_velocity) {  // implies a position (automatic without one takes the velocity)
     check_signal(data, data.position, "position", n);
     measured = &data.position;
   } else if (data.velocity.size() > 0) {
@@ -228,13 +227,14 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options_
     throw std::invalid_argument(where(data) + "neither position nor velocity given; IDIM needs one of them");
   }
   const Eigen::Index pad = filtfilt_padlen(lp, FiltfiltOptions{options.padlen}, n);
-  auto padded = buffers.get(detail::filtfilt_padded, n + 2 * pad);
+  IdimWorkspace work(frame, n, pad);
+  auto& padded = work.padded;
+  auto& qd = work.qd;
+  auto& qdd = work.qdd;
   padded.segment(pad, n) = *measured;
   filtfilt_in_place(lp, padded, pad);
   const auto filtered = padded.segment(pad, n);
-  auto qd = buffers.get(detail::idim_qd, n);
-  auto qdd = buffers.get(detail::idim_qdd, n);
-  const bool from_position = measured == &data.position;
+  const bool from_position = !pass.from_velocity;
   if (from_position) gradient(filtered, reg.dt, qd);
   else qd = filtered;
   gradient(qd, reg.dt, qdd);
@@ -263,7 +263,7 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options_
   for (Eigen::Index j = 0; j < p; ++j) {
     const auto& term = reg.terms[static_cast<std::size_t>(j)];
     if (term.fill) {
-      auto column = buffers.get(detail::idim_columns + static_cast<int>(j), n);
+      auto column = frame.get(n);
       term.fill(k, column);
       views.emplace_back(column.data() + options.skip, used);
       continue;
@@ -275,16 +275,37 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options_
     }
     views.emplace_back(column.data() + options.skip, used);
   }
+  // The velocity for the friction map: the built-in viscous column is qd itself; without one,
+  // qd joins the decimation as one more column.
+  Eigen::Index velocity_col = -1;
+  const Eigen::Index builtin_terms = p - static_cast<Eigen::Index>(options.extra_terms.size());
+  if (want_velocity_column) {
+    for (Eigen::Index j = 0; j < builtin_terms && velocity_col < 0; ++j)
+      if (reg.terms[static_cast<std::size_t>(j)].parameter == "Fv") velocity_col = j + 1;
+    if (velocity_col < 0) {
+      views.emplace_back(k.qd.data() + options.skip, used);
+      velocity_col = p + 1;
+    }
+  }
+  const Eigen::Index ncols = static_cast<Eigen::Index>(views.size());
   Eigen::MatrixXd reduced;
   if (options.decimation == 1) {
-    reduced.resize(used, p + 1);
-    for (Eigen::Index j = 0; j <= p; ++j) reduced.col(j) = views[static_cast<std::size_t>(j)];
+    reduced.resize(used, ncols);
+    for (Eigen::Index j = 0; j < ncols; ++j) reduced.col(j) = views[static_cast<std::size_t>(j)];
   } else {
     reduced = decimate_columns(views, options.decimation);
   }
   reg.y = reduced.col(0);
-  reg.X = reduced.rightCols(p);
-  return reg;
+  reg.X = reduced.middleCols(1, p);
+  if (velocity_col >= 0) pass.velocity = reduced.col(velocity_col);
+  return pass;
+}
+
+}  // namespace
+
+IdimRegression idim_regression(const IdimData& data, const IdimOptions& options) {
+  const double dt = checked_step(data);
+  return regression_pass(data, resolved(options, dt), dt, false).reg;
 }
 
 namespace {
@@ -336,24 +357,25 @@ void attach_law(Result& r, const IdimOptions& o, double vs) {
   }
 }
 
-Result identify_idim_fixed(const IdimData& data, const IdimOptions& options);
+Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, double dt, Vec* velocity = nullptr);
 
 }  // namespace
 
 Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
-  const detail::ScratchScope scope;  // the regressions of a vs search share the buffers
-  const IdimOptions options = resolved(options_in, checked_step(data));
+  const detail::ScratchFrame frame;  // the regressions of a vs search share the buffers
+  const double dt = checked_step(data);
+  const IdimOptions options = resolved(options_in, dt);
   const auto terms = idim_terms(options);
   const bool has_stribeck = std::any_of(terms.begin(), terms.end(), [](const IdimTerm& t) { return t.parameter == "Fs_minus_Fc"; });
   IdimOptions o = options;
   if (options.search_stribeck_vs && has_stribeck) {
     // Log grid over the speed range; the identification residual alone chooses (never the cross-test).
-    const double top = idim_regression(data, options).max_speed;
+    const double top = regression_pass(data, options, dt, false).reg.max_speed;
     double best = std::numeric_limits<double>::infinity(), best_vs = options.stribeck_vs;
     constexpr int kGrid = 40;
     for (int i = 0; i < kGrid; ++i) {
       o.stribeck_vs = top * std::pow(10.0, -4.0 + (4.0 - std::log10(2.0)) * i / (kGrid - 1));
-      const Result trial = identify_idim_fixed(data, o);
+      const Result trial = identify_idim_fixed(data, o, dt);
       if (trial.ok() && trial.fit.relative_error_percent < best) {
         best = trial.fit.relative_error_percent;
         best_vs = o.stribeck_vs;
@@ -361,7 +383,8 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
     }
     o.stribeck_vs = best_vs;
   }
-  Result r = identify_idim_fixed(data, o);
+  Vec v;  // the filtered velocity at the fitted samples, for the friction map
+  Result r = identify_idim_fixed(data, o, dt, &v);
   if (has_stribeck) r.diagnostics.numbers["stribeck_vs"] = o.stribeck_vs;
   if (options.input_delay > 0) r.diagnostics.numbers["input_delay"] = static_cast<double>(options.input_delay);
   {
@@ -373,11 +396,6 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
   }
   if (r.ok()) {
     attach_law(r, o, o.stribeck_vs);
-    // The filtered velocity at the fitted samples (the viscous term's column), for the friction map.
-    IdimOptions ov = o;
-    ov.terms = {"viscous"};
-    ov.extra_terms.clear();
-    const Vec v = idim_regression(data, ov).X.col(0);
     r.series["velocity"].assign(v.data(), v.data() + v.size());
     // The identified friction terms as a curve over +-max |v| (denser near 0, where Stribeck
     // terms bend), evaluated on the velocity itself, not on decimated columns.
@@ -390,7 +408,8 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
     }
     const IdimKinematics k{IdimKinematics::View(nullptr, 0), IdimKinematics::View(grid.data(), grid.size()),
                            IdimKinematics::View(zero.data(), zero.size())};
-    ov.terms = o.terms;  // the built-in terms only (a user's term may need the position)
+    IdimOptions ov = o;
+    ov.extra_terms.clear();  // the built-in terms only (a user's term may need the position)
     for (const auto& t : idim_terms(ov))
       if (t.parameter != "M" && t.parameter != "offset") curve += r.value(t.parameter) * t.column(k);
     r.series["law_velocity"].assign(grid.data(), grid.data() + grid.size());
@@ -400,13 +419,17 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
 }
 
 namespace {
-Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
+// One identification at options resolved for the mean step dt (s); `velocity`, when given, gets
+// the filtered velocity at the fitted samples.
+Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, double dt, Vec* velocity) {
   Result r = new_result(method_info("idim"), "", options.axis);
   r.method = "idim";
   r.data_file = data.file;
   r.data_sha256 = data.sha256;
   const bool custom = !options.extra_terms.empty();
-  const IdimRegression reg = idim_regression(data, options);
+  Pass pass = regression_pass(data, options, dt, velocity != nullptr);
+  if (velocity != nullptr) *velocity = std::move(pass.velocity);
+  const IdimRegression& reg = pass.reg;
   r.model = model_name(reg.terms, custom);
   const Eigen::Index p = reg.X.cols(), nobs = reg.X.rows();
   r.diagnostics.numbers["dt"] = reg.dt;
@@ -414,8 +437,7 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
   r.diagnostics.numbers["decimation"] = options.decimation;
   r.diagnostics.numbers["skipped_samples"] = static_cast<double>(options.skip);
   r.diagnostics.numbers["max_speed"] = reg.max_speed;
-  const bool from_velocity = options.source == IdimSource::velocity ||
-                             (options.source == IdimSource::automatic && data.position.size() == 0);
+  const bool from_velocity = pass.from_velocity;
   r.diagnostics.texts["regressors_from"] = from_velocity ? "velocity" : "position";
 
   if (nobs <= p) {
@@ -435,51 +457,40 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options) {
   if (!(reg.y.cwiseAbs().maxCoeff() > 0.0)) {
     return error_result(r, where(data) + "the force is zero throughout (max |force| = 0" +
                                std::string(options.input_delay > 0 ? " after the delay" : "") +
-                               "): check the force column or the drive gain (--gain); the data cannot give an answer");
+                               "): check the force column or the drive gain; the data cannot give an answer");
   }
-  // A zero column (no motion in one direction, no acceleration) cannot be identified.
-  const Vec norms = reg.X.colwise().norm();
-  for (Eigen::Index j = 0; j < p; ++j) {
-    if (!(norms(j) > 0.0)) {
-      return error_result(r, where(data) + "no excitation of parameter " + reg.terms[static_cast<std::size_t>(j)].parameter +
-                                 ": its regressor column is zero (e.g. no motion, or none in that direction); "
-                                 "rank-deficient regressors");
-    }
-  }
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(reg.X, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  const Vec& sv = svd.singularValues();
-  r.diagnostics.condition_number = sv(0) / sv(p - 1);
+  std::vector<std::string> names;
+  for (const auto& t : reg.terms) names.push_back(t.parameter);
+  LeastSquaresOptions lso;
+  lso.max_condition = options.max_condition;
+  const LeastSquaresFit fit = linear_least_squares(reg.X, reg.y, names, lso);
+  r.diagnostics.condition_number = fit.condition_number;
   // Column-normalised condition number: independent of units, the measure of identifiability.
-  const Eigen::MatrixXd Xs = reg.X * norms.cwiseInverse().asDiagonal();
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svds(Xs);
-  const double cond_scaled = svds.singularValues()(0) / svds.singularValues()(p - 1);
-  r.diagnostics.numbers["condition_number_scaled"] = cond_scaled;
-  if (!(cond_scaled <= options.max_condition)) {
-    return error_result(r, where(data) + "rank-deficient regressors: condition number " + detail::format_value(cond_scaled, 6) +
-                               " (columns normalised) exceeds " + detail::format_value(options.max_condition, 6) +
-                               "; the trajectory does not excite the terms independently");
+  if (fit.condition_number_scaled > 0) r.diagnostics.numbers["condition_number_scaled"] = fit.condition_number_scaled;
+  switch (fit.refusal) {
+    case LeastSquaresRefusal::none: break;
+    case LeastSquaresRefusal::no_excitation:  // a zero column: no motion in one direction, no acceleration
+      return error_result(r, where(data) + fit.message + " (e.g. no motion, or none in that direction); rank-deficient regressors");
+    case LeastSquaresRefusal::rank_deficient:
+      return error_result(r, where(data) + fit.message + "; the trajectory does not excite the terms independently");
+    case LeastSquaresRefusal::too_few_samples: return error_result(r, where(data) + fit.message);
   }
-
-  const Vec theta = svd.solve(reg.y);
-  const Vec e = reg.y - reg.X * theta;
-  const double ee = e.squaredNorm();
-  const double s2 = ee / static_cast<double>(nobs - p);
+  const Vec& theta = fit.theta;
+  const double ee = fit.residual.squaredNorm();
+  const double s2 = fit.residual_variance;
   r.fit.relative_error_percent = 100.0 * std::sqrt(ee) / reg.y.norm();
-  r.fit.rmse = std::sqrt(ee / static_cast<double>(nobs));
+  r.fit.rmse = fit.rmse;
   r.fit.samples = static_cast<std::size_t>(nobs);
   if (!theta.allFinite() || !std::isfinite(r.fit.relative_error_percent) || !std::isfinite(r.fit.rmse)) {
     return error_result(r, where(data) + "the least-squares fit gave figures that are not finite numbers; "
                                "the data cannot give an answer (check the force and motion columns)");
   }
-  std::vector<std::string> names;
   for (Eigen::Index j = 0; j < p; ++j) {
     const auto& t = reg.terms[static_cast<std::size_t>(j)];
     r.parameters.push_back({t.parameter, theta(j), 0.0, std::string(unit(t.quantity, options.axis)), ""});
-    names.push_back(t.parameter);
   }
-  // std = s sqrt(diag((X'X)^-1)) over the determined parameters; X'X = V S^2 V'.
-  const Eigen::MatrixXd vsq = svd.matrixV() * sv.asDiagonal();
-  set_uncertainty_from_information(r, names, vsq * vsq.transpose(), s2);
+  // std = s sqrt(diag((X'X)^-1)) over the determined parameters.
+  set_uncertainty_from_information(r, names, fit.information, s2);
   {  // figure signals: the decimated samples keep every decimation-th sample after the skip
     const Vec model = reg.X * theta;
     auto& t = r.series["time"];
@@ -520,10 +531,11 @@ ValidationFigures cross_test(const Result& identified, const IdimData& data, con
   if (!identified.ok()) {
     throw std::invalid_argument("cross_test: the identification failed (" + identified.message + "); nothing to test");
   }
-  IdimOptions o = resolved(options, checked_step(data));
+  const double dt = checked_step(data);
+  IdimOptions o = resolved(options, dt);
   if (const auto it = identified.diagnostics.numbers.find("stribeck_vs"); it != identified.diagnostics.numbers.end())
     o.stribeck_vs = it->second;  // the value the identification used (searched or given)
-  const IdimRegression reg = idim_regression(data, o);
+  const IdimRegression reg = regression_pass(data, o, dt, false).reg;
   Vec theta(reg.X.cols());
   for (std::size_t j = 0; j < reg.terms.size(); ++j) theta(static_cast<Eigen::Index>(j)) = identified.value(reg.terms[j].parameter);
   const Vec e = reg.y - reg.X * theta;

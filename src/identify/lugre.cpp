@@ -485,7 +485,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   {
     if (sigma0 > s0_limit || sigma1 > s1_limit)
       warn("the starting sigma0 = " + format_number(sigma0) + " or sigma1 = " + format_number(sigma1) +
-           " is beyond what the fit's simulation step resolves; raise --substeps or the sample rate");
+           " is beyond what the fit's simulation step resolves; raise substeps or the sample rate");
     sigma0 = std::min(sigma0, s0_limit);
     sigma1 = std::min(sigma1, s1_limit);
   }

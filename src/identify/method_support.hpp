@@ -1,12 +1,13 @@
 #pragma once
-// Private helpers shared by the identification methods: building a Result, ordinary least
-// squares with standard deviations, and the time-step check of in-memory signals.
+// Private helpers shared by the identification methods: building a Result, their least-squares
+// settings (identify/least_squares.hpp), and the time-step check of in-memory signals.
 
 #include <Eigen/Core>
 #include <string>
 
 #include "frictionlab/format.hpp"
 #include "frictionlab/identify/method.hpp"
+#include "frictionlab/identify/least_squares.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
 
@@ -24,19 +25,14 @@ void add_parameter(Result& r, const std::string& name, double value, double std,
 /// Fills r.fit from measured y and reconstructed y_hat (same length).
 void set_fit(Result& r, const Eigen::VectorXd& y, const Eigen::VectorXd& y_hat);
 
-/// Ordinary least squares y = X beta. std = s sqrt(diag((X'X)^-1)), s^2 = ||e||^2 / (N - p);
-/// condition number of X (ratio of extreme singular values). `ok` is false, with a message,
-/// when X has fewer rows than columns, a zero column, or is rank deficient.
-struct LinearFit {
-  bool ok = false;
-  std::string message;
-  Eigen::VectorXd beta, stdev;
-  Eigen::MatrixXd information;   ///< X'X (parameter units^-2 times the unit of y squared)
-  double residual_variance = 0;  ///< s^2
-  double rmse = 0;
-  double condition_number = 0;
-};
-LinearFit least_squares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y);
+/// The least-squares settings of the methods that separate a few effects from sliding data
+/// (breakaway, decay): refuse only what is singular to working precision (scaled condition
+/// number above 1e12); their own tests judge the estimates' spread.
+inline LeastSquaresOptions separable() {
+  LeastSquaresOptions o;
+  o.max_condition = 1e12;
+  return o;
+}
 
 /// Mean step of a strictly increasing, regular time vector (s): check_regular_sampling of
 /// signal/sampling.hpp with at least 3 samples.

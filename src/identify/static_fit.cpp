@@ -5,9 +5,11 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
+#include "frictionlab/identify/least_squares.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 
 namespace frictionlab {
@@ -180,20 +182,23 @@ struct OneSided {
   int below_vs = 0;        // points slower than the fitted vs
 };
 
-// Linear least squares F = Fc sign(v) + Fv v: exact, no start needed.
+// Linear least squares F = Fc sign(v) + Fv v: exact, no start needed. Every point counts (two
+// points on a side make an exact fit, its covariance then zero) and nothing is refused: the
+// velocity column is never zero, and a map at one speed (collinear columns) gives the
+// minimum-norm estimate with a covariance that is not finite, which the caller reports as such.
 void linear_coulomb_viscous(const Eigen::VectorXd& v, const Eigen::VectorXd& f, double& Fc, double& Fv,
                             Eigen::Matrix2d* cov = nullptr, double* ssr = nullptr) {
   Eigen::MatrixXd X(v.size(), 2);
   for (Eigen::Index i = 0; i < v.size(); ++i) X.row(i) << (v[i] > 0 ? 1.0 : -1.0), v[i];
-  const Eigen::Vector2d b = X.colPivHouseholderQr().solve(f);
-  Fc = b[0];
-  Fv = b[1];
-  const double r = (f - X * b).squaredNorm();
-  if (ssr) *ssr = r;
-  if (cov) {
-    const double dof = std::max<double>(1.0, static_cast<double>(v.size()) - 2);
-    *cov = (r / dof) * (X.transpose() * X).inverse();
-  }
+  LeastSquaresOptions lso;
+  lso.max_condition = std::numeric_limits<double>::infinity();
+  lso.min_redundancy = 0;
+  const LeastSquaresFit fit = linear_least_squares(X, f, {"Fc", "Fv"}, lso);
+  if (!fit.ok) throw std::logic_error("friction fit: " + fit.message);  // excluded by check_input
+  Fc = fit.theta[0];
+  Fv = fit.theta[1];
+  if (ssr) *ssr = fit.residual.squaredNorm();
+  if (cov) *cov = fit.covariance;
 }
 
 // Starting values from the folded points (a = |v| > 0, g = F sign(v)). The rules need only

@@ -58,21 +58,21 @@ double resolve_constant(const Dataset& data, const std::string& text, const std:
                               "': expected a number or the name of a scalar in the file; scalars: " + scalar_list(data));
 }
 
-ScaleFactor parse_scale(const std::string& spec) {
+ScaleFactor parse_scale(const std::string& spec, const std::string& option) {
   const auto eq = spec.find('=');
   ScaleFactor s;
   if (eq == std::string::npos || eq == 0 || !parse_number(spec.substr(eq + 1), s.factor)) {
-    throw std::invalid_argument("--scale '" + spec + "': expected NAME=FACTOR with a finite number, e.g. position=1e-3");
+    throw std::invalid_argument(option + " '" + spec + "': expected NAME=FACTOR with a finite number, e.g. position=1e-3");
   }
   s.column = spec.substr(0, eq);
   return s;
 }
 
-void apply_scales(Dataset& data, const std::vector<std::string>& specs) {
+void apply_scales(Dataset& data, const std::vector<std::string>& specs, const std::string& option) {
   for (const auto& spec : specs) {
-    const ScaleFactor s = parse_scale(spec);
+    const ScaleFactor s = parse_scale(spec, option);
     if (!data.has_column(s.column)) {
-      throw std::invalid_argument(data.missing_column_message(s.column, "--scale '" + spec + "'"));
+      throw std::invalid_argument(data.missing_column_message(s.column, option + " '" + spec + "'"));
     }
     data.column(s.column) *= s.factor;
   }
@@ -111,6 +111,7 @@ void resample_dataset(Dataset& data, const std::string& time_column, ResampleOpt
   resampled.sha256 = data.sha256;
   resampled.scalars = data.scalars;
   resampled.header_row = data.header_row;
+  resampled.names_option = data.names_option;
   resampled.unusable = data.unusable;
   resampled.warnings = data.warnings;
   for (auto& [name, values] : out) resampled.add_column(name, std::move(values));

@@ -163,7 +163,7 @@ Dataset read_csv(const std::string& path, const CsvOptions& options) {
       }
       if (!options.drop_invalid) {
         throw std::invalid_argument(where + (kind == Cell::empty ? "empty cell" : "'" + cells[c] + "'") +
-                                    "; expected a finite number (use drop_invalid / --drop-invalid to skip such rows)");
+                                    "; expected a finite number (use " + options.drop_invalid_option + " to skip such rows)");
       }
       invalid = true;
     }
@@ -208,6 +208,7 @@ Dataset read_csv(const std::string& path, const CsvOptions& options) {
                                     "'); expected a header row of column names or a row of numbers");
       }
       data.header_row = !headerless;
+      data.names_option = options.names_option;
       for (std::size_t c = 0; c < cells.size(); ++c) {
         names.push_back(headerless ? std::string(1, 'c').append(std::to_string(c + 1)) : unquote_name(cells[c]));
       }

@@ -62,7 +62,7 @@ std::string Dataset::describe_contents() const {
     }
     out += ")";
   }
-  if (!header_row) out += " (the file has no header row: its columns are c1, c2, ... from the first, unless named with --names / names=)";
+  if (!header_row) out += " (the file has no header row: its columns are c1, c2, ... from the first, unless named with " + names_option + ")";
   if (!unusable.empty()) {
     out += "; not columns:";
     bool first = true;

@@ -4,6 +4,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -120,30 +121,45 @@ Eigen::VectorXd numeric_values(const matvar_t& v) {
   }
 }
 
+using U32Reader = std::function<std::uint32_t(const unsigned char*)>;
+
+// One subelement of a v5 variable's header as its tag declares it: byte count, where its data
+// start, where the next tag starts.
+struct V5Subelement {
+  std::size_t bytes = 0, data_at = 0, next = 0;
+};
+
+// The tags of the first three subelements of a v5 variable (array flags, dimensions, name), read
+// from its miMATRIX tag at p (n bytes available). Returns how many of them the n bytes hold
+// whole (their data may still run past n).
+int v5_header_subelements(const unsigned char* p, std::size_t n, const U32Reader& u32, std::array<V5Subelement, 3>& out) {
+  std::size_t at = 8;  // past the miMATRIX tag
+  int count = 0;
+  for (; count < 3 && at + 8 <= n; ++count) {
+    const std::uint32_t type = u32(p + at);
+    V5Subelement& e = out[static_cast<std::size_t>(count)];
+    if ((type >> 16) != 0) {  // small element: byte count in the upper half, data in the tag
+      e.bytes = type >> 16;
+      e.data_at = at + 4;
+      e.next = at + 8;
+    } else {
+      e.bytes = u32(p + at + 4);
+      e.data_at = at + 8;
+      e.next = e.data_at + (e.bytes + 7) / 8 * 8;
+    }
+    at = e.next;
+  }
+  return count;
+}
+
 // The name of a v5 variable from the start of its (inflated) miMATRIX element: tag, array
 // flags, dimensions, then the name (a small or a normal miINT8 element). "" when cut short.
-std::string v5_variable_name(const unsigned char* p, std::size_t n, const std::function<std::uint32_t(const unsigned char*)>& u32) {
-  std::size_t at = 8;  // past the miMATRIX tag
-  for (int element = 0; element < 3; ++element) {
-    if (at + 8 > n) return "";
-    const std::uint32_t type = u32(p + at);
-    std::size_t bytes = 0, data_at = 0, next = 0;
-    if ((type >> 16) != 0) {  // small element: byte count in the upper half, data in the tag
-      bytes = type >> 16;
-      data_at = at + 4;
-      next = at + 8;
-    } else {
-      bytes = u32(p + at + 4);
-      data_at = at + 8;
-      next = data_at + (bytes + 7) / 8 * 8;
-    }
-    if (element == 2) {
-      if (bytes > 63 || data_at + bytes > n) return "";
-      return std::string(reinterpret_cast<const char*>(p + data_at), bytes);
-    }
-    at = next;
-  }
-  return "";
+std::string v5_variable_name(const unsigned char* p, std::size_t n, const U32Reader& u32) {
+  std::array<V5Subelement, 3> e;
+  if (v5_header_subelements(p, n, u32, e) < 3) return "";
+  const V5Subelement& name = e[2];
+  if (name.bytes > 63 || name.data_at + name.bytes > n) return "";
+  return std::string(reinterpret_cast<const char*>(p + name.data_at), name.bytes);
 }
 
 // The first three subelements of a v5 variable (array flags, dimensions, name), from its miMATRIX
@@ -153,23 +169,18 @@ std::string v5_variable_name(const unsigned char* p, std::size_t n, const std::f
 // declared size), the flags take 8 bytes, the dimensions at most 64 (4-byte) values and the name
 // at most 4096 characters (MATLAB's own limit is 63). Returns the problem, or "" (also when the
 // n bytes end before the three tags: the later checks then speak).
-std::string v5_matrix_header_problem(const unsigned char* p, std::size_t n, std::size_t element_bytes,
-                                     const std::function<std::uint32_t(const unsigned char*)>& u32) {
+std::string v5_matrix_header_problem(const unsigned char* p, std::size_t n, std::size_t element_bytes, const U32Reader& u32) {
   constexpr std::uint32_t kMiMatrix = 14;
   if (n < 8 || u32(p) != kMiMatrix) return "";
-  std::size_t at = 8;  // past the miMATRIX tag
   const char* what[3] = {"array flags", "dimensions", "name"};
   const std::size_t most[3] = {8, 4 * 64, 4096};
-  for (int element = 0; element < 3; ++element) {
-    if (at + 8 > n) return "";
-    const std::uint32_t type = u32(p + at);
-    const bool small = (type >> 16) != 0;  // byte count in the upper half, data in the tag
-    const std::size_t bytes = small ? type >> 16 : u32(p + at + 4);
-    const std::size_t next = small ? at + 8 : at + 8 + (bytes + 7) / 8 * 8;
-    if (bytes > most[element] || next > 8 + element_bytes)
-      return "the tag of its " + std::string(what[element]) + " declares " + std::to_string(bytes) +
-             " bytes, more than the variable holds or than " + std::to_string(most[element]) + " (corrupt header)";
-    at = next;
+  std::array<V5Subelement, 3> e;
+  const int count = v5_header_subelements(p, n, u32, e);
+  for (int k = 0; k < count; ++k) {
+    const V5Subelement& s = e[static_cast<std::size_t>(k)];
+    if (s.bytes > most[k] || s.next > 8 + element_bytes)
+      return "the tag of its " + std::string(what[k]) + " declares " + std::to_string(s.bytes) +
+             " bytes, more than the variable holds or than " + std::to_string(most[k]) + " (corrupt header)";
   }
   return "";
 }
@@ -195,7 +206,7 @@ std::vector<unsigned char> inflate_head(const std::vector<unsigned char>& in, st
 // does, with a matching adler32 checksum (matio 1.5.23 reads a stream with flipped bytes without
 // a word). Returns "" when it does, else what is wrong; `name` gets the variable's name when
 // the start of the stream can be read.
-std::string check_compressed(const std::vector<unsigned char>& in, const std::function<std::uint32_t(const unsigned char*)>& u32,
+std::string check_compressed(const std::vector<unsigned char>& in, const U32Reader& u32,
                              std::string& name) {
   z_stream z{};
   if (inflateInit(&z) != Z_OK) return "zlib cannot start";

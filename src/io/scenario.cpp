@@ -113,6 +113,29 @@ auto with_context(const std::string& where, F&& make) {
   }
 }
 
+// A name chosen from a fixed list: `key` of `s` (or `fallback` when absent) looked up in
+// `choices`; an unknown one is refused naming the key, the value and the valid names in the
+// table's order ("FILE: solver.mode: unknown solver mode 'x'; valid modes: auto, hybrid, ...").
+template <class T, std::size_t N>
+T choose(const Section& s, const std::string& key, const std::string& fallback, const std::pair<const char*, T> (&choices)[N],
+         const std::string& what, const std::string& plural) {
+  const std::string name = s.text(key, fallback);
+  for (const auto& [n, value] : choices)
+    if (name == n) return value;
+  std::string valid;
+  for (const auto& c : choices) valid += (valid.empty() ? "" : ", ") + std::string(c.first);
+  throw std::invalid_argument(s.at(key) + ": unknown " + what + " '" + name + "'; valid" + (plural.empty() ? "" : " " + plural) +
+                              ": " + valid);
+}
+
+// The names of a reader table, in order, for messages.
+template <class Entry, std::size_t N>
+std::string names_of(const Entry (&table)[N]) {
+  std::string out;
+  for (const auto& e : table) out += (out.empty() ? "" : ", ") + std::string(e.first);
+  return out;
+}
+
 // Where data come from while one scenario is read: the caller's data set, or files by name
 // (each read once), resolved from the scenario's directory.
 class DataSource {
@@ -157,7 +180,70 @@ class DataSource {
   std::map<std::string, std::shared_ptr<const Dataset>> cache_;
 };
 
-std::shared_ptr<const Plant> read_plant(const Section& s, const ScenarioOptions& o) {
+// Plant readers, one per plant type: each lists its keys, reads the required ones and takes
+// every optional one's default from the parameter struct.
+using PlantPtr = std::shared_ptr<const Plant>;
+
+PlantPtr read_axis(const Section& s) {
+  s.allow({"type", "M", "offset"});
+  AxisParams p;
+  p.M = s.number("M");
+  p.offset = s.number("offset", p.offset);
+  return with_context(s.path(), [&] { return std::make_shared<const RigidAxis>(p); });
+}
+
+PlantPtr read_pendulum(const Section& s) {
+  s.allow({"type", "m", "l", "g", "B"});
+  PendulumParams p;
+  p.m = s.number("m");
+  p.l = s.number("l");
+  p.g = s.number("g", p.g);
+  p.B = s.number("B", p.B);
+  return with_context(s.path(), [&] { return std::make_shared<const Pendulum>(p); });
+}
+
+PlantPtr read_spring_base(const Section& s) {
+  s.allow({"type", "m", "k", "c", "V0", "x0"});
+  SpringBaseParams p;
+  p.m = s.number("m");
+  p.k = s.number("k");
+  p.V0 = s.number("V0");
+  p.c = s.number("c", p.c);
+  p.x0 = s.number("x0", p.x0);
+  return with_context(s.path(), [&] { return std::make_shared<const SpringBase>(p); });
+}
+
+PlantPtr read_dc_motor(const Section& s) {
+  s.allow({"type", "J", "R", "L", "Kt", "Kb", "Ka", "load", "drive"});
+  static constexpr std::pair<const char*, MotorDrive> kDrives[] = {{"voltage", MotorDrive::voltage}, {"current", MotorDrive::current}};
+  DcMotorParams p;
+  p.drive = choose(s, "drive", "voltage", kDrives, "drive", "drives");
+  p.J = s.number("J");
+  p.R = s.number("R");
+  p.Kt = s.number("Kt");
+  p.Kb = s.number("Kb");
+  p.L = p.drive == MotorDrive::voltage ? s.number("L") : s.number("L", p.L);  // a current drive hides L
+  p.Ka = s.number("Ka", p.Ka);
+  p.load = s.number("load", p.load);
+  return with_context(s.path(), [&] { return std::make_shared<const DcMotor>(p); });
+}
+
+PlantPtr read_velocity_drive(const Section& s) {
+  s.allow({"type", "M"});
+  VelocityDriveParams p;
+  p.M = s.number("M", p.M);
+  return with_context(s.path(), [&] { return std::make_shared<const VelocityDrive>(p); });
+}
+
+constexpr std::pair<const char*, PlantPtr (*)(const Section&)> kPlantReaders[] = {
+    {"axis", read_axis},
+    {"pendulum", read_pendulum},
+    {"spring-base", read_spring_base},
+    {"dc-motor", read_dc_motor},
+    {"velocity-drive", read_velocity_drive},
+};
+
+PlantPtr read_plant(const Section& s, const ScenarioOptions& o) {
   if (o.axis) {
     const std::string type = s.text("type", "axis");
     if (type != "axis")
@@ -170,142 +256,121 @@ std::shared_ptr<const Plant> read_plant(const Section& s, const ScenarioOptions&
   }
   const std::string type = s.text("type", "");
   if (type.empty())
-    throw std::invalid_argument(s.path() + ": missing 'type'; valid plant types: axis, pendulum, spring-base, dc-motor, velocity-drive");
-  if (type == "axis") {
-    s.allow({"type", "M", "offset"});
-    AxisParams p;
-    p.M = s.number("M");
-    p.offset = s.number("offset", p.offset);
-    return with_context(s.path(), [&] { return std::make_shared<const RigidAxis>(p); });
-  }
-  if (type == "pendulum") {
-    s.allow({"type", "m", "l", "g", "B"});
-    PendulumParams p;
-    p.m = s.number("m");
-    p.l = s.number("l");
-    p.g = s.number("g", p.g);
-    p.B = s.number("B", p.B);
-    return with_context(s.path(), [&] { return std::make_shared<const Pendulum>(p); });
-  }
-  if (type == "spring-base") {
-    s.allow({"type", "m", "k", "c", "V0", "x0"});
-    SpringBaseParams p;
-    p.m = s.number("m");
-    p.k = s.number("k");
-    p.V0 = s.number("V0");
-    p.c = s.number("c", p.c);
-    p.x0 = s.number("x0", p.x0);
-    return with_context(s.path(), [&] { return std::make_shared<const SpringBase>(p); });
-  }
-  if (type == "dc-motor") {
-    s.allow({"type", "J", "R", "L", "Kt", "Kb", "Ka", "load", "drive"});
-    DcMotorParams p;
-    const std::string drive = s.text("drive", "voltage");
-    if (drive == "voltage") {
-      p.drive = MotorDrive::voltage;
-    } else if (drive == "current") {
-      p.drive = MotorDrive::current;
-    } else {
-      throw std::invalid_argument(s.at("drive") + ": unknown drive '" + drive + "'; valid drives: voltage, current");
-    }
-    p.J = s.number("J");
-    p.R = s.number("R");
-    p.Kt = s.number("Kt");
-    p.Kb = s.number("Kb");
-    p.L = p.drive == MotorDrive::voltage ? s.number("L") : s.number("L", p.L);
-    p.Ka = s.number("Ka", p.Ka);
-    p.load = s.number("load", p.load);
-    return with_context(s.path(), [&] { return std::make_shared<const DcMotor>(p); });
-  }
-  if (type == "velocity-drive") {
-    s.allow({"type", "M"});
-    VelocityDriveParams p;
-    p.M = s.number("M", p.M);
-    return with_context(s.path(), [&] { return std::make_shared<const VelocityDrive>(p); });
-  }
-  throw std::invalid_argument(s.at("type") + ": unknown plant type '" + type +
-                              "'; valid plant types: axis, pendulum, spring-base, dc-motor, velocity-drive");
+    throw std::invalid_argument(s.path() + ": missing 'type'; valid plant types: " + names_of(kPlantReaders));
+  return choose(s, "type", "", kPlantReaders, "plant type", "plant types")(s);
 }
 
 bool read_interpolation(const Section& s) {
-  const std::string interp = s.text("interpolation", "linear");
-  if (interp == "linear") return false;
-  if (interp == "hold") return true;
-  throw std::invalid_argument(s.at("interpolation") + ": unknown interpolation '" + interp + "'; valid: linear, hold");
+  static constexpr std::pair<const char*, bool> kHold[] = {{"linear", false}, {"hold", true}};
+  return choose(s, "interpolation", "linear", kHold, "interpolation", "");
 }
 
-InputSignal read_input(const Section& s, DataSource& src) {
+// Input readers, one per input type, as the plant readers: optional keys default to the
+// InputSignal's own fields. Each but `data` leaves the checks of the whole signal to read_input.
+InputSignal read_data_input(const Section& s, DataSource& src) {
+  s.allow({"type", "file", "column", "time", "scale", "interpolation"});
+  const std::string column = s.text("column", "");
+  if (column.empty()) throw std::invalid_argument(s.path() + ": missing 'column' (the column of the data file to read)");
+  const auto d = src.get(s.text("file", ""));
+  if (!d) throw std::invalid_argument(s.path() + ": no data file: give 'file' here or a top-level 'data'");
+  const double scale = s.number("scale", 1.0);
+  if (!std::isfinite(scale)) throw std::invalid_argument(s.at("scale") + ": " + detail::format_value(scale) + " must be a finite number");
+  InputSignal in = with_context(s.path(), [&] { return input_from_column(*d, s.text("time", "time"), column, scale, read_interpolation(s)); });
+  src.data_step = in.times.size() > 1 ? in.times[1] - in.times[0] : 0.0;
+  src.time_column = s.text("time", "time");
+  return in;
+}
+
+InputSignal read_constant(const Section& s, DataSource&) {
+  s.allow({"type", "value"});
   InputSignal in;
-  const std::string type = s.text("type", "");
-  const char* valid = "constant, step, ramp, trapezoid, sine, table, data";
-  if (type == "data") {
-    s.allow({"type", "file", "column", "time", "scale", "interpolation"});
-    const std::string column = s.text("column", "");
-    if (column.empty()) throw std::invalid_argument(s.path() + ": missing 'column' (the column of the data file to read)");
-    const auto d = src.get(s.text("file", ""));
-    if (!d) throw std::invalid_argument(s.path() + ": no data file: give 'file' here or a top-level 'data'");
-    const double scale = s.number("scale", 1.0);
-    if (!std::isfinite(scale)) throw std::invalid_argument(s.at("scale") + ": " + detail::format_value(scale) + " must be a finite number");
-    in = with_context(s.path(), [&] { return input_from_column(*d, s.text("time", "time"), column, scale, read_interpolation(s)); });
-    src.data_step = in.times.size() > 1 ? in.times[1] - in.times[0] : 0.0;
-    src.time_column = s.text("time", "time");
-    return in;
+  in.shape = InputShape::constant;
+  in.value = s.number("value");
+  return in;
+}
+
+InputSignal read_step(const Section& s, DataSource&) {
+  s.allow({"type", "value", "initial", "time"});
+  InputSignal in;
+  in.shape = InputShape::step;
+  in.value = s.number("value");
+  in.initial = s.number("initial", in.initial);
+  in.time = s.number("time", in.time);
+  return in;
+}
+
+InputSignal read_ramp(const Section& s, DataSource&) {
+  s.allow({"type", "rate", "initial", "time", "limit"});
+  InputSignal in;
+  in.shape = InputShape::ramp;
+  in.rate = s.number("rate");
+  in.initial = s.number("initial", in.initial);
+  in.time = s.number("time", in.time);
+  if (s.has("limit")) {
+    in.has_limit = true;
+    in.limit = s.number("limit");
   }
-  if (type.empty()) throw std::invalid_argument(s.path() + ": missing 'type'; valid input types: " + std::string(valid));
-  if (type == "constant") {
-    s.allow({"type", "value"});
-    in.shape = InputShape::constant;
-    in.value = s.number("value");
-  } else if (type == "step") {
-    s.allow({"type", "value", "initial", "time"});
-    in.shape = InputShape::step;
-    in.value = s.number("value");
-    in.initial = s.number("initial", 0.0);
-    in.time = s.number("time", 0.0);
-  } else if (type == "ramp") {
-    s.allow({"type", "rate", "initial", "time", "limit"});
-    in.shape = InputShape::ramp;
-    in.rate = s.number("rate");
-    in.initial = s.number("initial", 0.0);
-    in.time = s.number("time", 0.0);
-    if (s.has("limit")) {
-      in.has_limit = true;
-      in.limit = s.number("limit");
-    }
-  } else if (type == "trapezoid") {
-    s.allow({"type", "level", "rate", "hold", "rate_down", "initial", "time"});
-    in.shape = InputShape::trapezoid;
-    in.level = s.number("level");
-    in.rate = s.number("rate");
-    in.hold = s.number("hold", 0.0);
-    in.rate_down = s.number("rate_down", 0.0);
-    in.initial = s.number("initial", 0.0);
-    in.time = s.number("time", 0.0);
-  } else if (type == "sine") {
-    s.allow({"type", "amplitude", "omega", "frequency", "phase", "offset"});
-    in.shape = InputShape::sine;
-    in.amplitude = s.number("amplitude");
-    if (s.has("omega") && s.has("frequency"))
-      throw std::invalid_argument(s.path() + ": give either 'omega' (rad/s) or 'frequency' (Hz), not both");
-    if (s.has("frequency")) {
-      const double f = s.number("frequency");
-      if (!(f > 0)) throw std::invalid_argument(s.at("frequency") + ": " + detail::format_value(f) + " must be > 0 (Hz)");
-      in.omega = 2.0 * std::numbers::pi * f;
-    } else {
-      in.omega = s.number("omega");
-    }
-    in.phase = s.number("phase", 0.0);
-    in.offset = s.number("offset", 0.0);
-  } else if (type == "table") {
-    s.allow({"type", "times", "values", "interpolation"});
-    in.shape = InputShape::table;
-    in.times = s.numbers("times");
-    in.values = s.numbers("values");
-    in.hold_steps = read_interpolation(s);
+  return in;
+}
+
+InputSignal read_trapezoid(const Section& s, DataSource&) {
+  s.allow({"type", "level", "rate", "hold", "rate_down", "initial", "time"});
+  InputSignal in;
+  in.shape = InputShape::trapezoid;
+  in.level = s.number("level");
+  in.rate = s.number("rate");
+  in.hold = s.number("hold", in.hold);
+  in.rate_down = s.number("rate_down", in.rate_down);
+  in.initial = s.number("initial", in.initial);
+  in.time = s.number("time", in.time);
+  return in;
+}
+
+InputSignal read_sine(const Section& s, DataSource&) {
+  s.allow({"type", "amplitude", "omega", "frequency", "phase", "offset"});
+  InputSignal in;
+  in.shape = InputShape::sine;
+  in.amplitude = s.number("amplitude");
+  if (s.has("omega") && s.has("frequency"))
+    throw std::invalid_argument(s.path() + ": give either 'omega' (rad/s) or 'frequency' (Hz), not both");
+  if (s.has("frequency")) {
+    const double f = s.number("frequency");
+    if (!(f > 0)) throw std::invalid_argument(s.at("frequency") + ": " + detail::format_value(f) + " must be > 0 (Hz)");
+    in.omega = 2.0 * std::numbers::pi * f;
   } else {
-    throw std::invalid_argument(s.at("type") + ": unknown input type '" + type + "'; valid input types: " + valid);
+    in.omega = s.number("omega");
   }
-  in.validate(s.path());
+  in.phase = s.number("phase", in.phase);
+  in.offset = s.number("offset", in.offset);
+  return in;
+}
+
+InputSignal read_table(const Section& s, DataSource&) {
+  s.allow({"type", "times", "values", "interpolation"});
+  InputSignal in;
+  in.shape = InputShape::table;
+  in.times = s.numbers("times");
+  in.values = s.numbers("values");
+  in.hold_steps = read_interpolation(s);
+  return in;
+}
+
+struct InputReader {
+  InputSignal (*read)(const Section&, DataSource&);
+  bool checked = false;  // the reader checks the signal itself (a data column)
+};
+
+constexpr std::pair<const char*, InputReader> kInputReaders[] = {
+    {"constant", {read_constant}}, {"step", {read_step}}, {"ramp", {read_ramp}},           {"trapezoid", {read_trapezoid}},
+    {"sine", {read_sine}},         {"table", {read_table}}, {"data", {read_data_input, true}},
+};
+
+InputSignal read_input(const Section& s, DataSource& src) {
+  const std::string type = s.text("type", "");
+  if (type.empty()) throw std::invalid_argument(s.path() + ": missing 'type'; valid input types: " + names_of(kInputReaders));
+  const InputReader r = choose(s, "type", "", kInputReaders, "input type", "input types");
+  InputSignal in = r.read(s, src);
+  if (!r.checked) in.validate(s.path());
   return in;
 }
 
@@ -324,7 +389,7 @@ EmpsPdParams read_emps_pd(const Section& s, DataSource& src) {
   } else {
     throw std::invalid_argument(s.path() + ": missing 'dt' (sample period, s); without it the controller takes the step of a data input");
   }
-  const double delay = s.number("delay", 1.0);
+  const double delay = s.number("delay", p.delay);
   if (delay != 0.0 && delay != 1.0) throw std::invalid_argument(s.at("delay") + ": " + detail::format_value(delay) + " must be 0 or 1 (samples)");
   p.delay = static_cast<int>(delay);
   if (s.has("pulses")) {
@@ -359,20 +424,30 @@ EmpsPdParams read_emps_pd(const Section& s, DataSource& src) {
 ControllerParams read_controller(const Section& s) {
   s.allow({"type", "loop", "Kp", "Ki", "Kd", "limit"});
   ControllerParams c;
-  const std::string loop = s.text("loop", "position");
-  if (loop == "position") {
-    c.loop = ControlLoop::position;
-  } else if (loop == "velocity") {
-    c.loop = ControlLoop::velocity;
-  } else {
-    throw std::invalid_argument(s.at("loop") + ": unknown loop '" + loop + "'; valid loops: position, velocity");
-  }
+  static constexpr std::pair<const char*, ControlLoop> kLoops[] = {{"position", ControlLoop::position}, {"velocity", ControlLoop::velocity}};
+  c.loop = choose(s, "loop", "position", kLoops, "loop", "loops");
   c.Kp = s.number("Kp", c.Kp);
   c.Ki = s.number("Ki", c.Ki);
   c.Kd = s.number("Kd", c.Kd);
   c.limit = s.number("limit", c.limit);
   return c;
 }
+
+// Controller readers, one per controller type: each closes the loop around `plant`.
+PlantPtr close_pid(const Section& s, DataSource&, const PlantPtr& plant) {
+  const ControllerParams c = read_controller(s);
+  return with_context(s.path(), [&] { return std::make_shared<const ClosedLoop>(plant, c); });
+}
+
+PlantPtr close_emps_pd(const Section& s, DataSource& src, const PlantPtr& plant) {
+  const EmpsPdParams p = read_emps_pd(s, src);
+  return with_context(s.path(), [&] { return std::make_shared<const EmpsPdLoop>(plant, p); });
+}
+
+constexpr std::pair<const char*, PlantPtr (*)(const Section&, DataSource&, const PlantPtr&)> kControllerReaders[] = {
+    {"pid", close_pid},
+    {"emps-pd", close_emps_pd},
+};
 
 double positive(const Section& s, const std::string& key, double fallback, const char* unit, bool required) {
   const double v = required ? s.number(key) : s.number(key, fallback);
@@ -436,16 +511,7 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
   }
   if (top.has("controller")) {
     const Section cs = section("controller");
-    const std::string type = cs.text("type", "pid");
-    if (type == "emps-pd") {
-      const EmpsPdParams p = read_emps_pd(cs, src);
-      sc.plant = with_context(cs.path(), [&] { return std::make_shared<const EmpsPdLoop>(sc.plant, p); });
-    } else if (type == "pid") {
-      const ControllerParams c = read_controller(cs);
-      sc.plant = with_context(where + ": controller", [&] { return std::make_shared<const ClosedLoop>(sc.plant, c); });
-    } else {
-      throw std::invalid_argument(cs.at("type") + ": unknown controller type '" + type + "'; valid: pid, emps-pd");
-    }
+    sc.plant = choose(cs, "type", "pid", kControllerReaders, "controller type", "")(cs, src, sc.plant);
   }
   // Top-level values: messages as "FILE: duration: ..." to match the key path style.
   SimulationOptions& o = sc.options;
@@ -479,18 +545,9 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
   if (top.has("solver")) {
     const Section s = section("solver");
     s.allow({"mode", "rtol", "atol", "dt", "max_step", "max_steps"});
-    const std::string mode = s.text("mode", "auto");
-    if (mode == "auto") {
-      o.mode = SolverMode::automatic;
-    } else if (mode == "hybrid") {
-      o.mode = SolverMode::hybrid;
-    } else if (mode == "stiff") {
-      o.mode = SolverMode::stiff;
-    } else if (mode == "fixed-step") {
-      o.mode = SolverMode::fixed_step;
-    } else {
-      throw std::invalid_argument(s.at("mode") + ": unknown solver mode '" + mode + "'; valid modes: auto, hybrid, stiff, fixed-step");
-    }
+    static constexpr std::pair<const char*, SolverMode> kModes[] = {
+        {"auto", SolverMode::automatic}, {"hybrid", SolverMode::hybrid}, {"stiff", SolverMode::stiff}, {"fixed-step", SolverMode::fixed_step}};
+    o.mode = choose(s, "mode", "auto", kModes, "solver mode", "modes");
     o.rtol = positive(s, "rtol", o.rtol, "relative tolerance", false);
     o.atol = positive(s, "atol", o.atol, "absolute tolerance, state units", false);
     o.dt = positive(s, "dt", o.dt, "s", false);

@@ -93,12 +93,12 @@ void cascade(const SectionCoefficients& s, double* z, double* x, Eigen::Index co
 // sosfiltfilt of columns c0 .. c0 + W - 1 of x (fewer at the right edge) into the same columns
 // of out, keeping samples 0, q, 2q, ...: odd extension, forward pass from the steady state of
 // the first sample, backward pass from the steady state of the last output.
+// `data` holds (n + 2 padlen) W doubles of work space.
 template <int W>
 void filtfilt_block(const SectionCoefficients& s, const Eigen::MatrixX2d& zi, const ColumnViews& x,
-                    Eigen::Index c0, Eigen::Index padlen, Eigen::Index q, Eigen::MatrixXd& out) {
+                    Eigen::Index c0, Eigen::Index padlen, Eigen::Index q, Eigen::MatrixXd& out, double* const data) {
   const Eigen::Index n = x.front().size(), m = n + 2 * padlen, ns = s.rows();
   const int used = static_cast<int>(std::min<Eigen::Index>(W, static_cast<Eigen::Index>(x.size()) - c0));
-  double* const data = detail::scratch(detail::decimation_block, m * W).data();
   for (int c = used; c < W; ++c) {
     for (Eigen::Index i = 0; i < m; ++i) data[i * W + c] = 0.0;  // an idle lane
   }
@@ -263,7 +263,7 @@ Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Column
   const Eigen::MatrixX2d zi = sosfilt_zi(sos);
   const Eigen::Index cols = static_cast<Eigen::Index>(x.size());
   Eigen::MatrixXd out((n + keep_every - 1) / keep_every, cols);
-  const detail::ScratchScope scope;  // frees a very long record's block buffer when outermost
+  detail::ScratchFrame frame;  // the block buffer: reused by the next call (freed when huge and outermost)
   // A constant column (IDIM's offset) starts and stays in the steady state of both passes: it
   // comes out times the squared DC gain, so it needs no filtering.
   double dc_gain = 1.0;
@@ -280,11 +280,14 @@ Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Column
     }
   }
   Eigen::MatrixXd filtered(out.rows(), static_cast<Eigen::Index>(varying.size()));
+  // The widest block's work space (three columns run four lanes, one idle).
+  const Eigen::Index widest = filtered.cols() <= 2 ? filtered.cols() : kLanes;
+  double* const block = widest == 0 ? nullptr : frame.get((n + 2 * padlen) * widest).data();
   for (Eigen::Index c = 0; c < filtered.cols(); c += kLanes) {
     const Eigen::Index lanes = std::min<Eigen::Index>(kLanes, filtered.cols() - c);
-    if (lanes == 1) filtfilt_block<1>(s, zi, varying, c, padlen, keep_every, filtered);
-    else if (lanes == 2) filtfilt_block<2>(s, zi, varying, c, padlen, keep_every, filtered);
-    else filtfilt_block<kLanes>(s, zi, varying, c, padlen, keep_every, filtered);  // 3 columns: one idle lane
+    if (lanes == 1) filtfilt_block<1>(s, zi, varying, c, padlen, keep_every, filtered, block);
+    else if (lanes == 2) filtfilt_block<2>(s, zi, varying, c, padlen, keep_every, filtered, block);
+    else filtfilt_block<kLanes>(s, zi, varying, c, padlen, keep_every, filtered, block);  // 3 columns: one idle lane
   }
   for (std::size_t j = 0; j < where.size(); ++j) out.col(where[j]) = filtered.col(static_cast<Eigen::Index>(j));
   return out;

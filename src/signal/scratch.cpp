@@ -1,37 +1,44 @@
 #include "scratch.hpp"
 
-#include <vector>
+#include <cstdlib>
+#include <deque>
 
 namespace frictionlab::detail {
 namespace {
 
-std::vector<Eigen::VectorXd>& buffers() {
-  thread_local std::vector<Eigen::VectorXd> b;
-  return b;
+// A deque: growing it never moves the vectors (nor their data) handed out before.
+struct Arena {
+  std::deque<Eigen::VectorXd> buffers;
+  std::size_t top = 0;              // buffers [0, top) are held by open frames
+  ScratchFrame* innermost = nullptr;
+};
+
+Arena& arena() {
+  thread_local Arena a;
+  return a;
 }
 
 }  // namespace
 
-Eigen::Map<Eigen::VectorXd> scratch(int slot, Eigen::Index size) {
-  auto& all = buffers();
-  if (all.size() <= static_cast<std::size_t>(slot)) all.resize(static_cast<std::size_t>(slot) + 1);
-  Eigen::VectorXd& b = all[static_cast<std::size_t>(slot)];
+ScratchFrame::ScratchFrame() : base_(arena().top), outer_(arena().innermost) { arena().innermost = this; }
+
+ScratchFrame::~ScratchFrame() {
+  Arena& a = arena();
+  a.top = base_;
+  a.innermost = outer_;
+  if (outer_ != nullptr) return;
+  Eigen::Index total = 0;
+  for (const auto& b : a.buffers) total += b.size();
+  if (total > kScratchKeepDoubles) a.buffers.clear();
+}
+
+Eigen::Map<Eigen::VectorXd> ScratchFrame::get(Eigen::Index size) {
+  Arena& a = arena();
+  if (a.innermost != this) std::abort();  // a broken invariant of the library, not bad input
+  if (a.buffers.size() <= a.top) a.buffers.resize(a.top + 1);
+  Eigen::VectorXd& b = a.buffers[a.top++];
   if (b.size() < size) b.resize(size);  // grows only: a smaller request reuses the head
   return {b.data(), size};
-}
-
-namespace {
-thread_local int g_scope_depth = 0;
-}  // namespace
-
-ScratchScope::ScratchScope() { ++g_scope_depth; }
-
-ScratchScope::~ScratchScope() {
-  if (--g_scope_depth > 0) return;
-  auto& all = buffers();
-  Eigen::Index total = 0;
-  for (const auto& b : all) total += b.size();
-  if (total > kScratchKeepDoubles) all.clear();
 }
 
 }  // namespace frictionlab::detail

@@ -1,41 +1,48 @@
 #pragma once
-// Per-thread work buffers for the signal pipelines (private to the library).
+// Per-thread work buffers for long signal pipelines (private to the library).
 //
-// Why: IDIM and decimation run over records of 1e4 to 1e6 samples. On the virtual machines our
-// users and CI run on, first-touching freshly mapped pages (what every new buffer of that size
-// costs, since the allocator hands large blocks back to the system when they are freed) took
-// longer than the filtering itself. Buffers here grow, are kept for the thread's life (up to
-// kScratchKeepDoubles in all) and are reused, so a repeated identification maps no new memory.
-// A caller that can be re-entered (IDIM runs user column functions) must not hand out its slots
-// to a nested call of itself: it uses buffers of its own then.
+// Why: decimation and the identification pipelines built on it run over records of 1e4 to 1e6
+// samples. On the virtual machines our users and CI run on, first-touching freshly mapped pages
+// (what every new buffer of that size costs, since the allocator hands large blocks back to the
+// system when they are freed) took longer than the filtering itself. The buffers here grow, are
+// kept for the thread's life (up to kScratchKeepDoubles in all) and are reused, so a repeated
+// computation maps no new memory.
+//
+// The arena knows nothing of its users: a ScratchFrame takes the next free buffers of the
+// thread's stack of buffers and gives them back when it ends. Frames nest like calls, so a
+// computation re-entered from inside itself (a user's callback calling it again) gets buffers
+// above its caller's without any bookkeeping; a caller names its own buffers (a struct of the
+// Maps its frame handed out).
 
 #include <Eigen/Core>
+#include <cstddef>
 
 namespace frictionlab::detail {
 
-/// Who uses which buffer; a caller owns its slots while it runs (IDIM columns take
-/// idim_columns + term index).
-enum ScratchSlot : int { decimation_block = 0, filtfilt_padded, idim_qd, idim_qdd, idim_columns };
-
-/// Buffers larger than this in all (doubles: 64 MiB) are released at the end of the outermost
-/// ScratchScope.
+/// Buffers larger than this in all (doubles: 64 MiB) are released when the outermost frame on
+/// the thread ends, so a long-lived thread does not keep its largest record's memory.
 inline constexpr Eigen::Index kScratchKeepDoubles = Eigen::Index(8) << 20;
 
-/// A buffer of `size` doubles for `slot` on this thread (contents unspecified), valid until
-/// the next scratch() call with the same slot on this thread or the end of the outermost
-/// ScratchScope. Asking for a new slot may move the others' Eigen vectors, never their data.
-Eigen::Map<Eigen::VectorXd> scratch(int slot, Eigen::Index size);
-
-/// Marks a stretch of work that uses the buffers (an identification, a filtering call). When
-/// the outermost scope on the thread ends, buffers holding more than kScratchKeepDoubles in all
-/// (after a very long record) are freed, so a long-lived thread does not keep its largest
-/// record's memory; scopes opened inside it (the 41 regressions of a vs search) keep them.
-class ScratchScope {
+/// A stretch of work that uses the thread's buffers (a filtering call, an identification).
+/// Buffers come from get() in order and stay valid until the frame ends; frames opened inside
+/// it (by functions it calls) take buffers above its own and give them back when they end, so
+/// the 41 regressions of a vs search inside one outer frame reuse the same memory.
+/// Only the innermost frame of a thread may call get() (a frame is not handed to a callee that
+/// opens its own); a frame lives on the stack of one thread.
+class ScratchFrame {
  public:
-  ScratchScope();
-  ~ScratchScope();
-  ScratchScope(const ScratchScope&) = delete;
-  ScratchScope& operator=(const ScratchScope&) = delete;
+  ScratchFrame();
+  ~ScratchFrame();
+  ScratchFrame(const ScratchFrame&) = delete;
+  ScratchFrame& operator=(const ScratchFrame&) = delete;
+
+  /// The frame's next buffer of `size` doubles (contents unspecified). Its data never moves
+  /// while the frame lives.
+  Eigen::Map<Eigen::VectorXd> get(Eigen::Index size);
+
+ private:
+  std::size_t base_;  // the thread's first buffer this frame may hand out
+  ScratchFrame* outer_;
 };
 
 }  // namespace frictionlab::detail

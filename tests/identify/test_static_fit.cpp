@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <tuple>
 #include <vector>
@@ -181,4 +182,28 @@ TEST(StaticFit, StribeckDoesNotDependOnPointOrder) {
   }
   EXPECT_TRUE(sorted.converged);
   EXPECT_NEAR(sorted.rmse, shuffled.rmse, kOrderRelTol * shuffled.rmse);
+}
+
+// The Stribeck fit's residuals come from a vectorised kernel with an analytic Jacobian (speed:
+// 1e5 points, a Gram matrix per chunk), not from the law. Its fit figures must be the law's own:
+// the sum of squares the kernel reports at the solution equals the one of the fitted law's
+// sliding() over the points, on noisy points where the residuals are far from zero.
+TEST(StaticFit, StribeckKernelResidualsAreTheLaws) {
+  std::mt19937 rng(2024);
+  std::normal_distribution<double> noise(0.0, 1e-3);  // N m: force noise of a current sensor
+  const fl::Stribeck truth{0.02, 0.035, 0.8, 1.6, 1.5e-4};
+  const Eigen::VectorXd v = velocities(400, 300.0, true);
+  Eigen::VectorXd f = forces(truth, v);
+  for (Eigen::Index i = 0; i < f.size(); ++i) f[i] += noise(rng);
+  for (const auto model : {fl::StaticFitModel::stribeck, fl::StaticFitModel::stribeck_asymmetric}) {
+    fl::StaticFitOptions o;
+    o.model = model;
+    const auto fit = fl::fit_static_law(v, f, o);
+    double ssr = 0;
+    for (Eigen::Index i = 0; i < v.size(); ++i) ssr += std::pow(fit.law.sliding(v[i]) - f[i], 2);
+    // The kernel sums the same squares in another order and with exp(delta log x) for the power:
+    // rounding of a few eps per point on residuals of ~1e-3 against forces of ~0.05.
+    constexpr double kSumRelTol = 1e-9;
+    EXPECT_NEAR(fit.rmse, std::sqrt(ssr / static_cast<double>(v.size())), kSumRelTol * fit.rmse);
+  }
 }

@@ -39,12 +39,12 @@ struct ScaleFactor {
 
 /// Parses "NAME=FACTOR" (FACTOR a finite number, e.g. "position=1e-3" for mm to m).
 /// \throws std::invalid_argument naming the text and the expected form.
-ScaleFactor parse_scale(const std::string& spec);
+ScaleFactor parse_scale(const std::string& spec, const std::string& option = "scale");
 
 /// Multiplies each named column by its factor (in place), in order.
 /// \throws std::invalid_argument listing the file's columns when a named column is missing, or
 ///         as parse_scale.
-void apply_scales(Dataset& data, const std::vector<std::string>& specs);
+void apply_scales(Dataset& data, const std::vector<std::string>& specs, const std::string& option = "scale");
 
 /// Options of check_time.
 struct TimeCheckOptions {

@@ -41,6 +41,9 @@ struct CsvOptions {
   /// How the user gives `names`, for messages ("--names" on the command line, "names" in
   /// Python). Default "names".
   std::string names_option = "names";
+  /// How the user sets drop_invalid, for messages ("--drop-invalid" on the command line).
+  /// Default "drop_invalid".
+  std::string drop_invalid_option = "drop_invalid";
 };
 
 /// Reads a CSV file into a Dataset of columns; sets file, sha256, header_row and the line number

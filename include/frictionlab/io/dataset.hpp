@@ -28,6 +28,9 @@ class Dataset {
   /// For CSV data: false when the file has no header row (its columns are then named by the
   /// reader's `names`, the rest c1, c2, ... numbered from 1). True for MAT data.
   bool header_row = true;
+  /// How the reader's user names the columns of a file without a header row, for messages
+  /// (CsvOptions::names_option: "names", or "--names" on the command line).
+  std::string names_option = "names";
   /// For MAT data: variables that are in the file but cannot be a column or a scalar, with what
   /// they are, e.g. "qm" -> "a 3x4 matrix", "info" -> "a struct (fields: date, rig)". Messages
   /// about a missing column say what such a variable is instead of "no column".
