@@ -3,13 +3,12 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <nlohmann/json.hpp>
+#include <map>
 #include <optional>
 
 #include "commands.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/io/c_export.hpp"
-#include "frictionlab/io/law_file.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {
@@ -20,25 +19,6 @@ struct ExportArgs {
   bool single = false, overwrite = false;
   std::optional<double> band, dead_band, gain, bandwidth, inertia;
 };
-
-// The law, and the inertia M when the file is a MODEL.json that has one (idim, decay).
-struct Model {
-  FrictionLaw law;
-  std::optional<double> inertia;
-};
-
-Model read_model(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".yaml" || ext == ".yml") return {load_law(path), std::nullopt};
-  const nlohmann::json j = read_model_json(path);
-  Model m{law_from_json(j, path), std::nullopt};
-  if (j.contains("parameters") && j["parameters"].is_object() && j["parameters"].contains("M")) {
-    const auto& p = j["parameters"]["M"];
-    const auto& v = p.is_object() ? p.value("value", nlohmann::json()) : p;
-    if (v.is_number()) m.inertia = v.get<double>();
-  }
-  return m;
-}
 
 bool same_file(const std::string& a, const std::string& b) {
   namespace fs = std::filesystem;
@@ -54,7 +34,7 @@ void flag_belongs(const std::optional<double>& flag, const char* name, const std
                                 "; pass --compensation " + owner + " or drop " + name);
 }
 
-CompensationParams compensation(const ExportArgs& a, const Model& m) {
+CompensationParams compensation(const ExportArgs& a, const ExportModel& m) {
   const std::string& type = a.compensation;
   flag_belongs(a.band, "--band", type, "feedforward");
   flag_belongs(a.dead_band, "--dead-band", type, "feedback");
@@ -62,23 +42,21 @@ CompensationParams compensation(const ExportArgs& a, const Model& m) {
   flag_belongs(a.bandwidth, "--bandwidth", type, "disturbance-observer");
   flag_belongs(a.inertia, "--inertia", type, "disturbance-observer");
   if (type.empty()) return {};
-  CompensationParams c;
+  std::map<std::string, double> values;
+  for (const auto& [name, flag] : {std::pair{"band", a.band}, {"dead_band", a.dead_band}, {"gain", a.gain},
+                                   {"bandwidth", a.bandwidth}, {"inertia", a.inertia}})
+    if (flag) values[name] = *flag;
+  if (type == "disturbance-observer" && !a.inertia) {
+    if (!m.inertia)
+      throw std::invalid_argument("--inertia: missing; --compensation disturbance-observer needs the nominal inertia "
+                                  "(kg or kg m^2): pass --inertia, or a MODEL.json with parameters.M (identify idim)");
+    values["inertia"] = *m.inertia;
+  }
   try {
-    c = compensation_from_type(type);
+    return make_compensation(type, values);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string("--compensation: ") + e.what());
   }
-  if (auto* p = std::get_if<FeedforwardParams>(&c); p && a.band) p->band = *a.band;
-  if (auto* p = std::get_if<FeedbackParams>(&c); p && a.dead_band) p->dead_band = *a.dead_band;
-  if (auto* p = std::get_if<LuGreObserverParams>(&c); p && a.gain) p->gain = *a.gain;
-  if (auto* p = std::get_if<DisturbanceObserverParams>(&c)) {
-    if (a.bandwidth) p->bandwidth = *a.bandwidth;
-    if (!a.inertia && !m.inertia)
-      throw std::invalid_argument("--inertia: missing; --compensation disturbance-observer needs the nominal inertia "
-                                  "(kg or kg m^2): pass --inertia, or a MODEL.json with parameters.M (identify idim)");
-    p->inertia = a.inertia ? *a.inertia : *m.inertia;
-  }
-  return c;
 }
 
 }  // namespace
@@ -115,7 +93,7 @@ Handler register_export(CLI::App& app) {
       throw std::invalid_argument("--c " + a->output + " is the model file " + a->model +
                                   "; the header never replaces its input: give it its own file");
     check_output_file(a->output, a->overwrite, "--c");
-    const Model m = read_model(a->model);
+    const ExportModel m = read_export_model(a->model);
     CExportOptions o;
     o.prefix = a->prefix;
     o.single_precision = a->single;

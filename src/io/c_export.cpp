@@ -1,12 +1,18 @@
 #include "frictionlab/io/c_export.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
+#include "frictionlab/io/law_file.hpp"
 #include "frictionlab/version.hpp"
+#include "../models/table_knots.hpp"
 
 namespace frictionlab {
 namespace {
@@ -177,13 +183,12 @@ void static_side(Writer& w, const Law& law, const std::string& side) {
   static_sliding(w, law, side);
 }
 
-void table_branch(Writer& w, const Table& law, bool positive) {
-  const std::string side = positive ? "_pos" : "_neg";
-  const Table::Knots k = law.knots(positive);
+void table_branch(Writer& w, const detail::TableSide& k, const std::string& side) {
   const std::string n = std::to_string(k.speed.size());
   w.array("table" + side + "_speed", k.speed, "|v| ascending, m/s (rad/s on a rotary axis)");
   w.array("table" + side + "_level", k.level, "|F|, N (N m)");
-  w.array("table" + side + "_slope", k.slope, "monotone Hermite slopes d|F|/d|v|, N s/m (N m s/rad)");
+  w.array("table" + side + "_slope", detail::monotone_slopes(k.speed, k.level),
+          "monotone Hermite slopes d|F|/d|v|, N s/m (N m s/rad)");
   // Monotone cubic Hermite in |v|, held below the first point, linear past the last (models/table.hpp).
   w.code(R"(static inline REAL @_branch%(REAL a) {
   const REAL *v = @_table%_speed, *f = @_table%_level, *m = @_table%_slope;
@@ -218,8 +223,10 @@ template <class Law>
 void static_law(Writer& w, const Law& law) {
   std::string hi, lo;
   if constexpr (std::is_same_v<Law, Table>) {
-    table_branch(w, law, true);
-    table_branch(w, law, false);
+    detail::TableSide pos, neg;  // the points and slopes the Table interpolates (models/table_knots.hpp)
+    detail::table_sides(law.velocity(), law.force(), pos, neg);
+    table_branch(w, pos, "_pos");
+    table_branch(w, neg, "_neg");
     w.code(R"(/* Friction force (N or N m) at velocity v (m/s or rad/s); 0 at v = 0. */
 static inline REAL @_friction(REAL v) {
   if (v == 0.0_r) return 0.0_r;
@@ -583,14 +590,53 @@ const std::vector<std::string>& compensation_types() {
   return types;
 }
 
-CompensationParams compensation_from_type(std::string_view type) {
-  if (type == "feedforward") return FeedforwardParams{};
-  if (type == "feedback") return FeedbackParams{};
-  if (type == "lugre-observer") return LuGreObserverParams{};
-  if (type == "disturbance-observer") return DisturbanceObserverParams{};
-  std::string valid;
-  for (const auto& t : compensation_types()) valid += (valid.empty() ? "" : ", ") + t;
-  throw std::invalid_argument("compensation '" + std::string(type) + "' is not known; valid types: " + valid);
+CompensationParams make_compensation(std::string_view type, const std::map<std::string, double>& values) {
+  CompensationParams c;
+  std::vector<std::pair<const char*, double*>> fields;  // the type's parameter names and slots
+  if (type == "feedforward") {
+    auto& p = c.emplace<FeedforwardParams>();
+    fields = {{"band", &p.band}};
+  } else if (type == "feedback") {
+    auto& p = c.emplace<FeedbackParams>();
+    fields = {{"dead_band", &p.dead_band}};
+  } else if (type == "lugre-observer") {
+    auto& p = c.emplace<LuGreObserverParams>();
+    fields = {{"gain", &p.gain}};
+  } else if (type == "disturbance-observer") {
+    auto& p = c.emplace<DisturbanceObserverParams>();
+    fields = {{"bandwidth", &p.bandwidth}, {"inertia", &p.inertia}};
+  } else {
+    std::string valid;
+    for (const auto& t : compensation_types()) valid += (valid.empty() ? "" : ", ") + t;
+    throw std::invalid_argument("compensation '" + std::string(type) + "' is not known; valid types: " + valid);
+  }
+  for (const auto& [name, value] : values) {
+    const auto it = std::find_if(fields.begin(), fields.end(), [&](const auto& f) { return name == f.first; });
+    if (it == fields.end()) {
+      std::string has;
+      for (const auto& f : fields) has += (has.empty() ? "" : ", ") + std::string(f.first);
+      throw std::invalid_argument("compensation " + std::string(type) + " has no parameter '" + name + "'; it has " + has);
+    }
+    *it->second = value;
+  }
+  return c;
+}
+
+ExportModel read_export_model(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".yaml" || ext == ".yml") return {load_law(path), std::nullopt};
+  const nlohmann::json j = read_model_json(path);
+  ExportModel m{law_from_json(j, path), std::nullopt};
+  // M as `identify --json` writes it ({"value": v, ...}) or as a plain number.
+  if (j.contains("parameters") && j["parameters"].is_object() && j["parameters"].contains("M")) {
+    const auto& p = j["parameters"]["M"];
+    const auto& v = p.is_object() ? p.value("value", nlohmann::json()) : p;
+    if (!v.is_number())
+      throw std::invalid_argument(path + ": parameters.M: expected the identified inertia, a number (kg or kg m^2), got " +
+                                  v.dump());
+    m.inertia = v.get<double>();
+  }
+  return m;
 }
 
 std::string compensation_type(const CompensationParams& c) {

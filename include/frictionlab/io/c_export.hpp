@@ -23,6 +23,8 @@
 // dt in s. Sign convention: friction has the sign of the velocity and is subtracted
 // (M a = drive - F); a compensation's output estimates F and is ADDED to the drive's command.
 
+#include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -59,10 +61,26 @@ struct CExportOptions {
 /// "feedforward", "feedback", "lugre-observer", "disturbance-observer".
 const std::vector<std::string>& compensation_types();
 
-/// The compensation named `type` (one of compensation_types()) with its default parameters
-/// (disturbance-observer: inertia 0, which the caller must set).
-/// \throws std::invalid_argument "compensation 'TYPE' is not known; valid types: ...".
-CompensationParams compensation_from_type(std::string_view type);
+/// The compensation named `type` (one of compensation_types()) with the parameters in `values`,
+/// named as the fields of its options struct (SI units): feedforward: band (m/s or rad/s);
+/// feedback: dead_band (m/s or rad/s); lugre-observer: gain (1/s); disturbance-observer:
+/// bandwidth (rad/s), inertia (kg or kg m^2). A parameter left out keeps its default (the
+/// disturbance observer's inertia has none: 0, refused by c_header). Values are checked by c_header.
+/// \throws std::invalid_argument "compensation 'TYPE' is not known; valid types: ..." and
+///         "compensation feedforward has no parameter 'gain'; it has band".
+CompensationParams make_compensation(std::string_view type, const std::map<std::string, double>& values = {});
+
+/// A model file as the export reads it: its law and, when the file has one (the MODEL.json of
+/// `identify idim` or `decay`), the identified inertia M (kg or kg m^2), the disturbance
+/// observer's default.
+struct ExportModel {
+  FrictionLaw law;
+  std::optional<double> inertia;
+};
+
+/// Reads MODEL.json (read_model_json, law_from_json: the strict model reader) or a law file
+/// (.yaml/.yml through load_law). \throws std::invalid_argument naming the file.
+ExportModel read_export_model(const std::string& path);
 
 /// The type name of `c` ("" for std::monostate).
 std::string compensation_type(const CompensationParams& c);

@@ -41,16 +41,6 @@ class Table {
     return T(sign) * b.evaluate(a);
   }
   double breakaway_positive() const { return pos_.f.front(); }
-  /// One direction's interpolation points as sliding() uses them (for code generation,
-  /// io/c_export.hpp): |v| ascending (m/s or rad/s), |F| (N or N m) and the Hermite slopes
-  /// d|F|/d|v| (N s/m or N m s/rad), one each per point.
-  struct Knots {
-    std::vector<double> speed, level, slope;
-  };
-  Knots knots(bool positive) const {
-    const Branch& b = positive ? pos_ : neg_;
-    return {b.v, b.f, b.slope};
-  }
   double breakaway_negative() const { return neg_.f.front(); }
 
  private:
