@@ -46,14 +46,11 @@ CompensationParams compensation(const ExportArgs& a, const ExportModel& m) {
   for (const auto& [name, flag] : {std::pair{"band", a.band}, {"dead_band", a.dead_band}, {"gain", a.gain},
                                    {"bandwidth", a.bandwidth}, {"inertia", a.inertia}})
     if (flag) values[name] = *flag;
-  if (type == "disturbance-observer" && !a.inertia) {
-    if (!m.inertia)
-      throw std::invalid_argument("--inertia: missing; --compensation disturbance-observer needs the nominal inertia "
-                                  "(kg or kg m^2): pass --inertia, or a MODEL.json with parameters.M (identify idim)");
-    values["inertia"] = *m.inertia;
-  }
+  if (type == "disturbance-observer" && !a.inertia && !m.inertia)
+    throw std::invalid_argument("--inertia: missing; --compensation disturbance-observer needs the nominal inertia "
+                                "(kg or kg m^2): pass --inertia, or a MODEL.json with parameters.M (identify idim)");
   try {
-    return make_compensation(type, values);
+    return make_compensation(type, values, m.inertia);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string("--compensation: ") + e.what());
   }
@@ -72,7 +69,7 @@ Handler register_export(CLI::App& app) {
       "PREFIX_state, PREFIX_init(&s), PREFIX_update(&s, v, dt) for dynamic laws (stable for any dt);\n"
       "PREFIX_feedforward(vr), PREFIX_feedback(v), PREFIX_lugre_observer_update(&s, x, v, r, dt),\n"
       "PREFIX_disturbance_observer_update(&s, v, drive, dt) for the chosen compensation.\n"
-      "Example: frictionlab export model.json --c friction.h --compensation feedforward --band 0.002");
+      "Example: frictionlab export model.json --c friction.h --compensation feedforward --band 0.002\n");
   cmd->add_option("model", a->model, "MODEL.json of `frictionlab identify ... --json`, or a law file (.json, .yaml)")
       ->required();
   cmd->add_option("--c", a->output, "write the C header to this file (- for stdout)")->required();

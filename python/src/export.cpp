@@ -50,9 +50,8 @@ CompensationParams compensation_arg(const py::handle& c, const ExportModel& mode
     throw argument_type_error("export_c: argument compensation: expected None, a compensation name or a dict "
                               "{'type': NAME, parameter: value}");
   }
-  if (type == "disturbance-observer" && !values.count("inertia") && model.inertia) values["inertia"] = *model.inertia;
   try {
-    return make_compensation(type, values);
+    return make_compensation(type, values, model.inertia);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string("export_c: argument compensation: ") + e.what());
   }

@@ -590,7 +590,8 @@ const std::vector<std::string>& compensation_types() {
   return types;
 }
 
-CompensationParams make_compensation(std::string_view type, const std::map<std::string, double>& values) {
+CompensationParams make_compensation(std::string_view type, const std::map<std::string, double>& values,
+                                     std::optional<double> model_inertia) {
   CompensationParams c;
   std::vector<std::pair<const char*, double*>> fields;  // the type's parameter names and slots
   if (type == "feedforward") {
@@ -604,6 +605,7 @@ CompensationParams make_compensation(std::string_view type, const std::map<std::
     fields = {{"gain", &p.gain}};
   } else if (type == "disturbance-observer") {
     auto& p = c.emplace<DisturbanceObserverParams>();
+    p.inertia = model_inertia.value_or(0.0);
     fields = {{"bandwidth", &p.bandwidth}, {"inertia", &p.inertia}};
   } else {
     std::string valid;

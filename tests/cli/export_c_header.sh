@@ -79,7 +79,7 @@ expect_fail "disturbance-observer: inertia = -1 must be > 0" \
 expect_fail "--prefix '9axis' is not a C identifier" export "$tmp/model.json" --c "$out" --prefix 9axis
 no_output "$out"
 
-printf '{"law": "stribeck", "Fc": 1, "Fs": 0.5, "vs": 0.001}\n' > "$tmp/badlaw.json"
+printf '{"law": "stribeck", "Fc": 1, "Fs": 0.5, "vs": 0.001, "Fv": 0.1}\n' > "$tmp/badlaw.json"
 expect_fail "Fs = 0.5 must be >= Fc = 1" export "$tmp/badlaw.json" --c "$out"
 printf '{"law": "stribeck", "Fc": 1,\n' > "$tmp/broken.json"
 expect_fail "broken.json" export "$tmp/broken.json" --c "$out"

@@ -271,11 +271,24 @@ INSTANTIATE_TEST_SUITE_P(AllDynamicLaws, DynamicLawExport,
 
 // --- compensations ---
 
+// friction_<function>(v) over the grid, from the header of `law` with `compensation`.
+std::vector<double> band_output(const FrictionLaw& law, const CompensationParams& compensation, const std::string& function,
+                                const std::vector<double>& grid, bool single) {
+  TempDir dir;
+  CExportOptions o;
+  o.single_precision = single;
+  o.compensation = compensation;
+  return compile_and_run(dir, c_header(law, o),
+                         c_array(single ? "float" : "double", "vg", grid) +
+                             "int main(void) {\n  unsigned i;\n"
+                             "  for (i = 0; i < sizeof vg / sizeof vg[0]; ++i) printf(\"%.17g\\n\", (double)friction_" +
+                             function + "(vg[i]));\n  return 0;\n}\n");
+}
+
 class CompensationExport : public ::testing::TestWithParam<bool> {};
 
 TEST_P(CompensationExport, FeedforwardAndFeedbackMatchLibraryAcrossTheirBands) {
   const bool single = GetParam();
-  const char* type = single ? "float" : "double";
   Asymmetric<Stribeck> as;
   as.pos = {1.1, 1.6, 0.002, 2.0, 0.35};
   as.neg = {0.8, 1.3, 0.001, 1.5, 0.45};
@@ -289,39 +302,17 @@ TEST_P(CompensationExport, FeedforwardAndFeedbackMatchLibraryAcrossTheirBands) {
     // on an edge falls on the same side in both.
     const FeedforwardParams ff_ref{as_real(ff.band, single)};
     const FeedbackParams fb_ref{as_real(fb.dead_band, single)};
-    std::vector<double> lib;
-    {
-      TempDir dir;
-      CExportOptions o;
-      o.single_precision = single;
-      o.compensation = ff;
-      const std::vector<double> out = compile_and_run(
-          dir, c_header(law, o),
-          c_array(type, "vg", grid) +
-              "int main(void) {\n  unsigned i;\n"
-              "  for (i = 0; i < sizeof vg / sizeof vg[0]; ++i) printf(\"%.17g\\n\", (double)friction_feedforward(vg[i]));\n"
-              "  return 0;\n}\n");
-      const FeedforwardCompensation comp(law, ff_ref);
-      for (double x : grid) lib.push_back(comp.force(as_real(x, single)));
-      expect_close(out, lib, single, "feedforward");
+    const FeedforwardCompensation feedforward(law, ff_ref);
+    const FeedbackCompensation feedback(law, fb_ref);
+    std::vector<double> lib_ff, lib_fb;
+    for (double x : grid) {
+      lib_ff.push_back(feedforward.force(as_real(x, single)));
+      lib_fb.push_back(feedback.force(as_real(x, single)));
     }
-    {
-      TempDir dir;
-      CExportOptions o;
-      o.single_precision = single;
-      o.compensation = fb;
-      const std::vector<double> out = compile_and_run(
-          dir, c_header(law, o),
-          c_array(type, "vg", grid) +
-              "int main(void) {\n  unsigned i;\n"
-              "  for (i = 0; i < sizeof vg / sizeof vg[0]; ++i) printf(\"%.17g\\n\", (double)friction_feedback(vg[i]));\n"
-              "  return 0;\n}\n");
-      const FeedbackCompensation comp(law, fb_ref);
-      lib.clear();
-      for (double x : grid) lib.push_back(comp.force(as_real(x, single)));
-      expect_close(out, lib, single, "feedback");
-      EXPECT_EQ(out[0], 0.0);  // v = 0 is inside the dead band
-    }
+    expect_close(band_output(law, ff, "feedforward", grid, single), lib_ff, single, "feedforward");
+    const std::vector<double> out = band_output(law, fb, "feedback", grid, single);
+    expect_close(out, lib_fb, single, "feedback");
+    EXPECT_EQ(out.at(0), 0.0);  // v = 0 is inside the dead band
   }
 }
 
@@ -441,6 +432,10 @@ TEST(CExportErrors, CompensationThatDoesNotFitAndBadParametersNameTheKey) {
   const auto dob = std::get<DisturbanceObserverParams>(make_compensation("disturbance-observer", {{"inertia", 2.5}}));
   EXPECT_EQ(dob.inertia, 2.5);
   EXPECT_EQ(dob.bandwidth, DisturbanceObserverParams{}.bandwidth);
+  // The model's M is the default; an inertia given beats it.
+  EXPECT_EQ(std::get<DisturbanceObserverParams>(make_compensation("disturbance-observer", {}, 3.0)).inertia, 3.0);
+  EXPECT_EQ(std::get<DisturbanceObserverParams>(make_compensation("disturbance-observer", {{"inertia", 2.5}}, 3.0)).inertia,
+            2.5);
 }
 
 }  // namespace

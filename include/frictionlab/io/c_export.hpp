@@ -9,7 +9,8 @@
 //                                        force (FrictionLaw::sliding); each direction its own
 //                                        parameters for an asymmetric law
 //   PREFIX_friction_stuck(v, applied)    static laws: the force with stiction (friction_force in
-//                                        models/static_law.hpp; Karnopp's band)
+//                                        models/static_law.hpp; Karnopp's band), and
+//   PREFIX_breakaway_pos(), _neg()       the breakaway levels (N or N m)
 //   PREFIX_state, PREFIX_init(&s), PREFIX_update(&s, v, dt)
 //                                        dynamic laws: the state (m or rad), zero at start, and
 //                                        the fixed-step update at constant v over dt seconds
@@ -64,11 +65,13 @@ const std::vector<std::string>& compensation_types();
 /// The compensation named `type` (one of compensation_types()) with the parameters in `values`,
 /// named as the fields of its options struct (SI units): feedforward: band (m/s or rad/s);
 /// feedback: dead_band (m/s or rad/s); lugre-observer: gain (1/s); disturbance-observer:
-/// bandwidth (rad/s), inertia (kg or kg m^2). A parameter left out keeps its default (the
-/// disturbance observer's inertia has none: 0, refused by c_header). Values are checked by c_header.
+/// bandwidth (rad/s), inertia (kg or kg m^2). A parameter left out keeps its default; the
+/// disturbance observer's inertia has none: `model_inertia` (the model's identified M, kg or
+/// kg m^2) when given, else 0, which c_header refuses. Values are checked by c_header.
 /// \throws std::invalid_argument "compensation 'TYPE' is not known; valid types: ..." and
 ///         "compensation feedforward has no parameter 'gain'; it has band".
-CompensationParams make_compensation(std::string_view type, const std::map<std::string, double>& values = {});
+CompensationParams make_compensation(std::string_view type, const std::map<std::string, double>& values = {},
+                                     std::optional<double> model_inertia = std::nullopt);
 
 /// A model file as the export reads it: its law and, when the file has one (the MODEL.json of
 /// `identify idim` or `decay`), the identified inertia M (kg or kg m^2), the disturbance
