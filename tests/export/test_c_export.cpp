@@ -184,17 +184,27 @@ std::vector<LawCase> dynamic_laws() {
   };
 }
 
+// The law and precision a parameterised test runs (index into `laws`, float or double).
+struct ExportCase {
+  LawCase law;
+  bool single;
+  CExportOptions options;
+};
+ExportCase law_case(const std::vector<LawCase>& laws, std::tuple<int, bool> param, const std::string& prefix = "friction") {
+  ExportCase c{laws.at(static_cast<std::size_t>(std::get<0>(param))), std::get<1>(param), {}};
+  c.options.single_precision = c.single;
+  c.options.prefix = prefix;
+  return c;
+}
+
 // --- static laws: F(v) over the grid and the force with stiction ---
 
 class StaticLawExport : public ::testing::TestWithParam<std::tuple<int, bool>> {};
 
 TEST_P(StaticLawExport, MatchesLibraryOverVelocityGridAndAtRest) {
-  const auto [index, single] = GetParam();
-  const LawCase c = static_laws()[static_cast<std::size_t>(index)];
+  const auto [c, single, o] = law_case(static_laws(), GetParam());
   SCOPED_TRACE(c.name + (single ? " (float)" : " (double)"));
   TempDir dir;
-  CExportOptions o;
-  o.single_precision = single;
   const std::string header = c_header(c.law, o);
   const char* type = single ? "float" : "double";
   std::vector<double> v = velocity_grid();
@@ -226,16 +236,12 @@ INSTANTIATE_TEST_SUITE_P(AllStaticLaws, StaticLawExport,
 class DynamicLawExport : public ::testing::TestWithParam<std::tuple<int, bool>> {};
 
 TEST_P(DynamicLawExport, MatchesLibraryFixedStepRunAndSteadyMap) {
-  const auto [index, single] = GetParam();
-  const LawCase c = dynamic_laws()[static_cast<std::size_t>(index)];
+  const auto [c, single, o] = law_case(dynamic_laws(), GetParam(), "axis1");
   SCOPED_TRACE(c.name + (single ? " (float)" : " (double)"));
   TempDir dir;
-  CExportOptions o;
-  o.single_precision = single;
-  o.prefix = "axis1";
   const std::string header = c_header(c.law, o);
   const char* type = single ? "float" : "double";
-  const Record rec = rig_record(17u + static_cast<unsigned>(index));
+  const Record rec = rig_record(17u + static_cast<unsigned>(std::get<0>(GetParam())));
   // The record at 1 kHz, then steps far beyond any time constant (stable at any step), with a
   // standstill and a zero step.
   std::vector<double> v = rec.v, dt = rec.dt;
