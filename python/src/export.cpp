@@ -71,7 +71,14 @@ void init_export(py::module_& m) {
         o.prefix = prefix;
         if (!path.is_none()) {
           const std::string p = path_arg(path, "export_c", "path");
-          check_output_path(p, overwrite);  // before any work, as the command line does
+          try {
+            check_output_path(p, overwrite);  // before any work, as the command line does
+          } catch (const std::invalid_argument& e) {
+            std::string message = e.what();  // in Python's words: the keyword, not the CLI flag
+            if (const auto at = message.find("--overwrite"); at != std::string::npos)
+              message.replace(at, 11, "overwrite=True");
+            throw std::invalid_argument("export_c: argument path: " + message);
+          }
           const std::string text = c_header(em.law, o);
           write_file_atomic(p, text, {overwrite});
           return text;

@@ -56,7 +56,7 @@ def test_model_file_path_and_inertia_from_model(tmp_path):
     text = fl.export_c(model, compensation="disturbance-observer", path=out)
     assert out.read_text() == text
     assert "static const double friction_dob_inertia = 2.5;" in text
-    with pytest.raises(ValueError, match="exists; pass --overwrite"):
+    with pytest.raises(ValueError, match="export_c: argument path: .*exists; pass overwrite=True"):
         fl.export_c(model, path=out)
     assert out.read_text() == text  # untouched
     fl.export_c(model, path=out, overwrite=True)
