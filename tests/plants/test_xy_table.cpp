@@ -127,6 +127,10 @@ TEST(XyTable, EachAxisIsTheOneDofClosedLoopWhenTheOtherIsIdle) {
   // the idle axis adds its own root functions), so they agree to the integration error: at
   // rtol = 1e-12 about 1e-11 of the motion's scale; 1e-9 leaves a margin for other platforms.
   constexpr double kRelTol = 1e-9;
+  // The drive is Kp times the small position error (and Kd times the velocity's) of a stiff loop:
+  // it magnifies the runs' difference (measured 2.1e-9 of its scale against 2.3e-11 of the
+  // positions'); 1e-8 leaves a margin of 5.
+  constexpr double kDriveRelTol = 1e-8;
   const double M = 3.0;
   const StaticCoulombViscous law{12.0, 8.0, 20.0};  // Fs, Fc (N), Fv (N s/m): sticks at each reversal
   const ControllerParams c = gains_for(M);
@@ -147,8 +151,11 @@ TEST(XyTable, EachAxisIsTheOneDofClosedLoopWhenTheOtherIsIdle) {
     ASSERT_EQ(two.num_contacts(), 2);
     const ContactColumns& moving = two.contact(active);
     EXPECT_LT(relative_difference(moving.position, one.position), kRelTol);
-    EXPECT_LT(relative_difference(moving.velocity, one.velocity), kRelTol);
-    EXPECT_LT(relative_difference(moving.drive, one.drive), kRelTol);
+    EXPECT_LT(relative_difference(moving.velocity, one.velocity), kDriveRelTol);
+    EXPECT_LT(relative_difference(moving.drive, one.drive), kDriveRelTol);
+    std::printf("relative differences: position %.2g, velocity %.2g, drive %.2g\n",
+                relative_difference(moving.position, one.position), relative_difference(moving.velocity, one.velocity),
+                relative_difference(moving.drive, one.drive));
     const ContactColumns& still = two.contact(1 - active);
     EXPECT_EQ(*std::max_element(still.position.begin(), still.position.end()), 0.0);
     EXPECT_EQ(*std::min_element(still.position.begin(), still.position.end()), 0.0);
@@ -161,7 +168,8 @@ TEST(XyTable, EachAxisIsTheOneDofClosedLoopWhenTheOtherIsIdle) {
 // A compensator on an axis runs as in ClosedLoop: its states are plant states, its switches plant
 // events located by the engine, and the axis's run is the 1-DOF compensated loop's.
 TEST(XyTable, CompensatorIsWiredAsInTheClosedLoop) {
-  constexpr double kRelTol = 1e-9;  // as in the uncompensated comparison: integration error at rtol 1e-12
+  constexpr double kRelTol = 1e-9;        // as in the uncompensated comparison: integration error at rtol 1e-12
+  constexpr double kDriveRelTol = 1e-8;   // Kp times the position difference, as there
   const double M = 3.0;
   const StaticCoulombViscous law{12.0, 8.0, 20.0};
   const ControllerParams c = gains_for(M);
@@ -186,7 +194,7 @@ TEST(XyTable, CompensatorIsWiredAsInTheClosedLoop) {
   const InputSignal inputs[2] = {r, InputSignal{}};
   const Trajectory two = simulate(plant, Viscous{0.0}, inputs, o);
   EXPECT_LT(relative_difference(two.contact(0).position, one.position), kRelTol);
-  EXPECT_LT(relative_difference(two.contact(0).drive, one.drive), kRelTol);
+  EXPECT_LT(relative_difference(two.contact(0).drive, one.drive), kDriveRelTol);
   ASSERT_EQ(two.plant_events.size(), one.plant_events.size());
   for (std::size_t i = 0; i < one.plant_events.size(); ++i) {
     EXPECT_EQ(two.plant_events[i].index, one.plant_events[i].index);
