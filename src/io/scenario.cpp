@@ -684,9 +684,17 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
   const double default_duration = contour_duration ? *contour_duration : data_input ? sc.input.times.back() : 0.0;
   o.duration = top_positive("duration", default_duration, "s", !data_input && !contour_duration);
   o.output_rate = top_positive("output_rate", o.output_rate, "Hz", false);
+  std::vector<const FrictionLaw*> laws;  // every contact's: its own, else the scenario's
+  for (int k = 0; k < sc.plant->num_contacts(); ++k) {
+    const FrictionLaw* own = sc.plant->contact(k).law;
+    laws.push_back(own ? own : &sc.law);
+  }
   {
     // Refused here, before anything is allocated, naming the keys (simulate() checks it too).
-    const double need = output_bytes(o, sc.law.is_dynamic() ? sc.law.num_states() : 0), limit = max_output_bytes();
+    // Columns beyond one contact's nine: every law's states, and nine per further contact.
+    int extra = 9 * (static_cast<int>(laws.size()) - 1);
+    for (const FrictionLaw* law : laws) extra += law->is_dynamic() ? law->num_states() : 0;
+    const double need = output_bytes(o, extra), limit = max_output_bytes();
     if (!(need <= limit)) {
       const bool rate_given = top.has("output_rate");
       std::ostringstream m;
@@ -717,11 +725,6 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
       constexpr double kLongEnd = 0x1p63;  // 2^63: the first value a long cannot hold
       if (!(n < kLongEnd)) throw std::invalid_argument(s.at("max_steps") + ": " + detail::format_value(n) + " must be < 9.2e18 (steps)");
       o.max_steps = static_cast<long>(n);
-    }
-    std::vector<const FrictionLaw*> laws;  // every contact's: its own, else the scenario's
-    for (int k = 0; k < sc.plant->num_contacts(); ++k) {
-      const FrictionLaw* own = sc.plant->contact(k).law;
-      laws.push_back(own ? own : &sc.law);
     }
     with_context(s.at("mode"), [&] { return resolve_solver_mode(std::span<const FrictionLaw* const>(laws), o.mode); });
   }
