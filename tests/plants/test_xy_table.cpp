@@ -246,6 +246,30 @@ TEST(XyTable, SampledLoopHoldsAndDelaysTheCommand) {
   }
 }
 
+// Sampled: the compensator runs in its fixed-step form at the samples, its output in the command
+// computed there (before the saturation); it has no event functions (a drive switches at samples).
+TEST(XyTable, SampledCompensatorAddsItsOutputAtTheSample) {
+  const ControllerParams c{.Kp = 1000, .limit = 100};
+  const StaticCoulombViscous law{12.0, 8.0, 20.0};
+  const auto ff = std::make_shared<const FeedforwardCompensation>(law, FeedforwardParams{.band = 1e-3});
+  XyAxis x = axis_of(2.0, law, c);
+  x.compensator = ff;
+  const XyTable plant(x, axis_of(1.0, law, c), XyTiming{1e-3, 0});
+  EXPECT_EQ(plant.num_events(), 0);
+  EXPECT_EQ(plant.num_states(), 4 + 3 + ff->num_states() + 3);
+  std::vector<double> state(static_cast<std::size_t>(plant.num_states()), 0.0);
+  plant.initial_extras(state);
+  const InputValue r[2] = {{0.002, 0.05, 0.0}, {0.0, 0.0, 0.0}};  // x's reference moves at 0.05 m/s
+  plant.sample(0.0, state, r);
+  double applied[2];
+  plant.applied(0.0, state, r, applied);
+  // Out of the band the feedforward is the law at the reference velocity: Fc + Fv dr/dt.
+  constexpr double kRelTol = 1e-14;  // a handful of products and sums
+  const double expected = 1000 * 0.002 + (8.0 + 20.0 * 0.05);
+  EXPECT_NEAR(applied[0], expected, kRelTol * expected);
+  EXPECT_EQ(applied[1], 0.0);
+}
+
 TEST(XyTable, RejectsBadParametersNamingAxisAndUnit) {
   const XyAxis good = axis_of(1.0, Viscous{0.0}, {});
   XyAxis neg = good;
