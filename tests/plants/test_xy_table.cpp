@@ -46,14 +46,6 @@ XyAxis axis_of(double mass, FrictionLaw law, ControllerParams gains) {
   return a;
 }
 
-InputSignal sine(double amplitude, double omega) {
-  InputSignal in;
-  in.shape = InputShape::sine;
-  in.amplitude = amplitude;
-  in.omega = omega;
-  return in;
-}
-
 // Largest |a - b| over the columns, relative to b's largest magnitude.
 double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
   EXPECT_EQ(a.size(), b.size());
@@ -134,7 +126,10 @@ TEST(XyTable, EachAxisIsTheOneDofClosedLoopWhenTheOtherIsIdle) {
   const double M = 3.0;
   const StaticCoulombViscous law{12.0, 8.0, 20.0};  // Fs, Fc (N), Fv (N s/m): sticks at each reversal
   const ControllerParams c = gains_for(M);
-  const InputSignal r = sine(0.01, 4.0);            // m, rad/s
+  InputSignal r;  // 10 mm sine at 4 rad/s
+  r.shape = InputShape::sine;
+  r.amplitude = 0.01;
+  r.omega = 4.0;
   InputSignal idle;                                 // constant 0 m
   SimulationOptions o;
   o.duration = 2.0;
@@ -176,7 +171,10 @@ TEST(XyTable, CompensatorIsWiredAsInTheClosedLoop) {
   const auto comp = std::make_shared<const FeedbackCompensation>(law, FeedbackParams{.dead_band = 0.005});
   ASSERT_GT(comp->num_events(), 0);
   ASSERT_GT(comp->num_states(), 0);
-  const InputSignal r = sine(0.01, 4.0);
+  InputSignal r;  // 10 mm sine at 4 rad/s
+  r.shape = InputShape::sine;
+  r.amplitude = 0.01;
+  r.omega = 4.0;
   SimulationOptions o;
   o.duration = 2.0;
   o.output_rate = 500.0;
