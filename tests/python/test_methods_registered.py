@@ -3,10 +3,7 @@ binding (python/src/methods/, seen through fl.methods()) and a command (`frictio
 NAME`, or `frictionlab NAME` for a method with a command of its own), in the library's order; and
 a result carries the fitted signal and unit its method declares.
 
-The command line is located as in test_peers_agree.py: $FRICTIONLAB_CLI, else
-$FRICTIONLAB_BUILD_DIR/app/frictionlab (set by ctest), else <source>/build/app/frictionlab."""
-import os
-import pathlib
+The command line is conftest.py's `cli` fixture."""
 import re
 import subprocess
 
@@ -15,25 +12,15 @@ import pytest
 
 import frictionlab as fl
 
-SOURCE = pathlib.Path(os.environ.get("FRICTIONLAB_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
-
 # identify_idim on the generated rig record below: 1 % force noise, a 1 um encoder and a 10 mN
 # force quantum over 20 s at 1 kHz leave the least-squares estimates of M and Fc within a few
 # tenths of a percent (their std is ~0.1 %); 2 % flags a wrong fit, not noise.
 IDIM_REL_TOL = 2e-2
 
 
-def cli():
-    build = pathlib.Path(os.environ.get("FRICTIONLAB_BUILD_DIR", SOURCE / "build"))
-    path = pathlib.Path(os.environ.get("FRICTIONLAB_CLI", build / "app" / "frictionlab"))
-    if not path.exists():
-        pytest.skip(f"frictionlab CLI not found at {path} (set FRICTIONLAB_CLI)")
-    return str(path)
-
-
-def subcommands(*args):
+def subcommands(cli, *args):
     """Names listed under "Subcommands:" by `frictionlab ARGS --help`, in their order."""
-    text = subprocess.run([cli(), *args, "--help"], stdout=subprocess.PIPE, text=True, check=True).stdout
+    text = subprocess.run([cli, *args, "--help"], stdout=subprocess.PIPE, text=True, check=True).stdout
     block = text.split("Subcommands:\n", 1)[1].split("\n\n", 1)[0]
     return [m.group(1) for m in re.finditer(r"^  (\S+)", block, re.MULTILINE)]
 
@@ -50,9 +37,9 @@ def test_every_library_method_has_a_python_binding():
         assert (set(m.fit_units) == {"linear", "rotary"}) == bool(m.fit_signal), m
 
 
-def test_every_library_method_has_a_cli_command():
-    identify = subcommands("identify")
-    top = subcommands()
+def test_every_library_method_has_a_cli_command(cli):
+    identify = subcommands(cli, "identify")
+    top = subcommands(cli)
     table = fl.methods()
     for m in table:
         # identify_NAME runs as `frictionlab identify NAME`; any other (validate) as its own command.
