@@ -23,29 +23,46 @@ struct SimulateArgs {
   bool overwrite = false;
 };
 
-// A short human summary of a run: what ran, where it ended, the mode switches.
+// A contact's label in the summary: "" for a 1-DOF plant's one contact, "x: " for a named one.
+std::string label_of(const Trajectory& tr, int k) {
+  const std::string& name = tr.contact_names.empty() ? std::string() : tr.contact_names[static_cast<std::size_t>(k)];
+  return name.empty() ? std::string() : name + ": ";
+}
+
+// A short human summary of a run: what ran, where it ended, the mode switches. A plant with
+// several contacts gets one line per contact where the 1-DOF summary has one value.
 std::string summary(const std::string& file, const Scenario& sc, const Trajectory& tr) {
   std::ostringstream out;
-  double vmax = 0.0, fmax = 0.0;
-  for (std::size_t i = 0; i < tr.rows(); ++i) {
-    vmax = std::max(vmax, std::abs(tr.velocity[i]));
-    fmax = std::max(fmax, std::abs(tr.friction[i]));
+  const int nc = tr.num_contacts();
+  std::string laws, finals, peaks;
+  for (int k = 0; k < nc; ++k) {
+    const ContactColumns& c = tr.contact(k);
+    double vmax = 0.0, fmax = 0.0;
+    for (std::size_t i = 0; i < tr.rows(); ++i) {
+      vmax = std::max(vmax, std::abs(c.velocity[i]));
+      fmax = std::max(fmax, std::abs(c.friction[i]));
+    }
+    const std::string sep = k == 0 ? "" : "\n           ";
+    const FrictionLaw* own = k < sc.plant->num_contacts() ? sc.plant->contact(k).law : nullptr;
+    laws += sep + label_of(tr, k) + (own ? own->name() : sc.law.name());
+    finals += sep + label_of(tr, k) + "position " + format_number(c.position.back()) + ", velocity " + format_number(c.velocity.back());
+    peaks += sep + label_of(tr, k) + "|velocity| " + format_number(vmax) + ", |friction| " + format_number(fmax);
   }
   out << "scenario   " << file << "\n"
       << "plant      " << sc.plant->type() << "\n"
-      << "friction   " << sc.law.name() << "\n"
+      << "friction   " << laws << "\n"
       << "solver     " << tr.stats.solver << " (" << tr.stats.steps << " steps, " << tr.stats.restarts
       << " restarts)\n"
       << "samples    " << tr.rows() << " rows, t = 0 .. " << format_number(tr.time.back()) << " s\n"
-      << "final      position " << format_number(tr.position.back()) << ", velocity " << format_number(tr.velocity.back()) << "\n"
-      << "peak       |velocity| " << format_number(vmax) << ", |friction| " << format_number(fmax) << "\n";
+      << "final      " << finals << "\n"
+      << "peak       " << peaks << "\n";
   if (!tr.switches.empty()) {
     out << "switches   " << tr.switches.size() << " (stick/slip mode changes)\n";
     const std::size_t shown = std::min<std::size_t>(tr.switches.size(), 6);
     for (std::size_t i = 0; i < shown; ++i) {
       const auto& s = tr.switches[i];
-      out << "  t = " << format_number(s.time) << " s  " << switch_kind_name(s.kind) << "  at position " << format_number(s.position)
-          << ", applied " << format_number(s.applied) << "\n";
+      out << "  t = " << format_number(s.time) << " s  " << label_of(tr, s.contact) << switch_kind_name(s.kind) << "  at position "
+          << format_number(s.position) << ", applied " << format_number(s.applied) << "\n";
     }
     if (shown < tr.switches.size()) out << "  ... (" << tr.switches.size() - shown << " more)\n";
   }
@@ -60,7 +77,8 @@ Handler register_simulate(CLI::App& app) {
   cmd->add_option("scenario", args->scenario, "scenario YAML file (see examples/*.yaml)")->required();
   cmd->add_option("-o,--output", args->output,
                   "write the trajectory as CSV (columns time, position, velocity, friction, applied, current, "
-                  "voltage, reference, stuck); without it a summary is printed");
+                  "voltage, reference, stuck; a plant with several axes: time, then x.position, x.velocity, ... "
+                  "x.drive for each axis); without it a summary is printed");
   add_plot_option(cmd, args->plot);
   cmd->add_flag("--overwrite", args->overwrite, "replace an existing output file");
   return [args]() -> int {

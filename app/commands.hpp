@@ -17,5 +17,6 @@ Handler register_simulate(CLI::App& app);
 Handler register_identify(CLI::App& app);
 Handler register_validate(CLI::App& app);
 Handler register_analyze(CLI::App& app);
+Handler register_export(CLI::App& app);
 
 }  // namespace frictionlab::cli

@@ -39,6 +39,7 @@ from ._core import (
     Trajectory,
     ValidationFigures,
     __version__,
+    export_c,
     law_names,
     load_law,
     sha256_file,
@@ -66,7 +67,7 @@ __all__ = [
     "ArgumentTypeError", "BreakawayOptions", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
     "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
-    "cross_test", "decay_envelope", "detect_stick_slip", "fit_static_law", "identify_breakaway", "identify_decay",
+    "cross_test", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "identify_breakaway", "identify_decay",
     "identify_idim", "identify_lugre", "identify_sweep", "idim_reconstruction", "idim_regression", "law_names", "load", "load_law",
     "sha256_file", "simulate", "sweep_points", "validate",
 ]

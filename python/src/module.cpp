@@ -133,6 +133,8 @@ py::array_t<double> to_array(std::span<const double> values) {
   return out;
 }
 
+void init_export(py::module_& m);  // export.cpp: export_c (the C header of io/c_export.hpp)
+
 }  // namespace frictionlab::python
 
 PYBIND11_MODULE(_core, m) {
@@ -167,4 +169,5 @@ PYBIND11_MODULE(_core, m) {
   fp::init_identify(m);
   fp::init_simulate(m);
   fp::init_analysis(m);
+  fp::init_export(m);
 }

@@ -3,6 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +25,8 @@
 #include "frictionlab/plants/pendulum.hpp"
 #include "frictionlab/plants/spring_base.hpp"
 #include "frictionlab/plants/velocity_drive.hpp"
+#include "frictionlab/plants/xy_table.hpp"
+#include "frictionlab/core/contour_input.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "frictionlab/simulate/output_size.hpp"
 #include "yaml_keys.hpp"
@@ -184,7 +187,13 @@ class DataSource {
 // every optional one's default from the parameter struct.
 using PlantPtr = std::shared_ptr<const Plant>;
 
-PlantPtr read_axis(const Section& s) {
+// What a plant reader may need beyond its section: whether a law for contacts without their
+// own exists (the top-level `friction`, or the caller's law).
+struct PlantContext {
+  bool fallback_law = false;
+};
+
+PlantPtr read_axis(const Section& s, const PlantContext&) {
   s.allow({"type", "M", "offset"});
   AxisParams p;
   p.M = s.number("M");
@@ -192,7 +201,7 @@ PlantPtr read_axis(const Section& s) {
   return with_context(s.path(), [&] { return std::make_shared<const RigidAxis>(p); });
 }
 
-PlantPtr read_pendulum(const Section& s) {
+PlantPtr read_pendulum(const Section& s, const PlantContext&) {
   s.allow({"type", "m", "l", "g", "B"});
   PendulumParams p;
   p.m = s.number("m");
@@ -202,7 +211,7 @@ PlantPtr read_pendulum(const Section& s) {
   return with_context(s.path(), [&] { return std::make_shared<const Pendulum>(p); });
 }
 
-PlantPtr read_spring_base(const Section& s) {
+PlantPtr read_spring_base(const Section& s, const PlantContext&) {
   s.allow({"type", "m", "k", "c", "V0", "x0"});
   SpringBaseParams p;
   p.m = s.number("m");
@@ -213,7 +222,7 @@ PlantPtr read_spring_base(const Section& s) {
   return with_context(s.path(), [&] { return std::make_shared<const SpringBase>(p); });
 }
 
-PlantPtr read_dc_motor(const Section& s) {
+PlantPtr read_dc_motor(const Section& s, const PlantContext&) {
   s.allow({"type", "J", "R", "L", "Kt", "Kb", "Ka", "load", "drive"});
   static constexpr std::pair<const char*, MotorDrive> kDrives[] = {{"voltage", MotorDrive::voltage}, {"current", MotorDrive::current}};
   DcMotorParams p;
@@ -228,22 +237,85 @@ PlantPtr read_dc_motor(const Section& s) {
   return with_context(s.path(), [&] { return std::make_shared<const DcMotor>(p); });
 }
 
-PlantPtr read_velocity_drive(const Section& s) {
+PlantPtr read_velocity_drive(const Section& s, const PlantContext&) {
   s.allow({"type", "M"});
   VelocityDriveParams p;
   p.M = s.number("M", p.M);
   return with_context(s.path(), [&] { return std::make_shared<const VelocityDrive>(p); });
 }
 
-constexpr std::pair<const char*, PlantPtr (*)(const Section&)> kPlantReaders[] = {
+// Position-loop gains and force limit of an xy-table axis (N per m, m/s, m/s^2; N): the plant's
+// `controller` gives both axes' values, an axis's `drive` overrides any of them.
+void read_xy_gains(const Section& s, ControllerParams& c) {
+  c.Kp = s.number("Kp", c.Kp);
+  c.Ki = s.number("Ki", c.Ki);
+  c.Kd = s.number("Kd", c.Kd);
+  c.Kvff = s.number("Kvff", c.Kvff);
+  c.Kaff = s.number("Kaff", c.Kaff);
+  c.limit = s.number("limit", c.limit);
+}
+
+XyAxis read_xy_axis(const Section& s, const ControllerParams& common, const PlantContext& ctx) {
+  s.allow({"mass", "inertia", "lead", "friction", "drive"});
+  XyAxis a;
+  if (!s.has("mass") && !s.has("inertia"))
+    throw std::invalid_argument(s.path() + ": missing 'mass' (kg) or 'inertia' (kg m^2) with 'lead' (m/rev)");
+  a.mass = s.number("mass", a.mass);
+  if (s.has("inertia")) {
+    a.inertia = s.number("inertia");
+    if (!s.has("lead")) throw std::invalid_argument(s.path() + ": missing 'lead' (m/rev, the screw's), needed with 'inertia'");
+    a.lead = s.number("lead");
+  } else if (s.has("lead")) {
+    throw std::invalid_argument(s.at("lead") + ": a lead without 'inertia' (kg m^2) has nothing to reflect; give both or neither");
+  }
+  if (s.has("friction")) {
+    a.law = law_from_yaml(s.node("friction"), s.at("friction"));
+  } else if (!ctx.fallback_law) {
+    throw std::invalid_argument(s.path() + ": missing 'friction' (the axis's law), and there is no top-level 'friction' for it");
+  }
+  a.gains = common;
+  if (s.has("drive")) {
+    const Section d(s.node("drive"), s.at("drive"));
+    d.allow({"limit", "Kp", "Ki", "Kd", "Kvff", "Kaff"});
+    read_xy_gains(d, a.gains);
+  }
+  return a;
+}
+
+PlantPtr read_xy_table(const Section& s, const PlantContext& ctx) {
+  s.allow({"type", "axes", "controller"});
+  if (!s.has("axes")) throw std::invalid_argument(s.path() + ": missing 'axes' (a mapping with the x and y axes)");
+  const Section axes(s.node("axes"), s.at("axes"));
+  axes.allow({"x", "y"});
+  for (const char* name : {"x", "y"})
+    if (!axes.has(name)) throw std::invalid_argument(axes.path() + ": missing '" + name + "' (the " + name + " axis)");
+  ControllerParams common;
+  XyTiming timing;
+  if (s.has("controller")) {
+    const Section c(s.node("controller"), s.at("controller"));
+    c.allow({"Kp", "Ki", "Kd", "Kvff", "Kaff", "limit", "Ts", "delay"});
+    read_xy_gains(c, common);
+    timing.Ts = c.number("Ts", timing.Ts);
+    const double delay = c.number("delay", timing.delay);
+    if (delay != 0.0 && delay != 1.0)
+      throw std::invalid_argument(c.at("delay") + ": " + detail::format_value(delay) + " must be 0 or 1 (samples)");
+    timing.delay = static_cast<int>(delay);
+  }
+  XyAxis x = read_xy_axis(Section(axes.node("x"), axes.at("x")), common, ctx);
+  XyAxis y = read_xy_axis(Section(axes.node("y"), axes.at("y")), common, ctx);
+  return with_context(s.path(), [&] { return std::make_shared<const XyTable>(std::move(x), std::move(y), timing); });
+}
+
+constexpr std::pair<const char*, PlantPtr (*)(const Section&, const PlantContext&)> kPlantReaders[] = {
     {"axis", read_axis},
     {"pendulum", read_pendulum},
     {"spring-base", read_spring_base},
     {"dc-motor", read_dc_motor},
     {"velocity-drive", read_velocity_drive},
+    {"xy-table", read_xy_table},
 };
 
-PlantPtr read_plant(const Section& s, const ScenarioOptions& o) {
+PlantPtr read_plant(const Section& s, const ScenarioOptions& o, const PlantContext& ctx) {
   if (o.axis) {
     const std::string type = s.text("type", "axis");
     if (type != "axis")
@@ -257,7 +329,7 @@ PlantPtr read_plant(const Section& s, const ScenarioOptions& o) {
   const std::string type = s.text("type", "");
   if (type.empty())
     throw std::invalid_argument(s.path() + ": missing 'type'; valid plant types: " + names_of(kPlantReaders));
-  return choose(s, "type", "", kPlantReaders, "plant type", "plant types")(s);
+  return choose(s, "type", "", kPlantReaders, "plant type", "plant types")(s, ctx);
 }
 
 bool read_interpolation(const Section& s) {
@@ -373,6 +445,63 @@ InputSignal read_input(const Section& s, DataSource& src) {
   if (!r.checked) in.validate(s.path());
   return in;
 }
+
+// Two-axis inputs (an xy-table's x and y references), one reader per type as the 1-input ones:
+// each gives both signals and the duration the contour takes.
+struct Contour {
+  std::array<InputSignal, 2> inputs;
+  double duration = 0.0;  // s: the circle's turns, the path's last time
+};
+
+Contour read_circle(const Section& s, DataSource&) {
+  s.allow({"type", "centre", "radius", "feed", "direction", "turns", "start_angle"});
+  CircleContour c;
+  if (s.has("centre")) {
+    const std::vector<double> v = s.numbers("centre");
+    if (v.size() != 2)
+      throw std::invalid_argument(s.at("centre") + ": expected [x, y] (m), got " + std::to_string(v.size()) + " numbers");
+    c.cx = v[0];
+    c.cy = v[1];
+  }
+  c.radius = s.number("radius");
+  c.feed = s.number("feed");
+  static constexpr std::pair<const char*, bool> kDirections[] = {{"ccw", false}, {"cw", true}};
+  c.clockwise = choose(s, "direction", "ccw", kDirections, "direction", "directions");
+  c.turns = s.number("turns", c.turns);
+  c.start_angle = s.number("start_angle", c.start_angle);
+  c.validate(s.path());
+  return {c.inputs(), c.duration()};
+}
+
+Contour read_path(const Section& s, DataSource& src) {
+  s.allow({"type", "file", "time", "x", "y", "scale"});
+  const auto d = src.get(s.text("file", ""));
+  if (!d) throw std::invalid_argument(s.path() + ": no path file: give 'file' (a CSV with time, x and y columns) or a top-level 'data'");
+  const double scale = s.number("scale", 1.0);
+  if (!(std::isfinite(scale) && scale > 0))
+    throw std::invalid_argument(s.at("scale") + ": " + detail::format_value(scale) + " must be > 0 (m per file unit)");
+  const std::string tn = s.text("time", "time"), xn = s.text("x", "x"), yn = s.text("y", "y");
+  const auto column = [&](const std::string& name, const char* role) {
+    return with_context(s.path(), [&]() -> const Eigen::VectorXd& { return finite_column(*d, name, role); });
+  };
+  const Eigen::VectorXd t = column(tn, "time"), x = column(xn, "x"), y = column(yn, "y");
+  for (Eigen::Index k = 1; k < t.size(); ++k)
+    if (!(t[k] > t[k - 1]))
+      throw std::invalid_argument(s.path() + ": " + d->where() + d->row_label(k) + ", column '" + tn + "': time " +
+                                  detail::format_value(t[k]) + " s must be after the previous row's " + detail::format_value(t[k - 1]) + " s");
+  std::vector<double> xs(x.data(), x.data() + x.size()), ys(y.data(), y.data() + y.size());
+  for (double& v : xs) v *= scale;
+  for (double& v : ys) v *= scale;
+  Contour c;
+  c.inputs = path_inputs(std::span<const double>(t.data(), static_cast<std::size_t>(t.size())), xs, ys, s.path());
+  c.duration = t.size() > 0 ? t[t.size() - 1] : 0.0;
+  return c;
+}
+
+constexpr std::pair<const char*, Contour (*)(const Section&, DataSource&)> kContourReaders[] = {
+    {"circle", read_circle},
+    {"path", read_path},
+};
 
 EmpsPdParams read_emps_pd(const Section& s, DataSource& src) {
   s.allow({"type", "kp", "kv", "gtau", "limit", "dt", "delay", "pulses"});
@@ -502,14 +631,40 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
   };
   DataSource src(options, top.text("data", ""));
   Scenario sc;
-  sc.plant = read_plant(section("plant"), options);
-  sc.law = options.law ? *options.law : law_from_yaml(root["friction"], where + ": friction");
-  if (top.has("input")) {
-    sc.input = read_input(section("input"), src);
+  PlantContext ctx;
+  ctx.fallback_law = options.law.has_value() || top.has("friction");
+  sc.plant = read_plant(section("plant"), options, ctx);
+  const bool two_axis = sc.plant->num_inputs() == 2;  // an xy-table: its axes carry their laws
+  if (options.law) {
+    sc.law = *options.law;
+  } else if (top.has("friction") || !two_axis) {
+    sc.law = law_from_yaml(root["friction"], where + ": friction");
+  }  // else every axis has its own law: sc.law stays unused
+  std::optional<double> contour_duration;  // s: the time the two-axis contour takes
+  if (two_axis) {
+    if (!top.has("input"))
+      throw std::invalid_argument(where + ": missing 'input' (the contour of the " + sc.plant->type() + "); valid input types: " +
+                                  names_of(kContourReaders));
+    const Section is = section("input");
+    if (is.text("type", "").empty())
+      throw std::invalid_argument(is.path() + ": missing 'type'; valid two-axis input types: " + names_of(kContourReaders));
+    const Contour c = choose(is, "type", "", kContourReaders, "two-axis input type", "input types")(is, src);
+    sc.inputs.assign(c.inputs.begin(), c.inputs.end());
+    contour_duration = c.duration;
+    if (top.has("controller"))
+      throw std::invalid_argument(where + ": controller: the " + sc.plant->type() +
+                                  "'s axes have their controller inside the plant: move it to plant.controller");
+  } else if (top.has("input")) {
+    const Section is = section("input");
+    for (const auto& c : kContourReaders)
+      if (is.text("type", "") == c.first)
+        throw std::invalid_argument(is.at("type") + ": input type '" + c.first + "' gives two references and needs a two-axis plant (xy-table); plant " +
+                                    sc.plant->type() + " takes one input: " + names_of(kInputReaders));
+    sc.input = read_input(is, src);
   } else {
     sc.input = InputSignal{};  // constant 0: a free response
   }
-  if (top.has("controller")) {
+  if (top.has("controller") && !two_axis) {
     const Section cs = section("controller");
     sc.plant = choose(cs, "type", "pid", kControllerReaders, "controller type", "")(cs, src, sc.plant);
   }
@@ -526,11 +681,20 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
     return v;
   };
   const bool data_input = src.data_step.has_value();
-  o.duration = top_positive("duration", data_input ? sc.input.times.back() : 0.0, "s", !data_input);
+  const double default_duration = contour_duration ? *contour_duration : data_input ? sc.input.times.back() : 0.0;
+  o.duration = top_positive("duration", default_duration, "s", !data_input && !contour_duration);
   o.output_rate = top_positive("output_rate", o.output_rate, "Hz", false);
+  std::vector<const FrictionLaw*> laws;  // every contact's: its own, else the scenario's
+  for (int k = 0; k < sc.plant->num_contacts(); ++k) {
+    const FrictionLaw* own = sc.plant->contact(k).law;
+    laws.push_back(own ? own : &sc.law);
+  }
   {
     // Refused here, before anything is allocated, naming the keys (simulate() checks it too).
-    const double need = output_bytes(o, sc.law.is_dynamic() ? sc.law.num_states() : 0), limit = max_output_bytes();
+    // Columns beyond one contact's nine: every law's states, and nine per further contact.
+    int extra = 9 * (static_cast<int>(laws.size()) - 1);
+    for (const FrictionLaw* law : laws) extra += law->is_dynamic() ? law->num_states() : 0;
+    const double need = output_bytes(o, extra), limit = max_output_bytes();
     if (!(need <= limit)) {
       const bool rate_given = top.has("output_rate");
       std::ostringstream m;
@@ -562,9 +726,28 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
       if (!(n < kLongEnd)) throw std::invalid_argument(s.at("max_steps") + ": " + detail::format_value(n) + " must be < 9.2e18 (steps)");
       o.max_steps = static_cast<long>(n);
     }
-    with_context(s.at("mode"), [&] { return resolve_solver_mode(sc.law, o.mode); });
+    with_context(s.at("mode"), [&] { return resolve_solver_mode(std::span<const FrictionLaw* const>(laws), o.mode); });
   }
-  if (top.has("initial")) {
+  if (two_axis) {
+    // The axes start at rest on the contour's first point (no step at t = 0), unless `initial`
+    // gives positions [x, y] (m) and velocities [vx, vy] (m/s).
+    for (const InputSignal& in : sc.inputs) {
+      o.initial_positions.push_back(in.at(0.0).value);
+      o.initial_velocities.push_back(0.0);
+    }
+    if (top.has("initial")) {
+      const Section s = section("initial");
+      s.allow({"position", "velocity"});
+      for (const char* key : {"position", "velocity"}) {
+        if (!s.has(key)) continue;
+        const std::vector<double> v = s.numbers(key);
+        if (v.size() != 2)
+          throw std::invalid_argument(s.at(key) + ": expected [x, y] (" + (key[0] == 'p' ? "m" : "m/s") + "), got " +
+                                      std::to_string(v.size()) + " numbers");
+        (key[0] == 'p' ? o.initial_positions : o.initial_velocities) = v;
+      }
+    }
+  } else if (top.has("initial")) {
     const Section s = section("initial");
     s.allow({"position", "velocity"});
     const YAML::Node pos = s.node("position");

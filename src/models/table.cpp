@@ -1,5 +1,7 @@
 #include "frictionlab/models/table.hpp"
 
+#include "table_knots.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -12,7 +14,7 @@ namespace {
 
 // Fritsch-Carlson monotone slopes, written here because neither Eigen nor the Debian Boost
 // (1.74, before boost::math pchip) provide monotone Hermite interpolation.
-Table::Branch Table::make_branch(std::vector<double> v, std::vector<double> f) {
+std::vector<double> detail::monotone_slopes(const std::vector<double>& v, const std::vector<double>& f) {
   const std::size_t n = v.size();
   std::vector<double> d(n - 1), m(n, 0.0);
   for (std::size_t k = 0; k + 1 < n; ++k) d[k] = (f[k + 1] - f[k]) / (v[k + 1] - v[k]);
@@ -32,32 +34,38 @@ Table::Branch Table::make_branch(std::vector<double> v, std::vector<double> f) {
       m[k + 1] = tau * b * d[k];
     }
   }
+  return m;
+}
+
+void detail::table_sides(const std::vector<double>& velocity, const std::vector<double>& force, TableSide& pos,
+                         TableSide& neg) {
+  pos = {};
+  neg = {};
+  for (std::size_t k = 0; k < velocity.size(); ++k) {
+    if (velocity[k] > 0) {
+      pos.speed.push_back(velocity[k]);
+      pos.level.push_back(force[k]);
+    } else {
+      neg.speed.insert(neg.speed.begin(), -velocity[k]);
+      neg.level.insert(neg.level.begin(), -force[k]);
+    }
+  }
+  if (neg.speed.empty()) neg = pos;  // only one direction measured: mirror it
+  if (pos.speed.empty()) pos = neg;
+}
+
+Table::Branch Table::make_branch(std::vector<double> v, std::vector<double> f) {
+  std::vector<double> m = detail::monotone_slopes(v, f);
   return Branch{std::move(v), std::move(f), std::move(m)};
 }
 
 Table::Table(std::vector<double> velocity, std::vector<double> force)
     : velocity_(std::move(velocity)), force_(std::move(force)) {
   validate();
-  std::vector<double> pv, pf, nv, nf;
-  for (std::size_t k = 0; k < velocity_.size(); ++k) {
-    if (velocity_[k] > 0) {
-      pv.push_back(velocity_[k]);
-      pf.push_back(force_[k]);
-    } else {
-      nv.insert(nv.begin(), -velocity_[k]);
-      nf.insert(nf.begin(), -force_[k]);
-    }
-  }
-  if (nv.empty()) {  // only one direction measured: mirror it
-    nv = pv;
-    nf = pf;
-  }
-  if (pv.empty()) {
-    pv = nv;
-    pf = nf;
-  }
-  pos_ = make_branch(std::move(pv), std::move(pf));
-  neg_ = make_branch(std::move(nv), std::move(nf));
+  detail::TableSide pos, neg;
+  detail::table_sides(velocity_, force_, pos, neg);
+  pos_ = make_branch(std::move(pos.speed), std::move(pos.level));
+  neg_ = make_branch(std::move(neg.speed), std::move(neg.level));
 }
 
 void Table::validate() const {

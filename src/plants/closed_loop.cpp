@@ -18,11 +18,7 @@ void require(bool ok, const char* name, double value, const char* rule) {
 ClosedLoop::ClosedLoop(std::shared_ptr<const Plant> inner, ControllerParams c,
                        std::shared_ptr<const Compensator> compensator)
     : inner_(std::move(inner)), c_(c), compensator_(std::move(compensator)) {
-  if (!inner_) throw std::invalid_argument("controller: no plant to control");
-  if (inner_->kinematic())
-    throw std::invalid_argument("controller: cannot close a loop around a " + inner_->type() +
-                                " (its velocity is imposed); use axis or dc-motor");
-  require_single(*inner_, "controller");
+  require_loop_plant(inner_.get(), "controller");
   require(std::isfinite(c.Kp) && c.Kp >= 0, "Kp", c.Kp, ">= 0");
   require(std::isfinite(c.Ki) && c.Ki >= 0, "Ki", c.Ki, ">= 0");
   require(std::isfinite(c.Kd) && c.Kd >= 0, "Kd", c.Kd, ">= 0");

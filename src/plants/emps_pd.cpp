@@ -24,11 +24,7 @@ constexpr std::size_t kApplied = 0, kComputed = 1, kPrevQ = 2, kPrevQf = 3, kPri
 }  // namespace
 
 EmpsPdLoop::EmpsPdLoop(std::shared_ptr<const Plant> inner, EmpsPdParams p) : inner_(std::move(inner)), p_(std::move(p)) {
-  if (!inner_) throw std::invalid_argument("controller (emps-pd): no plant to control");
-  if (inner_->kinematic())
-    throw std::invalid_argument("controller (emps-pd): cannot close a loop around a " + inner_->type() +
-                                " (its velocity is imposed); use axis or dc-motor");
-  require_single(*inner_, "controller (emps-pd)");
+  require_loop_plant(inner_.get(), "controller (emps-pd)");
   require(std::isfinite(p_.kp) && p_.kp >= 0, "kp", p_.kp, ">= 0 (1/s)");
   require(std::isfinite(p_.kv) && p_.kv >= 0, "kv", p_.kv, ">= 0 (V/(m/s))");
   require(std::isfinite(p_.gtau) && p_.gtau > 0, "gtau", p_.gtau, "> 0 (N/V)");

@@ -83,7 +83,12 @@ PlantSignals SingleContactPlant::signals_of(const Plant& p, double t, std::span<
   return s;
 }
 
-void SingleContactPlant::require_single(const Plant& inner, const char* who) {
+void SingleContactPlant::require_loop_plant(const Plant* inner_ptr, const char* who) {
+  if (!inner_ptr) throw std::invalid_argument(std::string(who) + ": no plant to control");
+  const Plant& inner = *inner_ptr;
+  if (inner.kinematic())
+    throw std::invalid_argument(std::string(who) + ": cannot close a loop around a " + inner.type() +
+                                " (its velocity is imposed); use axis or dc-motor");
   if (inner.num_contacts() != 1 || inner.num_inputs() != 1)
     throw std::invalid_argument(std::string(who) + ": cannot close this loop around a " + inner.type() + " with " +
                                 std::to_string(inner.num_contacts()) + " contacts and " +

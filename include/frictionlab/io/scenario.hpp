@@ -2,7 +2,7 @@
 // Scenario files: a YAML description of a simulation (plant, friction law, input, controller,
 // duration, output rate, solver, initial state) turned into a Scenario.
 //
-//   plant:      {type: axis|pendulum|spring-base|dc-motor|velocity-drive, ...parameters}
+//   plant:      {type: axis|pendulum|spring-base|dc-motor|velocity-drive|xy-table, ...parameters}
 //   friction:   {law: NAME, ...parameters}          # the law YAML form of io/law_file.hpp
 //   input:      {type: constant|step|ramp|trapezoid|sine|table, ...}
 //   controller: {loop: position|velocity, Kp, Ki, Kd, limit}   # optional, continuous P/PI/PD/PID
@@ -33,6 +33,24 @@
 // saturated output, read from the data file on the same grid (optional: none when absent).
 // initial.position may name a column of the data file: its first sample (m).
 // Relative file names are resolved from the scenario file's directory.
+//
+// xy-table (plants/xy_table.hpp), two axes with their own laws and drives:
+//   plant:
+//     type: xy-table
+//     axes:
+//       x: {mass: 25, friction: {law: stribeck, ...}, drive: {limit: 2000}}   # kg; law in N vs m/s
+//       y: {mass: 8, inertia: 2e-4, lead: 0.01, friction: {...}, drive: {limit: 1000, Kaff: 16}}
+//     controller: {Kp, Ki, Kd, Kvff, Kaff, limit, Ts (0 = continuous), delay (0|1)}
+//   input: {type: circle, centre: [0, 0], radius: 0.01, feed: 0.02, direction: ccw|cw, turns: 1,
+//           start_angle: 0}                                          # m, m/s, rad
+//   input: {type: path, file: path.csv, time: time, x: x, y: y, scale: 1}   # columns; scale m per unit
+//   initial: {position: [x, y], velocity: [vx, vy]}   # optional; default: at rest on the contour's start
+// Per axis: mass (kg) and/or inertia (kg m^2) with lead (m/rev), equivalent mass mass + inertia
+// (2 pi / lead)^2; friction (required unless a top-level `friction` stands in for it); drive: the
+// force limit (N) and any gain overriding the plant's controller (gains in N/m, N/(m s), N/(m/s),
+// N/(m/s), N/(m/s^2)). The top-level `friction` and `controller` belong to 1-input plants; the
+// xy-table refuses a top-level controller. `duration` defaults to the circle's turns 2 pi R / F, or
+// the path's last time. Circle and path are refused for a 1-input plant, 1-input types for an xy-table.
 
 #include <memory>
 #include <optional>

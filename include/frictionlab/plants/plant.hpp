@@ -152,8 +152,10 @@ class SingleContactPlant : public Plant {
   static void derivatives_of(const Plant& p, double t, std::span<const double> x, const InputValue& u, double friction,
                              std::span<double> dx);
   static PlantSignals signals_of(const Plant& p, double t, std::span<const double> x, const InputValue& u);
-  /// \throws std::invalid_argument (prefixed by `who`) unless `inner` has one contact and one input.
-  static void require_single(const Plant& inner, const char* who);
+  /// The checks of a loop closed around `inner`: it exists, its velocity is not imposed, and it has one
+  /// contact and one input.
+  /// \throws std::invalid_argument prefixed by `who` ("controller") naming what is wrong.
+  static void require_loop_plant(const Plant* inner, const char* who);
 };
 
 }  // namespace frictionlab

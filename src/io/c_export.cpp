@@ -1,0 +1,702 @@
+#include "frictionlab/io/c_export.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "frictionlab/io/law_file.hpp"
+#include "frictionlab/version.hpp"
+#include "../models/table_knots.hpp"
+
+namespace frictionlab {
+namespace {
+
+// The C text is written from templates in which
+//   @       stands for the prefix,                  REAL for double or float,
+//   %       for the parameter side ("", "_pos" or "_neg" of an asymmetric law),
+//   $exp(   for exp( or expf( (every math.h call is written so),
+//   2.0_r   for a literal 2.0 or 2.0f,
+// so that one template serves both precisions and every law's sides. The formulas follow the
+// library's (models/*.hpp, control/*.cpp) operation by operation, so that in double the header
+// rounds as the library does.
+class Writer {
+ public:
+  Writer(std::string prefix, bool single) : prefix_(std::move(prefix)), single_(single) {}
+
+  const std::string& prefix() const { return prefix_; }
+  bool single() const { return single_; }
+
+  /// A C literal of `x` with full round-trip precision (%.17g), as a float literal in float mode.
+  std::string number(double x) const {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", x);
+    std::string s = buf;
+    if (single_) {
+      if (s.find_first_of(".e") == std::string::npos) s += ".0";
+      s += "f";
+    }
+    return s;
+  }
+
+  std::string expand(std::string_view tmpl, std::string_view side = "") const {
+    std::string out;
+    out.reserve(tmpl.size() + 64);
+    for (std::size_t i = 0; i < tmpl.size(); ++i) {
+      const char c = tmpl[i];
+      if (c == '@') {
+        out += prefix_;
+      } else if (c == '%') {
+        out += side;
+      } else if (c == '$') {  // $name( -> name( or namef(
+        std::size_t j = i + 1;
+        while (j < tmpl.size() && std::isalnum(static_cast<unsigned char>(tmpl[j]))) ++j;
+        out += tmpl.substr(i + 1, j - i - 1);
+        if (single_) out += 'f';
+        i = j - 1;
+      } else if (c == '_' && i + 1 < tmpl.size() && tmpl[i + 1] == 'r' && i > 0 &&
+                 (std::isdigit(static_cast<unsigned char>(tmpl[i - 1])) || tmpl[i - 1] == '.') &&
+                 (i + 2 >= tmpl.size() || !std::isalnum(static_cast<unsigned char>(tmpl[i + 2])))) {
+        if (single_) out += 'f';
+        ++i;
+      } else if (tmpl.compare(i, 4, "REAL") == 0) {
+        out += single_ ? "float" : "double";
+        i += 3;
+      } else {
+        out += c;
+      }
+    }
+    return out;
+  }
+
+  void code(std::string_view tmpl, std::string_view side = "") { text_ += expand(tmpl, side); }
+  void line(const std::string& s) { text_ += s + "\n"; }
+
+  /// static const REAL PREFIX_name = value;  /* unit */
+  void constant(const std::string& name, double value, const std::string& what) {
+    text_ += "static const " + std::string(single_ ? "float" : "double") + " " + prefix_ + "_" + name + " = " +
+             number(value) + ";" + (what.empty() ? "" : "  /* " + what + " */") + "\n";
+  }
+  void array(const std::string& name, const std::vector<double>& values, const std::string& what) {
+    text_ += "static const " + std::string(single_ ? "float" : "double") + " " + prefix_ + "_" + name + "[" +
+             std::to_string(values.size()) + "] = {";
+    for (std::size_t i = 0; i < values.size(); ++i) text_ += (i ? ", " : "") + number(values[i]);
+    text_ += "};" + (what.empty() ? std::string() : "  /* " + what + " */") + "\n";
+  }
+
+  std::string take() { return std::move(text_); }
+
+ private:
+  std::string prefix_;
+  bool single_;
+  std::string text_;
+};
+
+std::string unit_text(Quantity q) {
+  const std::string lin(unit(q, Axis::linear)), rot(unit(q, Axis::rotary));
+  if (lin.empty()) return "dimensionless";
+  return lin == rot ? lin : lin + " (" + rot + " on a rotary axis)";
+}
+
+// The parameters of a law with `visit` (every law but table), each side's names suffixed.
+template <class Law>
+void law_constants(Writer& w, const Law& law, const std::string& side) {
+  Law::visit(law, [&](std::string_view name, Quantity q, const double& x) {
+    w.constant(std::string(name) + side, x, unit_text(q));
+  });
+}
+
+// exp(-|v/vs|^delta) as stribeck_decay (models/scalar.hpp): the delta = 2 and delta = 1 fast paths
+// and the cut-off at an exponent of 40 are the library's, so the values match to the ulp.
+constexpr std::string_view kDecay = R"(static inline REAL @_decay%(REAL v) {
+  REAL x, u, e;
+  if (@_delta% == 2.0_r) {
+    REAL xx;
+    x = v / @_vs%;
+    xx = x * x;
+    e = $exp(-(xx < 40.0_r ? xx : 40.0_r));
+    return xx > 40.0_r ? 0.0_r : e;
+  }
+  x = $fabs(v / @_vs%);
+  if (x == 0.0_r) return 1.0_r;
+  u = @_delta% == 1.0_r ? x : $exp(@_delta% * $log(x));
+  e = $exp(-(u < 40.0_r ? u : 40.0_r));
+  return u > 40.0_r ? 0.0_r : e;
+}
+)";
+
+constexpr std::string_view kSign = R"(static inline REAL @_sign(REAL x) { return x > 0.0_r ? 1.0_r : (x < 0.0_r ? -1.0_r : 0.0_r); }
+)";
+
+// Stribeck level g(v) = Fc + (Fs - Fc) exp(-|v/vs|^delta) (N or N m).
+constexpr std::string_view kLevel = R"(static inline REAL @_level%(REAL v) { return @_Fc% + (@_Fs% - @_Fc%) * @_decay%(v); }
+)";
+
+// The sliding force of one side of a static law, `@_sliding%(v)`.
+template <class Law>
+void static_sliding(Writer& w, const Law& law, const std::string& side) {
+  if constexpr (std::is_same_v<Law, Coulomb>) {
+    w.code("static inline REAL @_sliding%(REAL v) { return @_Fc% * @_sign(v); }\n", side);
+  } else if constexpr (std::is_same_v<Law, Viscous>) {
+    w.code("static inline REAL @_sliding%(REAL v) { return @_Fv% * v; }\n", side);
+  } else if constexpr (std::is_same_v<Law, CoulombViscous> || std::is_same_v<Law, StaticCoulombViscous> ||
+                       std::is_same_v<Law, Karnopp>) {
+    w.code("static inline REAL @_sliding%(REAL v) { return @_Fc% * @_sign(v) + @_Fv% * v; }\n", side);
+  } else if constexpr (std::is_same_v<Law, Stribeck>) {
+    w.code(kDecay, side);
+    w.code(kLevel, side);
+    w.code("static inline REAL @_sliding%(REAL v) { return @_sign(v) * @_level%(v) + @_Fv% * v; }\n", side);
+  } else if constexpr (std::is_same_v<Law, Smooth>) {
+    w.code(kDecay, side);
+    if (law.shape == SmoothShape::atan) w.constant("two_over_pi", 2.0 / std::numbers::pi, "2/pi");
+    // tanh|x| through expm1 as the library computes it (models/smooth.hpp); atan scaled by 2/pi.
+    w.code(law.shape == SmoothShape::atan ? R"(static inline REAL @_sliding%(REAL v) {
+  const REAL x = v / @_vt%;
+  const REAL s = @_two_over_pi * $atan(x);
+)"
+                                          : R"(static inline REAL @_sliding%(REAL v) {
+  const REAL x = v / @_vt%;
+  const REAL a = 2.0_r * $fabs(x);
+  const REAL m = $expm1(a < 40.0_r ? -a : -40.0_r);
+  const REAL s = @_sign(x) * (-m / (2.0_r + m));
+)",
+           side);
+    w.code(R"(  const REAL level = @_Fs% == @_Fc% ? @_Fc% : @_Fc% + (@_Fs% - @_Fc%) * @_decay%(v);
+  return s * level + @_Fv% * v;
+}
+)",
+           side);
+  } else {
+    static_assert(std::is_same_v<Law, Table>);
+    (void)law;
+  }
+}
+
+template <class Law>
+void static_side(Writer& w, const Law& law, const std::string& side) {
+  law_constants(w, law, side);
+  static_sliding(w, law, side);
+}
+
+void table_branch(Writer& w, const detail::TableSide& k, const std::string& side) {
+  const std::string n = std::to_string(k.speed.size());
+  w.array("table" + side + "_speed", k.speed, "|v| ascending, m/s (rad/s on a rotary axis)");
+  w.array("table" + side + "_level", k.level, "|F|, N (N m)");
+  w.array("table" + side + "_slope", detail::monotone_slopes(k.speed, k.level),
+          "monotone Hermite slopes d|F|/d|v|, N s/m (N m s/rad)");
+  // Monotone cubic Hermite in |v|, held below the first point, linear past the last (models/table.hpp).
+  w.code(R"(static inline REAL @_branch%(REAL a) {
+  const REAL *v = @_table%_speed, *f = @_table%_level, *m = @_table%_slope;
+  const int n = )" + n + R"(;
+  int k = 0;
+  REAL h, t, t2, t3;
+  if (a <= v[0]) return f[0];
+  if (a >= v[n - 1]) return f[n - 1] + ((f[n - 1] - f[n - 2]) / (v[n - 1] - v[n - 2])) * (a - v[n - 1]);
+  while (v[k + 1] < a) ++k;
+  h = v[k + 1] - v[k];
+  t = (a - v[k]) / h;
+  t2 = t * t;
+  t3 = t2 * t;
+  return (2.0_r * t3 - 3.0_r * t2 + 1.0_r) * f[k] + (t3 - 2.0_r * t2 + t) * (h * m[k]) +
+         (-2.0_r * t3 + 3.0_r * t2) * f[k + 1] + (t3 - t2) * (h * m[k + 1]);
+}
+)",
+         side);
+}
+
+// The breakaway level of one side of a static law as a C expression of its constants (a
+// constant of its own would repeat Fs or Fc, and C has no constant that names another).
+template <class Law>
+std::string breakaway(const Law&, const std::string& side) {
+  if constexpr (std::is_same_v<Law, Coulomb> || std::is_same_v<Law, CoulombViscous>) return "@_Fc" + side;
+  else if constexpr (std::is_same_v<Law, Viscous> || std::is_same_v<Law, Smooth>) return "0.0_r";
+  else return "@_Fs" + side;  // static-coulomb-viscous, karnopp, stribeck
+}
+
+// Static laws: constants, @_friction(v) and @_friction_stuck(v, applied).
+template <class Law>
+void static_law(Writer& w, const Law& law) {
+  std::string hi, lo;
+  if constexpr (std::is_same_v<Law, Table>) {
+    detail::TableSide pos, neg;  // the points and slopes the Table interpolates (models/table_knots.hpp)
+    detail::table_sides(law.velocity(), law.force(), pos, neg);
+    table_branch(w, pos, "_pos");
+    table_branch(w, neg, "_neg");
+    w.code(R"(/* Friction force (N or N m) at velocity v (m/s or rad/s); 0 at v = 0. */
+static inline REAL @_friction(REAL v) {
+  if (v == 0.0_r) return 0.0_r;
+  return v > 0.0_r ? @_branch_pos(v) : -@_branch_neg(-v);
+}
+)");
+    hi = "@_table_pos_level[0]";
+    lo = "@_table_neg_level[0]";
+  } else if constexpr (requires { law.pos; }) {
+    static_side(w, law.pos, "_pos");
+    static_side(w, law.neg, "_neg");
+    w.code(R"(/* Friction force (N or N m) at velocity v (m/s or rad/s): the _pos parameters for v >= 0,
+   the _neg ones for v < 0; 0 at v = 0. */
+static inline REAL @_friction(REAL v) { return v >= 0.0_r ? @_sliding_pos(v) : @_sliding_neg(v); }
+)");
+    hi = breakaway(law.pos, "_pos");
+    lo = breakaway(law.neg, "_neg");
+  } else {
+    static_side(w, law, "");
+    w.code(R"(/* Friction force (N or N m) at velocity v (m/s or rad/s); 0 at v = 0. */
+static inline REAL @_friction(REAL v) { return @_sliding(v); }
+)");
+    hi = lo = breakaway(law, "");
+  }
+  w.code("/* Breakaway levels (N or N m): the largest force a stuck contact holds pushed in + and in -. */\n"
+         "static inline REAL @_breakaway_pos(void) { return " + hi + "; }\n"
+         "static inline REAL @_breakaway_neg(void) { return " + lo + "; }\n");
+  if constexpr (std::is_same_v<Law, Karnopp>) {
+    w.code(R"(/* Friction with Karnopp's band (N or N m): inside |v| < dv it balances `applied` (the net force
+   that would accelerate the body without friction, N or N m) up to Fs; outside it slides. */
+static inline REAL @_friction_stuck(REAL v, REAL applied) {
+  if ($fabs(v) < @_dv) {
+    if (applied > @_breakaway_pos()) return @_breakaway_pos();
+    if (applied < -@_breakaway_neg()) return -@_breakaway_neg();
+    return applied;
+  }
+  return @_friction(v);
+}
+)");
+  } else {
+    w.code(R"(/* Friction with stiction (N or N m): the sliding force for v != 0; at v == 0 it balances
+   `applied` (the net force that would accelerate the body without friction, N or N m) up to the
+   breakaway level of the direction it pushes. */
+static inline REAL @_friction_stuck(REAL v, REAL applied) {
+  if (v != 0.0_r) return @_friction(v);
+  if (applied > @_breakaway_pos()) return @_breakaway_pos();
+  if (applied < -@_breakaway_neg()) return -@_breakaway_neg();
+  return applied;
+}
+)");
+  }
+}
+
+constexpr std::string_view kInitDoc =
+    "/* The state at the start of a run: relaxed (zero deflection), as a body that has rested. */\n";
+constexpr std::string_view kUpdateDoc =
+    R"(/* Advances the state over dt seconds (>= 0) at constant velocity v (m/s or rad/s) and returns the
+   friction force (N or N m) at the end of the step. Stable for any dt. */
+)";
+
+void lugre_law(Writer& w, const LuGre& law) {
+  law_constants(w, law, "");
+  w.code(kDecay);
+  w.code(kLevel);
+  w.code(R"(/* Bristle damping sigma1(v) (N s/m or N m s/rad): constant when vd = 0. */
+static inline REAL @_damping(REAL v) {
+  REAL r;
+  if (@_vd == 0.0_r) return @_sigma1;
+  r = v / @_vd;
+  return @_sigma1 * $exp(-r * r);
+}
+/* Force at bristle deflection z (m or rad) and velocity v. */
+static inline REAL @_force(REAL z, REAL v) {
+  const REAL zdot = v - @_sigma0 * $fabs(v) * z / @_level(v);
+  return @_sigma0 * z + @_damping(v) * zdot + @_sigma2 * v;
+}
+/* Steady-state friction force (N or N m) at constant velocity v (m/s or rad/s). */
+static inline REAL @_friction(REAL v) { return @_force(@_sign(v) * @_level(v) / @_sigma0, v); }
+typedef struct { REAL z[1]; } @_state; /* bristle deflection, m or rad */
+)");
+  w.code(kInitDoc);
+  w.code("static inline void @_init(@_state *s) { s->z[0] = 0.0_r; }\n");
+  w.code(kUpdateDoc);
+  // Exact relaxation at frozen v (LuGreT::step).
+  w.code(R"(static inline REAL @_update(@_state *s, REAL v, REAL dt) {
+  const REAL g = @_level(v);
+  const REAL rate = @_sigma0 * $fabs(v) / g;
+  REAL zdot;
+  if (v != 0.0_r) {
+    const REAL zss = (v > 0.0_r ? g : -g) / @_sigma0;
+    s->z[0] = zss + (s->z[0] - zss) * $exp(-rate * dt);
+  }
+  zdot = v - rate * s->z[0];
+  return @_sigma0 * s->z[0] + @_damping(v) * zdot + @_sigma2 * v;
+}
+)");
+}
+
+void dahl_law(Writer& w, const Dahl& law) {
+  law_constants(w, law, "");
+  w.code(R"(/* Steady-state friction force (N or N m) at constant velocity v (m/s or rad/s). */
+static inline REAL @_friction(REAL v) { return @_sigma0 * (@_sign(v) * @_Fc / @_sigma0); }
+typedef struct { REAL z[1]; } @_state; /* deflection, m or rad */
+)");
+  w.code(kInitDoc);
+  w.code("static inline void @_init(@_state *s) { s->z[0] = 0.0_r; }\n");
+  w.code(kUpdateDoc);
+  // Closed form in the travelled distance |v| dt (DahlT::step).
+  w.code(R"(static inline REAL @_update(@_state *s, REAL v, REAL dt) {
+  REAL sg, dx, k, u0, a, b, u;
+  if (v == 0.0_r || dt <= 0.0_r) return @_sigma0 * s->z[0];
+  sg = v > 0.0_r ? 1.0_r : -1.0_r;
+  dx = $fabs(v) * dt;
+  k = @_sigma0 / @_Fc;
+  u0 = 1.0_r - k * s->z[0] * sg;
+  a = $fabs(u0);
+  if (@_alpha == 1.0_r) {
+    b = a * $exp(-k * dx);
+  } else {
+    const REAL w = $pow(a, 1.0_r - @_alpha) + (@_alpha - 1.0_r) * k * dx;
+    b = (@_alpha < 1.0_r && w <= 0.0_r) ? 0.0_r : $pow(w, 1.0_r / (1.0_r - @_alpha));
+    if (@_alpha > 1.0_r && a == 0.0_r) b = 0.0_r;
+  }
+  u = u0 < 0.0_r ? -b : b;
+  s->z[0] = (1.0_r - u) * sg / k;
+  return @_sigma0 * s->z[0];
+}
+)");
+}
+
+void elastoplastic_law(Writer& w, const ElastoPlastic& law) {
+  law_constants(w, law, "");
+  // The Newton search's stopping rules, relative to zmax: the library's in double (a few ulps);
+  // in float a few of float's ulps, which double's 1e-14 would never meet (60 iterations each step).
+  w.constant("ep_step_tol", w.single() ? 5e-7 : 1e-14, "Newton step tolerance, relative to zmax");
+  w.constant("ep_bracket_tol", w.single() ? 1e-7 : 1e-15, "bracket width tolerance, relative to zmax");
+  w.constant("pi", std::numbers::pi, "");
+  w.code(kDecay);
+  w.code(kLevel);
+  w.code(R"(/* Plasticity weight a(z, v) in [0, 1]. */
+static inline REAL @_weight(REAL z, REAL v) {
+  const REAL az = $fabs(z);
+  REAL zmax;
+  if (z * v <= 0.0_r) return 0.0_r;
+  zmax = @_level(v) / @_sigma0;
+  if (az <= @_zba) return 0.0_r;
+  if (az >= zmax) return 1.0_r;
+  return 0.5_r * $sin(@_pi * (az - (zmax + @_zba) / 2.0_r) / (zmax - @_zba)) + 0.5_r;
+}
+/* Force at deflection z (m or rad) and velocity v. */
+static inline REAL @_force(REAL z, REAL v) {
+  const REAL zdot = v - @_weight(z, v) * @_sigma0 * $fabs(v) * z / @_level(v);
+  return @_sigma0 * z + @_sigma1 * zdot + @_sigma2 * v;
+}
+/* Steady-state friction force (N or N m) at constant velocity v (m/s or rad/s). */
+static inline REAL @_friction(REAL v) { return @_force(@_sign(v) * @_level(v) / @_sigma0, v); }
+typedef struct { REAL z[1]; } @_state; /* deflection, m or rad */
+/* One implicit Euler step over the travelled distance h in the transition zone, solved by Newton's
+   method kept inside a bracket (ElastoPlasticT::step). */
+static inline REAL @_transition(REAL w, REAL h, REAL zmax) {
+  const REAL k = @_pi / (zmax - @_zba), mid = (zmax + @_zba) / 2.0_r;
+  REAL lo = w, hi = zmax, y, slope, f, newton, a, da;
+  int it;
+  a = lo >= zmax ? 1.0_r : 0.0_r;
+  if (lo > @_zba && lo < zmax) a = 0.5_r * $sin(k * (lo - mid)) + 0.5_r;
+  if (lo - w - h * (1.0_r - a * lo / zmax) >= 0.0_r) return lo;
+  y = w + h < zmax ? w + h : zmax;
+  for (it = 0; it < 60 && hi - lo > @_ep_bracket_tol * zmax; ++it) {
+    a = y >= zmax ? 1.0_r : 0.0_r;
+    da = 0.0_r;
+    if (y > @_zba && y < zmax) {
+      a = 0.5_r * $sin(k * (y - mid)) + 0.5_r;
+      da = 0.5_r * k * $cos(k * (y - mid));
+    }
+    slope = 1.0_r + h * (da * y + a) / zmax;
+    f = y - w - h * (1.0_r - a * y / zmax);
+    if (f > 0.0_r) hi = y; else lo = y;
+    newton = y - f / slope;
+    if ($fabs(newton - y) < @_ep_step_tol * zmax) return newton < lo ? lo : (hi < newton ? hi : newton);
+    y = newton > lo && newton < hi ? newton : 0.5_r * (lo + hi);
+  }
+  return y;
+}
+)");
+  w.code(kInitDoc);
+  w.code("static inline void @_init(@_state *s) { s->z[0] = 0.0_r; }\n");
+  w.code(kUpdateDoc);
+  w.code(R"(static inline REAL @_update(@_state *s, REAL v, REAL dt) {
+  REAL sg, x, wd, zmax, elastic, room;
+  if (v == 0.0_r || dt <= 0.0_r) return @_force(s->z[0], v);
+  sg = v > 0.0_r ? 1.0_r : -1.0_r;
+  x = $fabs(v) * dt;
+  wd = s->z[0] * sg;
+  zmax = @_level(v) / @_sigma0;
+  if (wd > zmax) {
+    wd = zmax + (wd - zmax) * $exp(-x / zmax);
+  } else {
+    room = @_zba - wd;
+    if (room < 0.0_r) room = 0.0_r;
+    elastic = x < room ? x : room;
+    wd += elastic;
+    x -= elastic;
+    if (x > 0.0_r) wd = @_transition(wd, x, zmax);
+  }
+  s->z[0] = wd * sg;
+  return @_force(s->z[0], v);
+}
+)");
+}
+
+void gms_law(Writer& w, const Gms& law) {
+  law_constants(w, law, "");
+  w.array("k", law.k, "element stiffnesses, N/m (N m/rad)");
+  w.array("alpha", law.alpha, "element fractions of the Stribeck level");
+  const std::string n = std::to_string(law.k.size());
+  w.code(kDecay);
+  w.code(kLevel);
+  w.code(R"(typedef struct { REAL z[)" + n + R"(]; } @_state; /* element deflections, m or rad */
+/* Force at element deflections z (m or rad) and velocity v. */
+static inline REAL @_force(const REAL *z, REAL v) {
+  REAL f = @_sigma2 * v;
+  int i;
+  for (i = 0; i < )" + n + R"(; ++i) f += @_k[i] * z[i];
+  return f;
+}
+/* Steady-state friction force (N or N m) at constant velocity v (m/s or rad/s). */
+static inline REAL @_friction(REAL v) {
+  @_state st;
+  const REAL s = @_level(v);
+  int i;
+  for (i = 0; i < )" + n + R"(; ++i) st.z[i] = @_sign(v) * @_alpha[i] * s / @_k[i];
+  return @_force(st.z, v);
+}
+)");
+  w.code(kInitDoc);
+  w.code("static inline void @_init(@_state *s) {\n  int i;\n  for (i = 0; i < " + n +
+         "; ++i) s->z[i] = 0.0_r;\n}\n");
+  w.code(kUpdateDoc);
+  // Each element moves with v, clamped at its slip level; above it, exact relaxation (GmsT::step).
+  w.code(R"(static inline REAL @_update(@_state *s, REAL v, REAL dt) {
+  if (dt > 0.0_r && v != 0.0_r) {
+    const REAL lv = @_level(v);
+    const REAL sg = v > 0.0_r ? 1.0_r : -1.0_r;
+    const REAL decay = $exp(-@_C * dt / lv);
+    int i;
+    for (i = 0; i < )" + n + R"(; ++i) {
+      const REAL bound = @_alpha[i] * lv / @_k[i];
+      const REAL wd = s->z[i] * sg;
+      REAL w1;
+      if (wd > bound) {
+        w1 = bound + (wd - bound) * decay;
+      } else {
+        const REAL moved = wd + $fabs(v) * dt;
+        w1 = bound < moved ? bound : moved;
+      }
+      s->z[i] = w1 * sg;
+    }
+  }
+  return @_force(s->z, v);
+}
+)");
+}
+
+// --- compensations (control/*.cpp, their update()) ---
+
+void feedforward(Writer& w, const FrictionLaw& law, const FeedforwardParams& p) {
+  const FeedforwardCompensation check(law, p);  // validates the band
+  w.line("\n/* Feedforward compensation (control/feedforward.hpp): the law at the reference velocity. */");
+  w.constant("ff_band", p.band, "half-width of the smoothing band, m/s (rad/s)");
+  w.constant("ff_at_plus", law.sliding(p.band), "F(+band), N (N m)");
+  w.constant("ff_at_minus", law.sliding(-p.band), "F(-band), N (N m)");
+  w.code(R"(/* Compensation force (N or N m) to add to the drive's command at reference velocity vr (m/s or
+   rad/s): F(vr) outside |vr| <= band, a straight line from F(-band) to F(+band) inside. */
+static inline REAL @_feedforward(REAL vr) {
+  if (vr > @_ff_band || vr < -@_ff_band) return @_friction(vr);
+  return @_ff_at_minus + (@_ff_at_plus - @_ff_at_minus) * (vr + @_ff_band) / (2.0_r * @_ff_band);
+}
+)");
+}
+
+void feedback(Writer& w, const FrictionLaw& law, const FeedbackParams& p) {
+  const FeedbackCompensation check(law, p);
+  w.line("\n/* Feedback compensation (control/feedback.hpp): the law at the measured velocity. */");
+  w.constant("fb_dead_band", p.dead_band, "half-width of the dead band, m/s (rad/s)");
+  w.code(R"(/* Compensation force (N or N m) to add to the drive's command at measured velocity v (m/s or
+   rad/s): F(v) outside |v| <= dead band, 0 inside. */
+static inline REAL @_feedback(REAL v) {
+  if (v > @_fb_dead_band || v < -@_fb_dead_band) return @_friction(v);
+  return 0.0_r;
+}
+)");
+}
+
+void lugre_observer(Writer& w, const FrictionLaw& law, const LuGreObserverParams& p) {
+  const LuGreObserver check(law, p);  // refuses a law that is not LuGre, a bad gain
+  w.line("\n/* LuGre observer (control/lugre_observer.hpp; Canudas de Wit et al. 1995, section V). */");
+  w.constant("obs_gain", p.gain, "observer gain k, 1/s");
+  w.code(R"(typedef struct { REAL z; } @_lugre_observer_state; /* estimated bristle deflection, m or rad */
+/* The observer's start: the law's steady state at the first measured velocity v (m/s or rad/s). */
+static inline void @_lugre_observer_init(@_lugre_observer_state *s, REAL v) {
+  s->z = @_sign(v) * @_level(v) / @_sigma0;
+}
+/* Advances the observer over the step of dt seconds just ended, holding the measured position x
+   (m or rad), velocity v (m/s or rad/s) and reference position r (m or rad), and returns the
+   compensation force (N or N m) to add to the drive's command. Exact at frozen v: stable for any dt. */
+static inline REAL @_lugre_observer_update(@_lugre_observer_state *s, REAL x, REAL v, REAL r, REAL dt) {
+  const REAL rate = @_sigma0 * $fabs(v) / @_level(v);
+  const REAL c = v - @_obs_gain * (x - r);
+  REAL dz;
+  if (rate > 0.0_r) {
+    const REAL zss = c / rate;
+    s->z = zss + (s->z - zss) * $exp(-rate * dt);
+  } else {
+    s->z += c * dt;
+  }
+  dz = c - rate * s->z;
+  return @_sigma0 * s->z + @_damping(v) * dz + @_sigma2 * v;
+}
+)");
+}
+
+void disturbance_observer(Writer& w, const DisturbanceObserverParams& p) {
+  const DisturbanceObserver check(p);
+  w.line("\n/* Disturbance observer (control/disturbance_observer.hpp): low-pass inverse model. */");
+  w.constant("dob_bandwidth", p.bandwidth, "low-pass bandwidth w, rad/s");
+  w.constant("dob_inertia", p.inertia, "nominal inertia M, kg (kg m^2)");
+  w.code(R"(typedef struct { REAL p; } @_disturbance_observer_state; /* d^ + w M v, N or N m */
+/* The observer's start at the first measured velocity v (m/s or rad/s): estimate 0. */
+static inline void @_disturbance_observer_init(@_disturbance_observer_state *s, REAL v) {
+  s->p = @_dob_bandwidth * @_dob_inertia * v;
+}
+/* Advances the observer over the step of dt seconds just ended, holding the measured velocity v
+   (m/s or rad/s) and the force `drive` (N or N m, this compensation included) applied over it, and
+   returns the estimated disturbance (N or N m) to add to the drive's command. Exact: stable for any dt. */
+static inline REAL @_disturbance_observer_update(@_disturbance_observer_state *s, REAL v, REAL drive, REAL dt) {
+  const REAL pss = drive + @_dob_bandwidth * @_dob_inertia * v;
+  s->p = pss + (s->p - pss) * $exp(-@_dob_bandwidth * dt);
+  return s->p - @_dob_bandwidth * @_dob_inertia * v;
+}
+)");
+}
+
+void check_prefix(const std::string& prefix) {
+  bool ok = !prefix.empty() && prefix.size() <= 40 && std::isalpha(static_cast<unsigned char>(prefix[0]));
+  for (char c : prefix) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+  if (!ok)
+    throw std::invalid_argument("prefix '" + prefix +
+                                "' is not a C identifier; expected a letter, then letters, digits or _ "
+                                "(at most 40 characters)");
+}
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+}  // namespace
+
+const std::vector<std::string>& compensation_types() {
+  static const std::vector<std::string> types = {"feedforward", "feedback", "lugre-observer", "disturbance-observer"};
+  return types;
+}
+
+CompensationParams make_compensation(std::string_view type, const std::map<std::string, double>& values,
+                                     std::optional<double> model_inertia) {
+  CompensationParams c;
+  std::vector<std::pair<const char*, double*>> fields;  // the type's parameter names and slots
+  if (type == "feedforward") {
+    auto& p = c.emplace<FeedforwardParams>();
+    fields = {{"band", &p.band}};
+  } else if (type == "feedback") {
+    auto& p = c.emplace<FeedbackParams>();
+    fields = {{"dead_band", &p.dead_band}};
+  } else if (type == "lugre-observer") {
+    auto& p = c.emplace<LuGreObserverParams>();
+    fields = {{"gain", &p.gain}};
+  } else if (type == "disturbance-observer") {
+    auto& p = c.emplace<DisturbanceObserverParams>();
+    p.inertia = model_inertia.value_or(0.0);
+    fields = {{"bandwidth", &p.bandwidth}, {"inertia", &p.inertia}};
+  } else {
+    std::string valid;
+    for (const auto& t : compensation_types()) valid += (valid.empty() ? "" : ", ") + t;
+    throw std::invalid_argument("compensation '" + std::string(type) + "' is not known; valid types: " + valid);
+  }
+  for (const auto& [name, value] : values) {
+    const auto it = std::find_if(fields.begin(), fields.end(), [&](const auto& f) { return name == f.first; });
+    if (it == fields.end()) {
+      std::string has;
+      for (const auto& f : fields) has += (has.empty() ? "" : ", ") + std::string(f.first);
+      throw std::invalid_argument("compensation " + std::string(type) + " has no parameter '" + name + "'; it has " + has);
+    }
+    *it->second = value;
+  }
+  return c;
+}
+
+ExportModel read_export_model(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".yaml" || ext == ".yml") return {load_law(path), std::nullopt};
+  const nlohmann::json j = read_model_json(path);
+  ExportModel m{law_from_json(j, path), std::nullopt};
+  // M as `identify --json` writes it ({"value": v, ...}) or as a plain number.
+  if (j.contains("parameters") && j["parameters"].is_object() && j["parameters"].contains("M")) {
+    const auto& p = j["parameters"]["M"];
+    const auto& v = p.is_object() ? p.value("value", nlohmann::json()) : p;
+    if (!v.is_number())
+      throw std::invalid_argument(path + ": parameters.M: expected the identified inertia, a number (kg or kg m^2), got " +
+                                  v.dump());
+    m.inertia = v.get<double>();
+  }
+  return m;
+}
+
+std::string compensation_type(const CompensationParams& c) {
+  if (c.index() == 0) return "";
+  return compensation_types()[c.index() - 1];
+}
+
+std::string c_header(const FrictionLaw& law, const CExportOptions& options) {
+  check_prefix(options.prefix);
+  Writer w(options.prefix, options.single_precision);
+  const std::string type = compensation_type(options.compensation);
+  const std::string guard = upper(options.prefix) + "_FRICTION_H";
+  std::ostringstream head;
+  head << "/* Friction law '" << law.name() << "'" << (type.empty() ? "" : " with " + type + " compensation")
+       << ", written by frictionlab " << kVersion << (options.source.empty() ? "" : " from " + options.source)
+       << ".\n"
+       << R"( * One C99 header: static inline functions, no allocation, nothing beyond math.h (link with -lm).
+ * Units: SI. Linear axis: N, m, m/s, N s/m, N/m; rotary axis: N m, rad, rad/s, N m s/rad, N m/rad; time in s.
+ * Sign: friction F has the sign of the velocity and is subtracted (M a = drive - F); a compensation
+ * estimates F and is ADDED to the drive's command.
+ * Precision: )"
+       << (options.single_precision ? "float (agrees with frictionlab to float's precision)."
+                                    : "double (the same formulas as frictionlab, in the same order).")
+       << R"(
+ * In a sampled loop of period dt (s), per sample:)"
+       << (law.is_dynamic() ? "\n *   F = " + options.prefix + "_update(&state, v, dt);   after " + options.prefix +
+                                  "_init(&state) once"
+                            : "\n *   F = " + options.prefix + "_friction(v);")
+       << "\n */\n";
+  w.line(head.str() + "#ifndef " + guard + "\n#define " + guard + "\n\n#include <math.h>\n");
+  w.code(kSign);
+  std::visit(
+      [&](const auto& l) {
+        using Law = std::decay_t<decltype(l)>;
+        if constexpr (std::is_same_v<Law, LuGre>) {
+          lugre_law(w, l);
+        } else if constexpr (std::is_same_v<Law, Dahl>) {
+          dahl_law(w, l);
+        } else if constexpr (std::is_same_v<Law, ElastoPlastic>) {
+          elastoplastic_law(w, l);
+        } else if constexpr (std::is_same_v<Law, Gms>) {
+          gms_law(w, l);
+        } else {
+          static_law(w, l);
+        }
+      },
+      law.variant());
+  std::visit(
+      [&](const auto& p) {
+        using P = std::decay_t<decltype(p)>;
+        if constexpr (std::is_same_v<P, FeedforwardParams>) feedforward(w, law, p);
+        else if constexpr (std::is_same_v<P, FeedbackParams>) feedback(w, law, p);
+        else if constexpr (std::is_same_v<P, LuGreObserverParams>) lugre_observer(w, law, p);
+        else if constexpr (std::is_same_v<P, DisturbanceObserverParams>) disturbance_observer(w, p);
+      },
+      options.compensation);
+  w.line("\n#endif /* " + guard + " */");
+  return w.take();
+}
+
+}  // namespace frictionlab

@@ -1,0 +1,207 @@
+// Two-axis table: see include/frictionlab/plants/xy_table.hpp.
+#include "frictionlab/plants/xy_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "frictionlab/models/parameter.hpp"
+
+namespace frictionlab {
+namespace {
+
+constexpr const char* kNames[2] = {"x", "y"};
+// Offsets in an axis's own block (after the four contact states).
+constexpr std::size_t kIntegral = 0, kApplied = 1, kComputed = 2;
+
+std::string who(int i) { return std::string("xy-table: axis ") + kNames[i]; }
+
+void require(bool ok, int i, const char* name, double value, const char* rule) {
+  detail::require(ok, who(i), name, value, rule);
+}
+
+void check_axis(const XyAxis& a, int i) {
+  require(std::isfinite(a.mass) && a.mass >= 0, i, "mass", a.mass, ">= 0 (kg)");
+  require(std::isfinite(a.inertia) && a.inertia >= 0, i, "inertia", a.inertia, ">= 0 (kg m^2)");
+  require(std::isfinite(a.lead) && a.lead >= 0, i, "lead", a.lead, ">= 0 (m/rev)");
+  require(a.inertia == 0 || a.lead > 0, i, "lead", a.lead, "> 0 (m/rev) when an inertia is given");
+  const double M = a.equivalent_mass();
+  require(std::isfinite(M) && M > 0, i, "equivalent mass", M, "> 0 (kg): give mass, or inertia and lead");
+  const ControllerParams& c = a.gains;
+  if (c.loop != ControlLoop::position)
+    throw std::invalid_argument(who(i) + ": the axis runs a position loop; a velocity loop is not supported");
+  require(std::isfinite(c.Kp) && c.Kp >= 0, i, "Kp", c.Kp, ">= 0 (N/m)");
+  require(std::isfinite(c.Ki) && c.Ki >= 0, i, "Ki", c.Ki, ">= 0 (N/(m s))");
+  require(std::isfinite(c.Kd) && c.Kd >= 0, i, "Kd", c.Kd, ">= 0 (N/(m/s))");
+  require(std::isfinite(c.Kvff) && c.Kvff >= 0, i, "Kvff", c.Kvff, ">= 0 (N/(m/s))");
+  require(std::isfinite(c.Kaff) && c.Kaff >= 0, i, "Kaff", c.Kaff, ">= 0 (N/(m/s^2))");
+  require(std::isfinite(c.limit) && c.limit >= 0, i, "limit", c.limit, ">= 0 (N; 0 = no saturation)");
+  require(c.compensation_gain == 1.0, i, "compensation_gain", c.compensation_gain,
+          "1 (the drive takes a force: the compensator's N go straight to the command)");
+}
+
+}  // namespace
+
+double XyAxis::equivalent_mass() const {
+  if (inertia == 0.0) return mass;
+  const double ratio = 2.0 * std::numbers::pi / lead;  // rad of screw per m of travel
+  return mass + inertia * ratio * ratio;
+}
+
+XyTable::XyTable(XyAxis x, XyAxis y, XyTiming timing) : axes_{std::move(x), std::move(y)}, timing_(timing) {
+  if (!(std::isfinite(timing_.Ts) && timing_.Ts >= 0))
+    detail::require(false, "xy-table", "Ts", timing_.Ts, ">= 0 (s; 0 = continuous controller)");
+  if (timing_.delay != 0 && timing_.delay != 1)
+    detail::require(false, "xy-table", "delay", timing_.delay, "0 or 1 (samples)");
+  if (timing_.delay == 1 && timing_.Ts == 0)
+    throw std::invalid_argument("xy-table: delay = 1 needs a sampled controller (Ts > 0 s)");
+  for (int i = 0; i < 2; ++i) {
+    check_axis(axes_[i], i);
+    mass_[i] = axes_[i].equivalent_mass();
+    const int nc = axes_[i].compensator ? axes_[i].compensator->num_states() : 0;
+    own_[i] = static_cast<int>(comp_offset()) + nc;
+    events_[i] = axes_[i].compensator && !sampled() ? axes_[i].compensator->num_events() : 0;
+  }
+}
+
+const XyAxis& XyTable::axis(int i) const {
+  if (i != 0 && i != 1) throw std::out_of_range("xy-table has axes 0 (x) and 1 (y), not " + std::to_string(i));
+  return axes_[i];
+}
+
+Contact XyTable::contact(int i) const {
+  const XyAxis& a = axis(i);
+  return {kNames[i], 2 * i, 2 * i + 1, a.law ? &*a.law : nullptr};
+}
+
+double XyTable::inertia(int contact) const {
+  (void)axis(contact);
+  return mass_[contact];
+}
+
+CompensatorInput XyTable::measured(int i, double t, std::span<const double> x, const InputValue& r) const {
+  CompensatorInput in;
+  in.t = t;
+  in.position = x[static_cast<std::size_t>(2 * i)];
+  in.velocity = x[static_cast<std::size_t>(2 * i + 1)];
+  in.reference = r.value;
+  in.reference_rate = r.rate;
+  in.reference_accel = r.accel;
+  return in;
+}
+
+// ClosedLoop's position law (derivative on the measurement), compensation before the saturation.
+double XyTable::pid(int i, std::span<const double> x, const InputValue& r, double compensation) const {
+  const ControllerParams& c = axes_[i].gains;
+  const double pos = x[static_cast<std::size_t>(2 * i)], vel = x[static_cast<std::size_t>(2 * i + 1)];
+  const double integral = x[block(i) + kIntegral];
+  double out = c.Kp * (r.value - pos) + c.Ki * integral - c.Kd * vel + c.Kvff * r.rate + c.Kaff * r.accel;
+  out += compensation;
+  if (c.limit > 0) out = std::clamp(out, -c.limit, c.limit);
+  return out;
+}
+
+double XyTable::command(int i, double t, std::span<const double> x, const InputValue& r) const {
+  (void)axis(i);
+  if (sampled()) return x[block(i) + kApplied];
+  const Compensator* comp = axes_[i].compensator.get();
+  const double c = comp ? comp->output(measured(i, t, x, r), x.subspan(block(i) + comp_offset(), comp->num_states())) : 0.0;
+  return pid(i, x, r, c);
+}
+
+void XyTable::initial_extras(std::span<double> x) const {
+  for (int i = 0; i < 2; ++i) {
+    const std::size_t b = block(i);
+    for (std::size_t j = 0; j < comp_offset(); ++j) x[b + j] = 0.0;
+    if (const Compensator* comp = axes_[i].compensator.get()) {
+      CompensatorInput at_rest;
+      at_rest.position = x[static_cast<std::size_t>(2 * i)];
+      at_rest.velocity = x[static_cast<std::size_t>(2 * i + 1)];
+      comp->initial_states(at_rest, x.subspan(b + comp_offset(), static_cast<std::size_t>(comp->num_states())));
+    }
+  }
+}
+
+void XyTable::applied(double t, std::span<const double> x, Inputs u, std::span<double> force) const {
+  for (int i = 0; i < 2; ++i) force[static_cast<std::size_t>(i)] = command(i, t, x, u[static_cast<std::size_t>(i)]);
+}
+
+void XyTable::derivatives(double t, std::span<const double> x, Inputs u, std::span<const double> friction,
+                          std::span<double> dx) const {
+  for (int i = 0; i < 2; ++i) {
+    const std::size_t p = static_cast<std::size_t>(2 * i), b = block(i);
+    const InputValue& r = u[static_cast<std::size_t>(i)];
+    const Compensator* comp = axes_[i].compensator.get();
+    const std::size_t nz = comp ? static_cast<std::size_t>(comp->num_states()) : 0;
+    double drive;
+    if (sampled()) {
+      drive = x[b + kApplied];
+      dx[b + kIntegral] = dx[b + kApplied] = dx[b + kComputed] = 0.0;  // discrete: change only at samples
+      for (std::size_t j = 0; j < nz; ++j) dx[b + comp_offset() + j] = 0.0;
+    } else if (!comp) {
+      drive = pid(i, x, r, 0.0);
+      dx[b + kIntegral] = r.value - x[p];
+    } else {
+      CompensatorInput in = measured(i, t, x, r);
+      const auto z = x.subspan(b + comp_offset(), nz);
+      drive = pid(i, x, r, comp->output(in, z));
+      in.drive = drive;  // the force applied, the compensation in it
+      comp->derivatives(in, z, dx.subspan(b + comp_offset(), nz));
+      dx[b + kIntegral] = r.value - x[p];
+    }
+    dx[p] = x[p + 1];
+    dx[p + 1] = (drive - friction[static_cast<std::size_t>(i)]) / mass_[i];
+  }
+}
+
+void XyTable::signals(double t, std::span<const double> x, Inputs u, std::span<PlantSignals> out) const {
+  for (int i = 0; i < 2; ++i) {
+    const InputValue& r = u[static_cast<std::size_t>(i)];
+    const double drive = command(i, t, x, r);
+    out[static_cast<std::size_t>(i)] = PlantSignals{0.0, 0.0, r.value, drive};
+  }
+}
+
+void XyTable::sample(double t, std::span<double> x, Inputs u) const {
+  if (!sampled()) return;
+  // The engine samples at t = j Ts from t = 0: the first sample closes no step.
+  const double h = t < 0.5 * timing_.Ts ? 0.0 : timing_.Ts;
+  for (int i = 0; i < 2; ++i) {
+    const std::size_t p = static_cast<std::size_t>(2 * i), b = block(i);
+    const InputValue& r = u[static_cast<std::size_t>(i)];
+    x[b + kIntegral] += timing_.Ts * (r.value - x[p]);
+    double c = 0.0;
+    if (const Compensator* comp = axes_[i].compensator.get()) {
+      CompensatorInput in = measured(i, t, x, r);
+      in.drive = x[b + kApplied];  // the force held over the step just ended
+      c = comp->update(in, x.subspan(b + comp_offset(), static_cast<std::size_t>(comp->num_states())), h);
+    }
+    const double v = pid(i, x, r, c);
+    x[b + kApplied] = timing_.delay == 1 ? x[b + kComputed] : v;
+    x[b + kComputed] = v;
+  }
+}
+
+void XyTable::events(double t, std::span<const double> x, Inputs u, std::span<double> g) const {
+  std::size_t k = 0;
+  for (int i = 0; i < 2; ++i) {
+    if (events_[i] == 0) continue;
+    const Compensator& comp = *axes_[i].compensator;
+    comp.events(measured(i, t, x, u[static_cast<std::size_t>(i)]),
+                x.subspan(block(i) + comp_offset(), static_cast<std::size_t>(comp.num_states())),
+                g.subspan(k, static_cast<std::size_t>(events_[i])));
+    k += static_cast<std::size_t>(events_[i]);
+  }
+}
+
+void XyTable::on_event(double t, std::span<double> x, Inputs u, int k) const {
+  const int i = k < events_[0] ? 0 : 1;
+  const int local = i == 0 ? k : k - events_[0];
+  if (local < 0 || local >= events_[i]) return;
+  const Compensator& comp = *axes_[i].compensator;
+  comp.on_event(measured(i, t, x, u[static_cast<std::size_t>(i)]),
+                x.subspan(block(i) + comp_offset(), static_cast<std::size_t>(comp.num_states())), local);
+}
+
+}  // namespace frictionlab
