@@ -61,15 +61,13 @@ from .identify import (
 from .simulate import simulate
 from .validate import identify_lugre, validate
 
-# methods() (the table of identification methods) is public but stays out of __all__, whose names
-# tests/python/test_hostile.py classifies by the arguments they take.
 __all__ = [
     "ArgumentTypeError", "BreakawayOptions", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
     "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
     "cross_test", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "identify_breakaway", "identify_decay",
     "identify_idim", "identify_lugre", "identify_sweep", "idim_reconstruction", "idim_regression", "law_names", "load", "load_law",
-    "sha256_file", "simulate", "sweep_points", "validate",
+    "methods", "sha256_file", "simulate", "sweep_points", "validate",
 ]
 
 
