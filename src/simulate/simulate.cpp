@@ -182,7 +182,7 @@ class Engine {
     g_prev_.assign(static_cast<std::size_t>(ne_), 0.0);
     g_now_.assign(static_cast<std::size_t>(ne_), 0.0);
     // The states that are no contact's position or velocity (integrated by explicit Euler in
-    // fixed-step mode).
+    // fixed-step mode, unless the plant's fixed_step_update rewrites them).
     for (int i = 0; i < np_; ++i) {
       bool motion = false;
       for (const Body& b : bodies_) motion = motion || b.pos == i || b.vel == i;
@@ -534,16 +534,18 @@ class Engine {
     throw std::runtime_error("simulation failed at t = " + detail::format_value(t) + " s: " + why);
   }
 
-  // Initial state: the plant's extras, each contact's position and velocity from the options
-  // (a velocity drive: its input), law states 0.
+  // Initial state: each contact's position and velocity from the options (a velocity drive: its
+  // input), then the plant's extras from them and the inputs at t = 0 (so a controller's or an
+  // observer's states start consistent with the measurement and the reference), law states 0.
   void initial_state(double* y) {
     std::fill(y, y + n_, 0.0);
-    plant_.initial_extras(std::span<double>(y, static_cast<std::size_t>(np_)));
     for (std::size_t k = 0; k < bodies_.size(); ++k) {
       y[bodies_[k].pos] = o_.initial_positions.empty() ? o_.initial_position : o_.initial_positions[k];
       y[bodies_[k].vel] = o_.initial_velocities.empty() ? o_.initial_velocity : o_.initial_velocities[k];
     }
-    if (kinematic_) y[1] = inputs_[0].at(0.0).value;
+    eval_inputs(0.0);
+    if (kinematic_) y[1] = u_[0].value;
+    plant_.initial_extras(std::span<double>(y, static_cast<std::size_t>(np_)), u_);
   }
 
   void run_cvode(Trajectory& tr, std::size_t rows) {
@@ -803,6 +805,14 @@ class Engine {
       eval_inputs(0.0);
       plant_.events(0.0, x, u_, g_prev_);
     }
+    // The plant's own fixed-step update: the state and inputs at each step's start are kept for it.
+    const bool own_update = plant_.has_fixed_step_update();
+    std::vector<double> before;
+    std::vector<InputValue> u_before;
+    if (own_update) {
+      before.reserve(static_cast<std::size_t>(np_));
+      u_before.reserve(u_.size());
+    }
     long step = 0;
     for (std::size_t k = 0; k < rows; ++k) {
       // Advance to the row's step count, then record the state there.
@@ -811,6 +821,7 @@ class Engine {
         const double t = static_cast<double>(step) * dt;
         eval_inputs(t);
         if (kinematic_) x[1] = u_[0].value;
+        if (own_update) before.assign(x.begin(), x.end());
         if (any_static) plant_applied(t, x);
         for (std::size_t c = 0; c < bodies_.size(); ++c) {
           const Body& b = bodies_[c];
@@ -834,6 +845,14 @@ class Engine {
         }
         for (int i : extras_) x[static_cast<std::size_t>(i)] += dt * dx[static_cast<std::size_t>(i)];
         ++step;
+        if (own_update) {
+          // The plant's own rule for some of its states (a compensator's exact update), from the
+          // state and inputs at the step's start.
+          u_before.assign(u_.begin(), u_.end());
+          const double t_end = static_cast<double>(step) * dt;
+          eval_inputs(t_end);
+          plant_.fixed_step_update(t_end, dt, before, u_before, x, u_);
+        }
         if (per_sample > 0 && step % per_sample == 0) {
           const double ts = static_cast<double>(step / per_sample) * sample_period_;
           eval_inputs(ts);
