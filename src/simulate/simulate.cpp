@@ -22,6 +22,7 @@
 #include <exception>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <unistd.h>
@@ -343,12 +344,19 @@ class Engine {
     return b.law->sliding(v);
   }
 
-  void rhs(double t, const double* y, double* dy) {
+  // Calls f(std::true_type{}) for a 1-DOF plant, else f(std::false_type{}): picks the compiled
+  // form of a hot path.
+  template <class F>
+  [[gnu::always_inline]] void in_form(F&& f) {
     if (one_) {
-      rhs_t<true>(t, y, dy);
+      f(std::true_type{});
     } else {
-      rhs_t<false>(t, y, dy);
+      f(std::false_type{});
     }
+  }
+
+  void rhs(double t, const double* y, double* dy) {
+    in_form([&](auto one) { rhs_t<decltype(one)::value>(t, y, dy); });
   }
   template <bool One>
   void rhs_t(double t, const double* y, double* dy) {
@@ -373,11 +381,7 @@ class Engine {
   // Root functions: two per contact when any contact has hybrid modes (stuck: applied minus each
   // breakaway level; sliding: v; no modes: constant), then the plant's own.
   void roots(double t, const double* y, double* g) {
-    if (one_) {
-      roots_t<true>(t, y, g);
-    } else {
-      roots_t<false>(t, y, g);
-    }
+    in_form([&](auto one) { roots_t<decltype(one)::value>(t, y, g); });
   }
   template <bool One>
   void roots_t(double t, const double* y, double* g) {
