@@ -178,7 +178,8 @@ class Engine {
     y_row_.assign(static_cast<std::size_t>(n_), 0.0);
     u_.assign(inputs.size(), InputValue{});
     // Constant inputs are evaluated once, here (the default input of a plant that has none).
-    constant_inputs_ = std::all_of(inputs.begin(), inputs.end(), [](const InputSignal& in) { return in.shape == InputShape::constant; });
+    constant_inputs_ =
+        std::all_of(inputs.begin(), inputs.end(), [](const InputSignal& in) { return in.shape == InputShape::constant; });
     if (constant_inputs_)
       for (std::size_t i = 0; i < u_.size(); ++i) u_[i] = inputs[i].at(0.0);
     one_ = single_ != nullptr && nc_ == 1 && inputs.size() == 1;
