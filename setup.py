@@ -36,7 +36,7 @@ setup(
     name="frictionlab",
     version=VERSION,
     description="Model, simulate and identify friction in motion systems",
-    packages=["frictionlab"],
+    packages=["frictionlab", "frictionlab.methods"],
     package_dir={"frictionlab": "python/frictionlab"},
     ext_modules=[Extension("frictionlab._core", sources=[])],
     cmdclass={"build_ext": CMakeBuild},

@@ -46,28 +46,20 @@ from ._core import (
 )
 from .analysis import decay_envelope, detect_stick_slip
 from .data import Data, load
-from .identify import (
-    cross_test,
-    fit_static_law,
-    identify_breakaway,
-    identify_decay,
-    identify_idim,
-    identify_sweep,
-    idim_reconstruction,
-    idim_regression,
-    methods,
-    sweep_points,
-)
+# Each identification method's functions come from its module, frictionlab/methods/NAME.py, for
+# every method of the library's table (see frictionlab.identify): nothing here names them.
+from .identify import METHOD_FUNCTIONS as _METHOD_FUNCTIONS
+from .identify import fit_static_law, methods
 from .simulate import simulate
-from .validate import identify_lugre, validate
+
+globals().update(_METHOD_FUNCTIONS)
 
 __all__ = [
     "ArgumentTypeError", "BreakawayOptions", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
     "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
-    "cross_test", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "identify_breakaway", "identify_decay",
-    "identify_idim", "identify_lugre", "identify_sweep", "idim_reconstruction", "idim_regression", "law_names", "load", "load_law",
-    "methods", "sha256_file", "simulate", "sweep_points", "validate",
+    "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "law_names", "load", "load_law",
+    "methods", "sha256_file", "simulate", *_METHOD_FUNCTIONS,
 ]
 
 

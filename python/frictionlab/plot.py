@@ -11,7 +11,7 @@ matplotlib is imported here only, so ``import frictionlab`` does not need it.
 import numpy as np
 
 from .analysis import decay_envelope
-from .identify import idim_reconstruction
+from .methods.idim import idim_reconstruction
 
 # Force unit -> velocity unit of the same axis, for labels.
 _VELOCITY_UNIT = {"N": "m/s", "N m": "rad/s"}

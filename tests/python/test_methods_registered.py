@@ -37,6 +37,19 @@ def test_every_library_method_has_a_python_binding():
         assert (set(m.fit_units) == {"linear", "rotary"}) == bool(m.fit_signal), m
 
 
+def test_each_method_s_functions_come_from_its_own_module():
+    # frictionlab/methods/NAME.py holds a method's keyword functions; the package exports exactly
+    # its __all__, so a method's Python side is its own files and one registration line.
+    import importlib
+
+    for m in fl.methods():
+        module = importlib.import_module(f"frictionlab.methods.{m.name}")
+        assert m.function in module.__all__, (m.name, module.__all__)
+        for name in module.__all__:
+            assert getattr(fl, name) is getattr(module, name), name
+            assert name in fl.__all__, name
+
+
 def test_every_library_method_has_a_cli_command(cli):
     identify = subcommands(cli, "identify")
     top = subcommands(cli)
