@@ -2,7 +2,7 @@
 """The README's compensation table: the largest quadrant glitch of examples/xy_circle.yaml for each
 compensation type, with the exact model and with every friction parameter 20 % high and 20 % low.
 
-    python3 examples/compensation_table.py [build/app/frictionlab]
+    python3 bench/compensation_table.py [build/app/frictionlab]
 
 Each case is examples/xy_circle.yaml with a `compensation:` block on each axis built from that
 axis's own law with its parameters multiplied by f = 1, 1.2 or 0.8, simulated with the CLI. The
@@ -27,7 +27,7 @@ import sys
 import tempfile
 
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "examples")
 EXE = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "build", "app", "frictionlab")
 
 # The axes' laws and equivalent masses in examples/xy_circle.yaml (N, m/s, N s/m; kg).
