@@ -243,17 +243,21 @@ std::shared_ptr<const Compensator> read_compensation(const Section& s, const Com
   }
   // The type's own parameters (band, dead_band, gain, bandwidth, inertia): make_compensation
   // knows which belong to which type and refuses the others, naming them.
-  std::map<std::string, double> values;
-  for (const std::string& key : s.keys())
-    if (key != "type" && key != "model" && key != "friction" && key != "scale") values[key] = s.number(key);
   std::optional<double> inertia = ctx.inertia > 0 ? std::optional<double>(ctx.inertia) : std::nullopt;
-  const CompensationParams params = with_context(s.path(), [&] {
+  auto make = [&](const std::map<std::string, double>& v) {
     try {
-      return make_compensation(type, values, inertia);
+      return make_compensation(type, v, inertia);
     } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(std::string(e.what()) + " (and type, model, friction, scale)");
+      throw std::invalid_argument(s.path() + ": " + e.what() + " (and type, model, friction, scale)");
     }
-  });
+  };
+  std::map<std::string, double> values;
+  for (const std::string& key : s.keys()) {
+    if (key == "type" || key == "model" || key == "friction" || key == "scale") continue;
+    make({{key, 0.0}});  // a key of another type, or of none, is named before its value is read
+    values[key] = s.number(key);
+  }
+  const CompensationParams params = make(values);
   const bool observer = std::holds_alternative<DisturbanceObserverParams>(params);
   if (s.has("model") && s.has("friction"))
     throw std::invalid_argument(s.path() + ": give either 'model' (a MODEL.json or law file) or 'friction' (a law), not both");

@@ -137,6 +137,8 @@ TEST(CompensationScenario, BadBlocksNameTheirKey) {
             "s.yaml: controller.compensation: missing 'type'; valid compensation types: feedforward, feedback, lugre-observer, disturbance-observer");
   EXPECT_EQ(error(pid_loop("{type: feedforward, gain: 0.1}")), 
             "s.yaml: controller.compensation: compensation feedforward has no parameter 'gain'; it has band (and type, model, friction, scale)");
+  EXPECT_EQ(error(pid_loop("{type: feedforward, frction: {law: coulomb, Fc: 1}}")),
+            "s.yaml: controller.compensation: compensation feedforward has no parameter 'frction'; it has band (and type, model, friction, scale)");
   EXPECT_EQ(error(pid_loop("{type: feedforward, scale: 0}")), 
             "s.yaml: controller.compensation.scale: 0 must be > 0 (factor on the law's forces)");
   EXPECT_EQ(error(pid_loop("{type: feedforward, band: -1}")), 
