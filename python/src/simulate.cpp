@@ -7,6 +7,8 @@
 
 #include "common.hpp"
 #include "frictionlab/io/scenario.hpp"
+#include "frictionlab/plants/closed_loop.hpp"
+#include "frictionlab/plants/xy_table.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 namespace frictionlab::python {
@@ -56,11 +58,14 @@ void init_simulate(py::module_& m) {
   py::class_<Scenario>(m, "Scenario", R"doc(
 A simulation problem: plant, friction law, input and options, read from a scenario YAML file
 (Scenario.load(path)) or a dict of the same form (Scenario(dict)). Times in s, rates in Hz.)doc")
-      .def(py::init([](const py::dict& d, const std::string& where) {
-             return scenario_from_yaml(to_yaml(d, where), where);
+      .def(py::init([](const py::dict& d, const std::string& where, const py::object& base_dir) {
+             ScenarioOptions o;
+             if (!base_dir.is_none()) o.base_dir = path_arg(base_dir, "Scenario", "base_dir");
+             return scenario_from_yaml(to_yaml(d, where), where, o);
            }),
-           py::arg("spec"), py::arg("where") = "scenario",
-           "From a dict of the scenario-file form; `where` prefixes error messages.")
+           py::arg("spec"), py::arg("where") = "scenario", py::arg("base_dir") = py::none(),
+           "From a dict of the scenario-file form; `where` prefixes error messages. Relative file names "
+           "(data, a compensation's model) are resolved from `base_dir` (default: the working directory).")
       .def_static("load", [](const py::object& p) { return load_scenario(path_arg(p, "Scenario.load")); }, py::arg("path"),
                   "Reads a scenario YAML file; ValueError naming the file, key and value on bad content.")
       .def_property("law", [](const Scenario& s) { return s.law; },
@@ -76,6 +81,19 @@ A simulation problem: plant, friction law, input and options, read from a scenar
                     [](Scenario& s, double v) { s.options.initial_position = v; }, "Initial position, m or rad.")
       .def_property("initial_velocity", [](const Scenario& s) { return s.options.initial_velocity; },
                     [](Scenario& s, double v) { s.options.initial_velocity = v; }, "Initial velocity, m/s or rad/s.")
+      .def_property_readonly("compensation", [](const Scenario& s) -> py::object {
+        // What the scenario's `compensation:` blocks built: the type, per axis on an xy-table.
+        auto type_of = [](const Compensator* c) -> py::object { return c ? py::object(py::str(c->type())) : py::none(); };
+        if (const auto* loop = dynamic_cast<const ClosedLoop*>(s.plant.get())) return type_of(loop->compensator());
+        if (const auto* xy = dynamic_cast<const XyTable*>(s.plant.get())) {
+          py::dict d;
+          d["x"] = type_of(xy->axis(0).compensator.get());
+          d["y"] = type_of(xy->axis(1).compensator.get());
+          return d;
+        }
+        return py::none();
+      }, "The friction compensation the scenario's `compensation:` block built: its type ('feedforward', 'feedback', "
+         "'lugre-observer', 'disturbance-observer') or None; for an xy-table a dict {'x': type or None, 'y': ...}.")
       .def_property_readonly("solver", [](const Scenario& s) { return std::string(solver_mode_name(s.options.mode)); },
                              "Requested solver mode ('auto', 'hybrid', 'stiff', 'fixed-step').")
       .def("__copy__", [](const Scenario& s) { return s; })

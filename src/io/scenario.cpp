@@ -3,10 +3,12 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <map>
 #include <initializer_list>
@@ -15,6 +17,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "frictionlab/io/c_export.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/io/law_file.hpp"
 #include "frictionlab/io/load.hpp"
@@ -66,6 +69,11 @@ class Section {
   }
 
   bool has(const std::string& key) const { return static_cast<bool>(node_[key]); }
+  std::vector<std::string> keys() const {
+    std::vector<std::string> out;
+    for (const auto& kv : node_) out.push_back(kv.first.as<std::string>());
+    return out;
+  }
   YAML::Node node(const std::string& key) const { return node_[key]; }
 
   double number(const std::string& key) const {
@@ -188,10 +196,122 @@ class DataSource {
 using PlantPtr = std::shared_ptr<const Plant>;
 
 // What a plant reader may need beyond its section: whether a law for contacts without their
-// own exists (the top-level `friction`, or the caller's law).
+// own exists (the top-level `friction`, or the caller's law), that law (read when a compensation
+// needs it), and the directory a compensation's model file is resolved from.
 struct PlantContext {
   bool fallback_law = false;
+  std::function<FrictionLaw()> fallback;
+  std::string base_dir;
 };
+
+// What a `compensation:` block falls back on: the directory its model file is resolved from, the
+// law of the contact it compensates (the exact model; read only when the block names none) and
+// the inertia of the body (kg or kg m^2, the disturbance observer's default).
+struct CompensationContext {
+  std::string base_dir;
+  std::function<FrictionLaw()> law;
+  double inertia = 0.0;
+};
+
+// The law with every parameter that carries newtons (forces, viscous coefficients, stiffnesses,
+// force rates, a table's forces, GMS's element stiffnesses) multiplied by `scale`: its force is
+// then scale times the original's for every velocity history (the states, in m or rad, and the
+// velocities are the same), so scale 1.2 models a 20 % over-estimated friction.
+FrictionLaw scaled_law(const FrictionLaw& law, double scale) {
+  LawSpec spec = law.to_spec();
+  for (const Parameter& p : law.parameters()) {
+    const bool newtons = p.quantity == Quantity::force || p.quantity == Quantity::viscous ||
+                         p.quantity == Quantity::stiffness || p.quantity == Quantity::force_rate;
+    if (newtons && spec.scalars.count(p.name)) spec.scalars[p.name] *= scale;
+  }
+  for (const char* name : {"force", "k"})  // table forces (N), GMS element stiffnesses (N/m)
+    if (spec.arrays.count(name))
+      for (double& v : spec.arrays[name]) v *= scale;
+  return FrictionLaw::from_spec(spec);
+}
+
+// compensation: {type, model: FILE | friction: {law: ...}, scale, and the type's own parameters}
+// (see io/scenario.hpp): the compensator it builds, with messages naming the block's keys.
+std::shared_ptr<const Compensator> read_compensation(const Section& s, const CompensationContext& ctx) {
+  const std::string type = s.text("type", "");
+  const auto& types = compensation_types();
+  if (std::find(types.begin(), types.end(), type) == types.end()) {
+    std::string valid;
+    for (const auto& t : types) valid += (valid.empty() ? "" : ", ") + t;
+    if (type.empty()) throw std::invalid_argument(s.path() + ": missing 'type'; valid compensation types: " + valid);
+    throw std::invalid_argument(s.at("type") + ": unknown compensation type '" + type + "'; valid types: " + valid);
+  }
+  // The type's own parameters (band, dead_band, gain, bandwidth, inertia): make_compensation
+  // knows which belong to which type and refuses the others, naming them.
+  std::optional<double> inertia = ctx.inertia > 0 ? std::optional<double>(ctx.inertia) : std::nullopt;
+  auto make = [&](const std::map<std::string, double>& v) {
+    try {
+      return make_compensation(type, v, inertia);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(s.path() + ": " + e.what() + " (and type, model, friction, scale)");
+    }
+  };
+  std::map<std::string, double> values;
+  for (const std::string& key : s.keys()) {
+    if (key == "type" || key == "model" || key == "friction" || key == "scale") continue;
+    make({{key, 0.0}});  // a key of another type, or of none, is named before its value is read
+    values[key] = s.number(key);
+  }
+  const CompensationParams params = make(values);
+  const bool observer = std::holds_alternative<DisturbanceObserverParams>(params);
+  if (s.has("model") && s.has("friction"))
+    throw std::invalid_argument(s.path() + ": give either 'model' (a MODEL.json or law file) or 'friction' (a law), not both");
+  if (observer && (s.has("friction") || s.has("scale")))
+    throw std::invalid_argument(s.at(s.has("friction") ? "friction" : "scale") +
+                                ": a disturbance-observer uses no friction law (its parameters: bandwidth, inertia; "
+                                "'model' may give the inertia M)");
+  std::optional<FrictionLaw> law;
+  std::string law_key = "type";  // the key a law that does not fit the type is blamed on
+  if (s.has("model")) {
+    std::filesystem::path path(s.text("model", ""));
+    if (path.is_relative() && !ctx.base_dir.empty()) path = std::filesystem::path(ctx.base_dir) / path;
+    const ExportModel m = with_context(s.at("model"), [&] { return read_export_model(path.string()); });
+    law = m.law;
+    law_key = "model";
+    if (observer && m.inertia && !values.count("inertia")) inertia = m.inertia;
+  } else if (s.has("friction")) {
+    law = law_from_yaml(s.node("friction"), s.at("friction"));
+    law_key = "friction";
+  } else if (!observer) {
+    law = with_context(s.path(), ctx.law);  // the exact model: the contact's own law
+  }
+  const double scale = s.number("scale", 1.0);
+  if (!(std::isfinite(scale) && scale > 0))
+    throw std::invalid_argument(s.at("scale") + ": " + detail::format_value(scale) + " must be > 0 (factor on the law's forces)");
+  if (law && scale != 1.0) law = with_context(s.at("scale"), [&] { return scaled_law(*law, scale); });
+  auto build = [&]() -> std::shared_ptr<const Compensator> {
+    return std::visit(
+        [&](const auto& p) -> std::shared_ptr<const Compensator> {
+          using P = std::decay_t<decltype(p)>;
+          if constexpr (std::is_same_v<P, FeedforwardParams>) return std::make_shared<const FeedforwardCompensation>(*law, p);
+          else if constexpr (std::is_same_v<P, FeedbackParams>) return std::make_shared<const FeedbackCompensation>(*law, p);
+          else if constexpr (std::is_same_v<P, LuGreObserverParams>) return std::make_shared<const LuGreObserver>(*law, p);
+          else if constexpr (std::is_same_v<P, DisturbanceObserverParams>) {
+            DisturbanceObserverParams q = p;
+            if (inertia && !values.count("inertia")) q.inertia = *inertia;
+            return std::make_shared<const DisturbanceObserver>(q);
+          } else return nullptr;
+        },
+        params);
+  };
+  try {
+    return build();
+  } catch (const std::invalid_argument& e) {
+    // A law that does not fit the type is the law's key's fault; a bad band, gain, ... names
+    // its parameter itself ("feedforward: band = -1 must be > 0").
+    const std::string what = e.what();
+    if (what.find(": law = ") == std::string::npos) throw std::invalid_argument(s.path() + ": " + what);
+    throw std::invalid_argument(s.at(law_key) + ": " + what +
+                                (law_key == "type" ? "; without 'model' or 'friction' the compensation uses the compensated "
+                                                     "contact's own law: give a LuGre law in 'friction' or 'model'"
+                                                   : ""));
+  }
+}
 
 PlantPtr read_axis(const Section& s, const PlantContext&) {
   s.allow({"type", "M", "offset"});
@@ -255,8 +375,9 @@ void read_xy_gains(const Section& s, ControllerParams& c) {
   c.limit = s.number("limit", c.limit);
 }
 
-XyAxis read_xy_axis(const Section& s, const ControllerParams& common, const PlantContext& ctx) {
-  s.allow({"mass", "inertia", "lead", "friction", "drive"});
+// `shared`: the plant's `compensation` block (null when none), which the axis's own replaces.
+XyAxis read_xy_axis(const Section& s, const ControllerParams& common, const PlantContext& ctx, const Section* shared) {
+  s.allow({"mass", "inertia", "lead", "friction", "drive", "compensation"});
   XyAxis a;
   if (!s.has("mass") && !s.has("inertia"))
     throw std::invalid_argument(s.path() + ": missing 'mass' (kg) or 'inertia' (kg m^2) with 'lead' (m/rev)");
@@ -279,11 +400,20 @@ XyAxis read_xy_axis(const Section& s, const ControllerParams& common, const Plan
     d.allow({"limit", "Kp", "Ki", "Kd", "Kvff", "Kaff"});
     read_xy_gains(d, a.gains);
   }
+  const YAML::Node own = s.node("compensation");
+  if (own && own.IsScalar() && own.as<std::string>() == "none") return a;  // the shared one switched off
+  if (own || shared) {
+    CompensationContext cc;
+    cc.base_dir = ctx.base_dir;
+    cc.law = a.law ? std::function<FrictionLaw()>([law = *a.law] { return law; }) : ctx.fallback;
+    cc.inertia = with_context(s.path(), [&] { return a.equivalent_mass(); });
+    a.compensator = own ? read_compensation(Section(own, s.at("compensation")), cc) : read_compensation(*shared, cc);
+  }
   return a;
 }
 
 PlantPtr read_xy_table(const Section& s, const PlantContext& ctx) {
-  s.allow({"type", "axes", "controller"});
+  s.allow({"type", "axes", "controller", "compensation"});
   if (!s.has("axes")) throw std::invalid_argument(s.path() + ": missing 'axes' (a mapping with the x and y axes)");
   const Section axes(s.node("axes"), s.at("axes"));
   axes.allow({"x", "y"});
@@ -301,8 +431,11 @@ PlantPtr read_xy_table(const Section& s, const PlantContext& ctx) {
       throw std::invalid_argument(c.at("delay") + ": " + detail::format_value(delay) + " must be 0 or 1 (samples)");
     timing.delay = static_cast<int>(delay);
   }
-  XyAxis x = read_xy_axis(Section(axes.node("x"), axes.at("x")), common, ctx);
-  XyAxis y = read_xy_axis(Section(axes.node("y"), axes.at("y")), common, ctx);
+  std::optional<Section> shared;
+  if (s.has("compensation")) shared.emplace(s.node("compensation"), s.at("compensation"));
+  const Section* sh = shared ? &*shared : nullptr;
+  XyAxis x = read_xy_axis(Section(axes.node("x"), axes.at("x")), common, ctx, sh);
+  XyAxis y = read_xy_axis(Section(axes.node("y"), axes.at("y")), common, ctx, sh);
   return with_context(s.path(), [&] { return std::make_shared<const XyTable>(std::move(x), std::move(y), timing); });
 }
 
@@ -551,7 +684,7 @@ EmpsPdParams read_emps_pd(const Section& s, DataSource& src) {
 }
 
 ControllerParams read_controller(const Section& s) {
-  s.allow({"type", "loop", "Kp", "Ki", "Kd", "limit"});
+  s.allow({"type", "loop", "Kp", "Ki", "Kd", "limit", "compensation", "compensation_gain"});
   ControllerParams c;
   static constexpr std::pair<const char*, ControlLoop> kLoops[] = {{"position", ControlLoop::position}, {"velocity", ControlLoop::velocity}};
   c.loop = choose(s, "loop", "position", kLoops, "loop", "loops");
@@ -559,21 +692,29 @@ ControllerParams read_controller(const Section& s) {
   c.Ki = s.number("Ki", c.Ki);
   c.Kd = s.number("Kd", c.Kd);
   c.limit = s.number("limit", c.limit);
+  c.compensation_gain = s.number("compensation_gain", c.compensation_gain);
   return c;
 }
 
 // Controller readers, one per controller type: each closes the loop around `plant`.
-PlantPtr close_pid(const Section& s, DataSource&, const PlantPtr& plant) {
+PlantPtr close_pid(const Section& s, DataSource&, const PlantPtr& plant, const CompensationContext& cc) {
   const ControllerParams c = read_controller(s);
-  return with_context(s.path(), [&] { return std::make_shared<const ClosedLoop>(plant, c); });
+  std::shared_ptr<const Compensator> comp;
+  if (s.has("compensation")) {
+    CompensationContext with_inertia = cc;
+    with_inertia.inertia = plant->inertia();
+    comp = read_compensation(Section(s.node("compensation"), s.at("compensation")), with_inertia);
+  }
+  return with_context(s.path(), [&] { return std::make_shared<const ClosedLoop>(plant, c, comp); });
 }
 
-PlantPtr close_emps_pd(const Section& s, DataSource& src, const PlantPtr& plant) {
+PlantPtr close_emps_pd(const Section& s, DataSource& src, const PlantPtr& plant, const CompensationContext&) {
   const EmpsPdParams p = read_emps_pd(s, src);
   return with_context(s.path(), [&] { return std::make_shared<const EmpsPdLoop>(plant, p); });
 }
 
-constexpr std::pair<const char*, PlantPtr (*)(const Section&, DataSource&, const PlantPtr&)> kControllerReaders[] = {
+constexpr std::pair<const char*, PlantPtr (*)(const Section&, DataSource&, const PlantPtr&, const CompensationContext&)>
+    kControllerReaders[] = {
     {"pid", close_pid},
     {"emps-pd", close_emps_pd},
 };
@@ -633,6 +774,8 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
   Scenario sc;
   PlantContext ctx;
   ctx.fallback_law = options.law.has_value() || top.has("friction");
+  ctx.fallback = [&] { return options.law ? *options.law : law_from_yaml(root["friction"], where + ": friction"); };
+  ctx.base_dir = options.base_dir;
   sc.plant = read_plant(section("plant"), options, ctx);
   const bool two_axis = sc.plant->num_inputs() == 2;  // an xy-table: its axes carry their laws
   if (options.law) {
@@ -666,7 +809,10 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
   }
   if (top.has("controller") && !two_axis) {
     const Section cs = section("controller");
-    sc.plant = choose(cs, "type", "pid", kControllerReaders, "controller type", "")(cs, src, sc.plant);
+    CompensationContext cc;
+    cc.base_dir = options.base_dir;
+    cc.law = [&] { return sc.law; };
+    sc.plant = choose(cs, "type", "pid", kControllerReaders, "controller type", "")(cs, src, sc.plant, cc);
   }
   // Top-level values: messages as "FILE: duration: ..." to match the key path style.
   SimulationOptions& o = sc.options;

@@ -51,6 +51,33 @@
 // N/(m/s), N/(m/s^2)). The top-level `friction` and `controller` belong to 1-input plants; the
 // xy-table refuses a top-level controller. `duration` defaults to the circle's turns 2 pi R / F, or
 // the path's last time. Circle and path are refused for a 1-input plant, 1-input types for an xy-table.
+//
+// Friction compensation (control/*.hpp): a `compensation:` block inside a pid `controller:`, inside
+// an xy-table axis (plant.axes.x.compensation), or shared by both axes (plant.compensation, each
+// axis then compensating with its own law and mass; an axis's own block replaces it, and
+// `compensation: none` on an axis switches it off there):
+//   compensation:
+//     type: feedforward | feedback | lugre-observer | disturbance-observer
+//     model: MODEL.json          # an identified model or a law file (io/law_file.hpp); relative
+//                                # to the scenario file's directory, as `data:`
+//     friction: {law: lugre, ...}   # or the law itself, in the `friction:` syntax
+//     scale: 1.2                 # optional, > 0, default 1 (see below)
+//     band: 0.001                # feedforward: smoothing half-width (m/s or rad/s; default 1e-3)
+//     dead_band: 0.001           # feedback: dead band half-width (m/s or rad/s; default 1e-3)
+//     gain: 0.01                 # lugre-observer: observer gain k (1/s; default 0.01)
+//     bandwidth: 100             # disturbance-observer: low-pass bandwidth (rad/s; default 100)
+//     inertia: 1.0               # disturbance-observer: nominal inertia (kg or kg m^2)
+// Without `model` and `friction` the compensation uses the exact model: the law of the contact it
+// compensates (the scenario's `friction`, the axis's own law). `scale` multiplies every parameter
+// of that law that carries newtons (forces, viscous coefficients, stiffnesses, force rates, a
+// table's forces, GMS's element stiffnesses), so the compensation's force is `scale` times the
+// law's for every velocity history: 1.2 over-compensates by 20 %, 0.8 under-compensates. The
+// disturbance observer uses no law (`friction` and `scale` are refused); its inertia defaults to
+// the model file's identified M when `model` gives one, else to the compensated body's inertia
+// (the plant's M, the axis's equivalent mass). A pid controller also takes `compensation_gain`
+// (plant input per N or N m, default 1: a force-driven plant; a current-driven DC motor wants
+// 1 / (Ka Kt)). A type that does not fit the law (lugre-observer without a LuGre law), a parameter
+// of another type, or an unknown key is refused naming the key.
 
 #include <memory>
 #include <optional>
@@ -92,7 +119,7 @@ struct ScenarioOptions {
 ///         type or field (listing the valid ones), a missing required field (naming it), a value
 ///         that is not a number, a non-positive duration, output rate, tolerance or step (with its
 ///         value), a data file that cannot be read, or a column or scalar it lacks (listing the
-///         ones it has).
+///         ones it has), and a compensation block that does not fit (see above: naming its key).
 Scenario scenario_from_yaml(const YAML::Node& root, const std::string& where, const ScenarioOptions& options = {});
 
 /// Reads a scenario file; relative data files are resolved from its directory unless
