@@ -637,7 +637,7 @@ constexpr std::pair<const char*, Contour (*)(const Section&, DataSource&)> kCont
 };
 
 EmpsPdParams read_emps_pd(const Section& s, DataSource& src) {
-  s.allow({"type", "kp", "kv", "gtau", "limit", "dt", "delay", "pulses"});
+  s.allow({"type", "kp", "kv", "gtau", "limit", "dt", "delay", "pulses", "compensation"});
   const auto d = src.get();
   EmpsPdParams p;
   p.kp = src.constant(s, "kp", d);
@@ -697,20 +697,24 @@ ControllerParams read_controller(const Section& s) {
 }
 
 // Controller readers, one per controller type: each closes the loop around `plant`.
+// A loop's `compensation:` block (null when none), the plant's inertia as the observers' default.
+std::shared_ptr<const Compensator> loop_compensation(const Section& s, const PlantPtr& plant, const CompensationContext& cc) {
+  if (!s.has("compensation")) return nullptr;
+  CompensationContext with_inertia = cc;
+  with_inertia.inertia = plant->inertia();
+  return read_compensation(Section(s.node("compensation"), s.at("compensation")), with_inertia);
+}
+
 PlantPtr close_pid(const Section& s, DataSource&, const PlantPtr& plant, const CompensationContext& cc) {
   const ControllerParams c = read_controller(s);
-  std::shared_ptr<const Compensator> comp;
-  if (s.has("compensation")) {
-    CompensationContext with_inertia = cc;
-    with_inertia.inertia = plant->inertia();
-    comp = read_compensation(Section(s.node("compensation"), s.at("compensation")), with_inertia);
-  }
+  const std::shared_ptr<const Compensator> comp = loop_compensation(s, plant, cc);
   return with_context(s.path(), [&] { return std::make_shared<const ClosedLoop>(plant, c, comp); });
 }
 
-PlantPtr close_emps_pd(const Section& s, DataSource& src, const PlantPtr& plant, const CompensationContext&) {
+PlantPtr close_emps_pd(const Section& s, DataSource& src, const PlantPtr& plant, const CompensationContext& cc) {
   const EmpsPdParams p = read_emps_pd(s, src);
-  return with_context(s.path(), [&] { return std::make_shared<const EmpsPdLoop>(plant, p); });
+  const std::shared_ptr<const Compensator> comp = loop_compensation(s, plant, cc);
+  return with_context(s.path(), [&] { return std::make_shared<const EmpsPdLoop>(plant, p, comp); });
 }
 
 constexpr std::pair<const char*, PlantPtr (*)(const Section&, DataSource&, const PlantPtr&, const CompensationContext&)>

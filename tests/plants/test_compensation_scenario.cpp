@@ -9,12 +9,14 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "error_message.hpp"
 #include "frictionlab/control/disturbance_observer.hpp"
 #include "frictionlab/control/feedforward.hpp"
 #include "frictionlab/control/lugre_observer.hpp"
 #include "frictionlab/io/scenario.hpp"
+#include "frictionlab/models/viscous.hpp"
 #include "frictionlab/plants/closed_loop.hpp"
 #include "frictionlab/plants/xy_table.hpp"
 #include "frictionlab/simulate/simulate.hpp"
@@ -186,4 +188,39 @@ TEST(CompensationScenario, FeedforwardFlattensTheQuadrantGlitches) {
               1e6 * largest(comp), 100.0 * (1.0 - largest(comp) / largest(plain)));
   constexpr double kRequiredDrop = 0.8;  // the acceptance criterion of the compensated example
   EXPECT_LT(largest(comp), (1.0 - kRequiredDrop) * largest(plain));
+}
+
+// examples/emps_closed_loop_compensated.yaml: the EMPS loop with feedforward from its own
+// (identified) friction law. The tracking error qg - q of the EMPS PD loop is mostly its following
+// error qd/kp (no velocity feedforward), which friction does not cause; the part friction causes
+// is the difference to the same run without friction, and the compensation must remove most of it.
+TEST(CompensationScenario, EmpsLoopFeedforwardRemovesTheFrictionPartOfTheTrackingError) {
+  auto tracking = [](const Trajectory& tr) {
+    std::vector<double> e(tr.rows());
+    for (std::size_t i = 0; i < tr.rows(); ++i) e[i] = tr.reference[i] - tr.position[i];  // m
+    return e;
+  };
+  ScenarioOptions frictionless;
+  frictionless.law = FrictionLaw(Viscous{0.0});
+  const auto free = tracking(simulate(load_scenario(example("emps_closed_loop.yaml"), frictionless)));
+  const auto plain = tracking(simulate(load_scenario(example("emps_closed_loop.yaml"))));
+  const auto comp = tracking(simulate(load_scenario(example("emps_closed_loop_compensated.yaml"))));
+  ASSERT_EQ(plain.size(), free.size());
+  ASSERT_EQ(comp.size(), free.size());
+  auto rms = [](const std::vector<double>& a, const std::vector<double>& b) {
+    double s = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+    return std::sqrt(s / static_cast<double>(a.size()));
+  };
+  const std::vector<double> zero(free.size(), 0.0);
+  const double part_plain = rms(plain, free), part_comp = rms(comp, free);
+  std::printf("EMPS tracking error rms: %.4g mm without, %.4g mm with feedforward (%.4g mm without friction); "
+              "friction's part %.3g um -> %.3g um\n",
+              1e3 * rms(plain, zero), 1e3 * rms(comp, zero), 1e3 * rms(free, zero), 1e6 * part_plain, 1e6 * part_comp);
+  EXPECT_GT(part_plain, 1e-5);  // m: friction's part without compensation (27 um rms measured)
+  // Measured: 0.8 um rms, 3 % of it: the feedforward sees the reference's velocity, not the axis's,
+  // and the loop's one-sample delay; 10 % leaves room for solver versions and still needs most removed.
+  constexpr double kRemainingShare = 0.1;
+  EXPECT_LT(part_comp, kRemainingShare * part_plain);
+  EXPECT_LT(rms(comp, zero), rms(plain, zero));
 }

@@ -10,6 +10,7 @@
 
 #include <memory>
 
+#include "frictionlab/control/compensator.hpp"
 #include "frictionlab/plants/plant.hpp"
 #include "frictionlab/core/input.hpp"
 
@@ -29,19 +30,28 @@ struct EmpsPdParams {
 };
 
 /// Discrete EMPS PD loop around `inner`, integrated by the engine through Plant::sample_period()
-/// and Plant::sample(). States: the inner plant's, then 5 discrete ones (derivative 0):
-/// applied output (V), last computed output v(k) (V), q(k-1) (m), qf(k-1) (m), and a flag that
-/// is 1 once the first sample was taken (the memory then starts at the initial position: no
+/// and Plant::sample(). States: the inner plant's, then 6 discrete ones (derivative 0):
+/// applied output (V), last computed output v(k) (V), q(k-1) (m), qf(k-1) (m), a flag that
+/// is 1 once the first sample was taken, and qg(k-1) (m) (the memory then starts at the initial position: no
 /// velocity kick at t = 0). Signals: voltage = the last computed output v(k) (V, with pulses),
 /// the counterpart of the recorded drive input; drive = gtau v(k) (N or N m: the force the
 /// controller commands, the counterpart of a recorded force); reference = qg (m).
+///
+/// An optional friction compensator runs at the samples as a drive's firmware runs it: its
+/// fixed-step update (Compensator::update) over the sample period, fed with the measured position
+/// q(k), the loop's own velocity estimate qd_m(k), the reference qg(k) and its backward difference
+/// (qg(k) - qg(k-1)) / dt as the reference velocity (the reference is a sampled signal), and the
+/// force held over the period just ended; its output F (N or N m) enters the drive as F / gtau (V)
+/// inside the saturation. Its states follow the 6 discrete ones (the sixth: qg(k-1), m).
 class EmpsPdLoop : public SingleContactPlant {
  public:
   /// \throws std::invalid_argument when `inner` is null or kinematic, or a parameter is out of
   ///         range (the message names it, with its value and unit).
-  EmpsPdLoop(std::shared_ptr<const Plant> inner, EmpsPdParams p);
+  EmpsPdLoop(std::shared_ptr<const Plant> inner, EmpsPdParams p, std::shared_ptr<const Compensator> compensator = nullptr);
   std::string type() const override { return inner_->type(); }
-  int num_states() const override { return n_inner_ + 5; }
+  int num_states() const override { return n_inner_ + kDiscrete + n_comp_; }
+  using SingleContactPlant::initial_extras;
+  void initial_extras(std::span<double> x, Inputs u) const override;
   double inertia(int = 0) const override { return inner_->inertia(); }
   double applied(double t, std::span<const double> x, const InputValue& r) const override;
   void derivatives(double t, std::span<const double> x, const InputValue& r, double friction,
@@ -51,11 +61,16 @@ class EmpsPdLoop : public SingleContactPlant {
   void sample(double t, std::span<double> x, const InputValue& r) const override;
   const EmpsPdParams& params() const { return p_; }
   const Plant& inner() const { return *inner_; }
+  /// The compensator, or nullptr.
+  const Compensator* compensator() const { return compensator_.get(); }
 
  private:
+  static constexpr int kDiscrete = 6;  // the loop's own discrete states (see the class comment)
   std::shared_ptr<const Plant> inner_;
   EmpsPdParams p_;
+  std::shared_ptr<const Compensator> compensator_;
   int n_inner_;
+  int n_comp_ = 0;
 };
 
 }  // namespace frictionlab
