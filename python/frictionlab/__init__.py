@@ -20,6 +20,7 @@ Plotting helpers (matplotlib) are in frictionlab.plot, imported on first use.
 from ._core import (
     ArgumentTypeError,
     BreakawayOptions,
+    ContourResult,
     DecayOptions,
     Diagnostics,
     EnvelopeFit,
@@ -39,6 +40,7 @@ from ._core import (
     Trajectory,
     ValidationFigures,
     __version__,
+    analyze_contour,
     export_c,
     law_names,
     load_law,
@@ -61,10 +63,10 @@ from .simulate import simulate
 from .validate import identify_lugre, validate
 
 __all__ = [
-    "ArgumentTypeError", "BreakawayOptions", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
+    "ArgumentTypeError", "BreakawayOptions", "ContourResult", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
     "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
-    "cross_test", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "identify_breakaway", "identify_decay",
+    "analyze_contour", "cross_test", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "identify_breakaway", "identify_decay",
     "identify_idim", "identify_lugre", "identify_sweep", "idim_reconstruction", "idim_regression", "law_names", "load", "load_law",
     "sha256_file", "simulate", "sweep_points", "validate",
 ]
