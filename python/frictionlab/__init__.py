@@ -57,6 +57,7 @@ from .identify import (
     identify_sweep,
     idim_reconstruction,
     idim_regression,
+    methods,
     sweep_points,
 )
 from .simulate import simulate
@@ -68,7 +69,7 @@ __all__ = [
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
     "analyze_contour", "cross_test", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "identify_breakaway", "identify_decay",
     "identify_idim", "identify_lugre", "identify_sweep", "idim_reconstruction", "idim_regression", "law_names", "load", "load_law",
-    "sha256_file", "simulate", "sweep_points", "validate",
+    "methods", "sha256_file", "simulate", "sweep_points", "validate",
 ]
 
 

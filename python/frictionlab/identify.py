@@ -1,4 +1,5 @@
-"""Identification methods over numpy arrays: idim, breakaway, sweep, decay, static law fit.
+"""Identification methods over numpy arrays: idim, breakaway, sweep, decay, static law fit, and
+the table of every method the library has (methods()).
 
 Every method returns a :class:`frictionlab.Result` (values, std, units, fit figures,
 diagnostics, status and message). Data that cannot give an answer (no motion, too few
@@ -6,6 +7,7 @@ segments, rank-deficient regressors) gives ``status == 'error'`` with a message,
 exception; bad input (unequal lengths, NaN, irregular time, unknown option value) raises
 ValueError with the library's message.
 """
+import collections
 import math
 import os
 
@@ -14,6 +16,25 @@ import numpy as np
 from . import _core
 
 _IDIM_DEFAULT_TERMS = ("inertia", "viscous", "coulomb", "offset")
+
+Method = collections.namedtuple("Method", "name summary fit_signal fit_units function")
+Method.__doc__ = """One identification method of the library (frictionlab/identify/method.hpp).
+
+    name        the method's name: Result.method, ``frictionlab identify NAME`` (validate: its own command)
+    summary     one line on what it does
+    fit_signal  the signal its fit figures are computed on, in words ("drive force"); "" when none
+    fit_units   the unit of that signal (the fit's rmse) by axis, {"linear": "N", "rotary": "N m"};
+                {} when there is no single fitted signal (validate reports per-signal errors)
+    function    name of the frictionlab function running it ("identify_idim"), None when it has no
+                Python binding
+"""
+
+
+def methods():
+    """Every identification method of the library, in its order, as Method tuples (name, summary,
+    fit_signal, fit_units, function). The table is the library's; ``function`` comes from the
+    module's registration (python/src/methods/), so a method without a binding shows None."""
+    return [Method(**m) for m in _core._methods()]
 
 
 def _source(source):

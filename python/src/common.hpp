@@ -1,6 +1,7 @@
 #pragma once
 // Shared helpers of the frictionlab Python extension: numpy conversions and the per-layer
-// init functions (one .cpp per library layer: laws, io, identify, simulate, analysis).
+// init functions (one .cpp per library layer: laws, io, identify, simulate, analysis; the
+// identification Result is result.hpp, each method is methods/NAME.cpp).
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -84,9 +85,9 @@ py::dict law_to_dict(const FrictionLaw& law);
 
 void init_laws(py::module_& m);
 void init_io(py::module_& m);
+void init_result(py::module_& m);  // result.hpp: the Result classes, before any method
 void init_identify(py::module_& m);
 void init_simulate(py::module_& m);
 void init_analysis(py::module_& m);
-void init_validate(py::module_& m);
 
 }  // namespace frictionlab::python

@@ -2,8 +2,9 @@
 // simulation and analysis, numpy in and out. C++ std::invalid_argument and std::logic_error
 // become ValueError with the same message; std::runtime_error becomes RuntimeError.
 // The bindings live in one file per library layer (laws.cpp, io.cpp, identify.cpp,
-// simulate.cpp, analysis.cpp); the friendly keyword API and the plots are pure Python
-// (python/frictionlab/*.py).
+// simulate.cpp, analysis.cpp), the identification Result in result.cpp, and each identification
+// method in its own file (methods/NAME.cpp, registered in methods/methods.cpp); the friendly
+// keyword API and the plots are pure Python (python/frictionlab/*.py).
 #include <cmath>
 #include <stdexcept>
 
@@ -165,10 +166,10 @@ PYBIND11_MODULE(_core, m) {
 
   fp::init_laws(m);
   fp::init_io(m);
+  fp::init_result(m);
   fp::init_identify(m);
   fp::init_simulate(m);
   fp::init_analysis(m);
-  fp::init_validate(m);
   fp::init_export(m);
   fp::init_contour(m);
 }

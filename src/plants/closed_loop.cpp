@@ -55,15 +55,34 @@ CompensatorInput ClosedLoop::measured(double t, std::span<const double> x, const
 }
 
 void ClosedLoop::initial_extras(std::span<double> x) const {
+  const InputValue zero_reference{};
+  initial_extras(x, Inputs(&zero_reference, 1));
+}
+
+void ClosedLoop::initial_extras(std::span<double> x, Inputs u) const {
   const std::size_t n = static_cast<std::size_t>(n_inner_);
-  inner_->initial_extras(x.first(n));
+  // The inner plant's input is the controller output, which needs these very states: it starts
+  // from a zero input.
+  const InputValue no_output{};
+  inner_->initial_extras(x.first(n), Inputs(&no_output, 1));
   x[n] = 0.0;
-  if (compensator_) {
-    CompensatorInput at_rest;
-    at_rest.position = x[0];
-    at_rest.velocity = x[1];
-    compensator_->initial_states(at_rest, x.subspan(n + 1, static_cast<std::size_t>(n_comp_)));
-  }
+  if (compensator_)
+    compensator_->initial_states(measured(0.0, x, u[0]), x.subspan(n + 1, static_cast<std::size_t>(n_comp_)));
+}
+
+void ClosedLoop::fixed_step_update(double t, double dt, std::span<const double> before, Inputs u_before,
+                                   std::span<double> x, Inputs u) const {
+  if (!compensator_) return;
+  const std::size_t n = static_cast<std::size_t>(n_inner_);
+  const double t0 = t - dt;
+  // The force the drive held over the step: the inner plant's drive at the output of the step's start.
+  const InputValue held{control(t0, before, u_before[0])};
+  CompensatorInput in = measured(t, x, u[0]);
+  in.drive = signals_of(*inner_, t0, before.first(n), held).drive;
+  const auto z = x.subspan(n + 1, static_cast<std::size_t>(n_comp_));
+  const auto z0 = own_states(before);
+  std::copy(z0.begin(), z0.end(), z.begin());  // from the step's start, not the engine's Euler value
+  compensator_->update(in, z, dt);
 }
 
 double ClosedLoop::compensation(double t, std::span<const double> x, const InputValue& r) const {

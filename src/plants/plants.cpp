@@ -25,6 +25,10 @@ void require(bool ok, const char* plant, const char* name, double value, const c
 
 Contact Plant::contact(int) const { return {}; }
 
+void Plant::initial_extras(std::span<double> x, Inputs) const { initial_extras(x); }
+
+void Plant::fixed_step_update(double, double, std::span<const double>, Inputs, std::span<double>, Inputs) const {}
+
 void Plant::initial_extras(std::span<double> x) const {
   // Zero every state but the contacts' positions and velocities (the caller sets those).
   const int nc = num_contacts();

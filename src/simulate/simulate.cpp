@@ -13,6 +13,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -21,6 +22,7 @@
 #include <exception>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <unistd.h>
@@ -175,6 +177,12 @@ class Engine {
     scratch_.assign(static_cast<std::size_t>(n_), 0.0);
     y_row_.assign(static_cast<std::size_t>(n_), 0.0);
     u_.assign(inputs.size(), InputValue{});
+    // Constant inputs are evaluated once, here (the default input of a plant that has none).
+    constant_inputs_ =
+        std::all_of(inputs.begin(), inputs.end(), [](const InputSignal& in) { return in.shape == InputShape::constant; });
+    if (constant_inputs_)
+      for (std::size_t i = 0; i < u_.size(); ++i) u_[i] = inputs[i].at(0.0);
+    one_ = single_ != nullptr && nc_ == 1 && inputs.size() == 1;
     force_.assign(static_cast<std::size_t>(nc_), 0.0);
     friction_.assign(static_cast<std::size_t>(nc_), 0.0);
     signals_.assign(static_cast<std::size_t>(nc_), PlantSignals{});
@@ -182,7 +190,7 @@ class Engine {
     g_prev_.assign(static_cast<std::size_t>(ne_), 0.0);
     g_now_.assign(static_cast<std::size_t>(ne_), 0.0);
     // The states that are no contact's position or velocity (integrated by explicit Euler in
-    // fixed-step mode).
+    // fixed-step mode, unless the plant's fixed_step_update rewrites them).
     for (int i = 0; i < np_; ++i) {
       bool motion = false;
       for (const Body& b : bodies_) motion = motion || b.pos == i || b.vel == i;
@@ -240,33 +248,51 @@ class Engine {
 
   // ---- physics -------------------------------------------------------------------------------
 
+  // The hot paths (right-hand side, root functions, output rows) are compiled twice: One = true
+  // for a 1-DOF plant (one contact, one input, a SingleContactPlant; one_ says which applies),
+  // with no loop over contacts or inputs and no test of the plant's kind; One = false for any
+  // plant. Every other caller takes the general form.
+
+  // Number of contacts, a constant for a 1-DOF plant.
+  template <bool One>
+  [[gnu::always_inline]] std::size_t contacts() const {
+    if constexpr (One) return 1;
+    return bodies_.size();
+  }
+
+  // The inputs at t into u_; nothing when they are all constant (evaluated once, in the constructor).
+  template <bool One = false>
   [[gnu::always_inline]] void eval_inputs(double t) {
-    if (u_.size() == 1) {
+    if (constant_inputs_) return;
+    if constexpr (One) {
       u_[0] = inputs_[0].at(t);
-      return;
+    } else {
+      for (std::size_t i = 0; i < u_.size(); ++i) u_[i] = inputs_[i].at(t);
     }
-    for (std::size_t i = 0; i < u_.size(); ++i) u_[i] = inputs_[i].at(t);
   }
 
   // The plant's methods at the evaluated inputs u_. A 1-DOF plant is called through its scalar
   // methods: one virtual call per evaluation instead of two (the span forwarders), on the
   // engine's hottest path.
+  template <bool One = false>
   [[gnu::always_inline]] void plant_applied(double t, std::span<const double> x) {
-    if (single_) {
+    if (One || single_) {
       force_[0] = single_->applied(t, x, u_[0]);
     } else {
       plant_.applied(t, x, u_, force_);
     }
   }
+  template <bool One = false>
   [[gnu::always_inline]] void plant_derivatives(double t, std::span<const double> x, std::span<double> dx) {
-    if (single_) {
+    if (One || single_) {
       single_->derivatives(t, x, u_[0], friction_[0], dx);
     } else {
       plant_.derivatives(t, x, u_, friction_, dx);
     }
   }
+  template <bool One = false>
   [[gnu::always_inline]] void plant_signals(double t, std::span<const double> x) {
-    if (single_) {
+    if (One || single_) {
       signals_[0] = single_->signals(t, x, u_[0]);
     } else {
       plant_.signals(t, x, u_, signals_);
@@ -289,15 +315,18 @@ class Engine {
 
   // The effective plant state: y itself, or a copy in scratch_ with the frozen positions and zero
   // velocities of stuck bodies, or the imposed velocity of a velocity drive. Inputs evaluated.
+  template <bool One = false>
   [[gnu::always_inline]] std::span<const double> effective_state(const double* y) {
     if (stuck_count_ == 0 && !kinematic_) return {y, static_cast<std::size_t>(np_)};
     std::copy(y, y + np_, scratch_.begin());  // the plant's states (law states are read from y)
     if (stuck_count_ > 0)
-      for (const Body& b : bodies_)
+      for (std::size_t k = 0; k < contacts<One>(); ++k) {
+        const Body& b = bodies_[k];
         if (b.mode == Mode::stuck) {
           scratch_[static_cast<std::size_t>(b.pos)] = b.stuck_position;
           scratch_[static_cast<std::size_t>(b.vel)] = 0.0;
         }
+      }
     if (kinematic_) scratch_[1] = u_[0].value;
     return {scratch_.data(), static_cast<std::size_t>(np_)};
   }
@@ -316,14 +345,30 @@ class Engine {
     return b.law->sliding(v);
   }
 
+  // Calls f(std::true_type{}) for a 1-DOF plant, else f(std::false_type{}): picks the compiled
+  // form of a hot path.
+  template <class F>
+  [[gnu::always_inline]] void in_form(F&& f) {
+    if (one_) {
+      f(std::true_type{});
+    } else {
+      f(std::false_type{});
+    }
+  }
+
   void rhs(double t, const double* y, double* dy) {
-    eval_inputs(t);
-    const auto x = effective_state(y);
+    in_form([&](auto one) { rhs_t<decltype(one)::value>(t, y, dy); });
+  }
+  template <bool One>
+  void rhs_t(double t, const double* y, double* dy) {
+    eval_inputs<One>(t);
+    const auto x = effective_state<One>(y);
     std::span<double> dx(dy, static_cast<std::size_t>(np_));
-    if (stuck_count_ > 0) plant_applied(t, x);
-    for (std::size_t k = 0; k < bodies_.size(); ++k) friction_[k] = friction_of(bodies_[k], x, y);
-    plant_derivatives(t, x, dx);
-    for (const Body& b : bodies_) {
+    if (stuck_count_ > 0) plant_applied<One>(t, x);
+    for (std::size_t k = 0; k < contacts<One>(); ++k) friction_[k] = friction_of(bodies_[k], x, y);
+    plant_derivatives<One>(t, x, dx);
+    for (std::size_t k = 0; k < contacts<One>(); ++k) {
+      const Body& b = bodies_[k];
       if (b.mode == Mode::stuck) {
         dx[static_cast<std::size_t>(b.pos)] = 0.0;
         dx[static_cast<std::size_t>(b.vel)] = 0.0;
@@ -337,21 +382,25 @@ class Engine {
   // Root functions: two per contact when any contact has hybrid modes (stuck: applied minus each
   // breakaway level; sliding: v; no modes: constant), then the plant's own.
   void roots(double t, const double* y, double* g) {
+    in_form([&](auto one) { roots_t<decltype(one)::value>(t, y, g); });
+  }
+  template <bool One>
+  void roots_t(double t, const double* y, double* g) {
     // Sliding bodies need only their velocity: the inputs and the plant are evaluated only when a
     // body is stuck or the plant has event functions (most root evaluations happen while sliding).
     if (stuck_count_ == 0 && ne_ == 0) {
-      for (std::size_t k = 0; k < bodies_.size(); ++k) {
+      for (std::size_t k = 0; k < contacts<One>(); ++k) {
         const Body& b = bodies_[k];
         g[2 * k] = b.hybrid ? y[b.vel] : 1.0;
         g[2 * k + 1] = 1.0;  // unused in a sliding mode
       }
       return;
     }
-    eval_inputs(t);
-    const auto x = effective_state(y);
+    eval_inputs<One>(t);
+    const auto x = effective_state<One>(y);
     if (hybrid_) {
-      if (stuck_count_ > 0) plant_applied(t, x);
-      for (std::size_t k = 0; k < bodies_.size(); ++k) {
+      if (stuck_count_ > 0) plant_applied<One>(t, x);
+      for (std::size_t k = 0; k < contacts<One>(); ++k) {
         const Body& b = bodies_[k];
         if (b.mode == Mode::stuck) {
           g[2 * k] = force_[k] - b.fbp;
@@ -378,11 +427,14 @@ class Engine {
       return -1;
     }
   }
+  // CVODE's vectors here are all serial ones (clones of sd_.y): NV_DATA_S reads their data
+  // pointer in place, where N_VGetArrayPointer is a call through the vector's operations, on
+  // every callback.
   static int rhs_cb(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
-    return guarded(user, [&](Engine* self) { self->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot)); });
+    return guarded(user, [&](Engine* self) { self->rhs(t, NV_DATA_S(y), NV_DATA_S(ydot)); });
   }
   static int roots_cb(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
-    return guarded(user, [&](Engine* self) { self->roots(t, N_VGetArrayPointer(y), g); });
+    return guarded(user, [&](Engine* self) { self->roots(t, NV_DATA_S(y), g); });
   }
   // The analytic Newton matrix (dense, column-major) of the free motion with dynamic laws.
   static int jac_cb(sunrealtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix J, void* user, N_Vector, N_Vector,
@@ -390,7 +442,7 @@ class Engine {
     return guarded(user, [&](Engine* self) {
       const auto n = static_cast<std::size_t>(self->n_);
       self->eval_inputs(t);
-      self->system_->jacobian(t, std::span<const double>(N_VGetArrayPointer(y), n), Inputs(self->u_),
+      self->system_->jacobian(t, std::span<const double>(NV_DATA_S(y), n), Inputs(self->u_),
                               std::span<double>(SM_DATA_D(J), n * n));
     });
   }
@@ -404,7 +456,67 @@ class Engine {
   // One output row from the integrator state y at time t. Flattened (every call it makes that can
   // be inlined is): it runs once per output row, and the compiler otherwise leaves each column's
   // push_back and the input's evaluation as calls.
-  [[gnu::flatten]] void record(Trajectory& tr, double t, const double* y) {
+  void record(Trajectory& tr, double t, const double* y) {
+    if (one_) {
+      record_one(tr, t, y);
+    } else {
+      record_all(tr, t, y);
+    }
+  }
+
+  // A 1-DOF plant's row, into the batch of the trajectory's own columns (law states straight into
+  // theirs): the plant's scalar methods into locals, no per-contact tables.
+  [[gnu::flatten]] void record_one(Trajectory& tr, double t, const double* y) {
+    eval_inputs<true>(t);
+    const auto x = effective_state<true>(y);
+    const Body& b = bodies_[0];
+    const InputValue& u = u_[0];
+    double a = single_->applied(t, x, u);
+    PlantSignals s = single_->signals(t, x, u);
+    const double v = x[static_cast<std::size_t>(b.vel)];
+    double f;
+    switch (b.mode) {
+      case Mode::stuck: f = a; break;
+      case Mode::slide_pos: f = slide_force(b, v, 1); break;
+      case Mode::slide_neg: f = slide_force(b, v, -1); break;
+      case Mode::free:
+      default:
+        f = b.nz > 0 ? b.law->force(std::span<const double>(y + b.z, static_cast<std::size_t>(b.nz)), v) : b.law->sliding(v);
+    }
+    if (kinematic_) a += f, s.drive += f;  // the drive supplies the friction too
+    batch_.add({t, x[static_cast<std::size_t>(b.pos)], v, f, a, s.current, s.voltage, s.reference, s.drive,
+                b.mode == Mode::stuck ? 1.0 : 0.0});
+    for (int i = 0; i < b.nz; ++i) tr.law_state[static_cast<std::size_t>(i)].push_back(y[b.z + i]);
+    if (batch_.full()) batch_.flush(tr);
+  }
+
+  // Rows of a 1-DOF trajectory gathered kRows at a time and appended to its columns with one
+  // insert per column: a push_back per column and row (a capacity check and a size update each)
+  // cost as much as the rest of recording a row.
+  class RowBatch {
+   public:
+    // time, position, velocity, friction, applied, current, voltage, reference, drive, stuck
+    static constexpr std::size_t kColumns = 10;
+    static constexpr std::size_t kRows = 256;
+    [[gnu::always_inline]] void add(const std::array<double, kColumns>& row) {
+      for (std::size_t c = 0; c < kColumns; ++c) rows_[c][n_] = row[c];
+      ++n_;
+    }
+    bool full() const { return n_ == kRows; }
+    // Appends the gathered rows to tr's own columns (call once more at the end of a run).
+    void flush(Trajectory& tr) {
+      std::vector<double>* columns[kColumns] = {&tr.time,    &tr.position, &tr.velocity,  &tr.friction, &tr.applied,
+                                                &tr.current, &tr.voltage,  &tr.reference, &tr.drive,    &tr.stuck};
+      for (std::size_t c = 0; c < kColumns; ++c) columns[c]->insert(columns[c]->end(), rows_[c], rows_[c] + n_);
+      n_ = 0;
+    }
+
+   private:
+    double rows_[kColumns][kRows];
+    std::size_t n_ = 0;
+  };
+
+  [[gnu::flatten]] void record_all(Trajectory& tr, double t, const double* y) {
     eval_inputs(t);
     const auto x = effective_state(y);
     plant_applied(t, x);
@@ -534,16 +646,18 @@ class Engine {
     throw std::runtime_error("simulation failed at t = " + detail::format_value(t) + " s: " + why);
   }
 
-  // Initial state: the plant's extras, each contact's position and velocity from the options
-  // (a velocity drive: its input), law states 0.
+  // Initial state: each contact's position and velocity from the options (a velocity drive: its
+  // input), then the plant's extras from them and the inputs at t = 0 (so a controller's or an
+  // observer's states start consistent with the measurement and the reference), law states 0.
   void initial_state(double* y) {
     std::fill(y, y + n_, 0.0);
-    plant_.initial_extras(std::span<double>(y, static_cast<std::size_t>(np_)));
     for (std::size_t k = 0; k < bodies_.size(); ++k) {
       y[bodies_[k].pos] = o_.initial_positions.empty() ? o_.initial_position : o_.initial_positions[k];
       y[bodies_[k].vel] = o_.initial_velocities.empty() ? o_.initial_velocity : o_.initial_velocities[k];
     }
-    if (kinematic_) y[1] = inputs_[0].at(0.0).value;
+    eval_inputs(0.0);
+    if (kinematic_) y[1] = u_[0].value;
+    plant_.initial_extras(std::span<double>(y, static_cast<std::size_t>(np_)), u_);
   }
 
   void run_cvode(Trajectory& tr, std::size_t rows) {
@@ -690,6 +804,7 @@ class Engine {
       }
       record(tr, tout, y);
     }
+    if (one_) batch_.flush(tr);
     accumulate_stats();
     tr.stats.steps = steps_;
     tr.stats.rhs_evaluations = rhs_evals_;
@@ -803,6 +918,14 @@ class Engine {
       eval_inputs(0.0);
       plant_.events(0.0, x, u_, g_prev_);
     }
+    // The plant's own fixed-step update: the state and inputs at each step's start are kept for it.
+    const bool own_update = plant_.has_fixed_step_update();
+    std::vector<double> before;
+    std::vector<InputValue> u_before;
+    if (own_update) {
+      before.reserve(static_cast<std::size_t>(np_));
+      u_before.reserve(u_.size());
+    }
     long step = 0;
     for (std::size_t k = 0; k < rows; ++k) {
       // Advance to the row's step count, then record the state there.
@@ -811,6 +934,7 @@ class Engine {
         const double t = static_cast<double>(step) * dt;
         eval_inputs(t);
         if (kinematic_) x[1] = u_[0].value;
+        if (own_update) before.assign(x.begin(), x.end());
         if (any_static) plant_applied(t, x);
         for (std::size_t c = 0; c < bodies_.size(); ++c) {
           const Body& b = bodies_[c];
@@ -834,6 +958,14 @@ class Engine {
         }
         for (int i : extras_) x[static_cast<std::size_t>(i)] += dt * dx[static_cast<std::size_t>(i)];
         ++step;
+        if (own_update) {
+          // The plant's own rule for some of its states (a compensator's exact update), from the
+          // state and inputs at the step's start.
+          u_before.assign(u_.begin(), u_.end());
+          const double t_end = static_cast<double>(step) * dt;
+          eval_inputs(t_end);
+          plant_.fixed_step_update(t_end, dt, before, u_before, x, u_);
+        }
         if (per_sample > 0 && step % per_sample == 0) {
           const double ts = static_cast<double>(step / per_sample) * sample_period_;
           eval_inputs(ts);
@@ -869,6 +1001,8 @@ class Engine {
 
   const Plant& plant_;
   const SingleContactPlant* single_;  // the plant as a 1-DOF one, or null
+  bool one_ = false;             // 1-DOF plant: the One = true forms of the hot paths
+  bool constant_inputs_ = false;  // every input constant: u_ evaluated once
   std::span<const InputSignal> inputs_;
   const SimulationOptions& o_;
   SolverMode mode_;
@@ -884,6 +1018,7 @@ class Engine {
   std::vector<double> force_;       // applied force on each contact
   std::vector<double> friction_;    // friction on each contact
   std::vector<PlantSignals> signals_;
+  RowBatch batch_;  // rows of a 1-DOF plant not yet in the trajectory (record_one)
   std::vector<int> found_, dirs_;   // root information and directions (nroots_)
   std::vector<double> g_prev_, g_now_;  // plant event functions (fixed-step mode)
   std::vector<double> scratch_;

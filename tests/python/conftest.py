@@ -1,4 +1,4 @@
-"""Shared fixtures of the Python tests: paths to the bundled data and examples."""
+"""Shared fixtures of the Python tests: paths to the bundled data and examples, and the command line."""
 import os
 import pathlib
 
@@ -34,3 +34,15 @@ def emps_pulses():
 @pytest.fixture(scope="session")
 def example():
     return lambda name: SOURCE_DIR / "examples" / f"{name}.yaml"
+
+
+@pytest.fixture(scope="session")
+def cli():
+    """Path of the built `frictionlab` command line: $FRICTIONLAB_CLI, else
+    $FRICTIONLAB_BUILD_DIR/app/frictionlab (set by ctest), else <source>/build/app/frictionlab.
+    Skips the test when there is none."""
+    build = pathlib.Path(os.environ.get("FRICTIONLAB_BUILD_DIR", SOURCE_DIR / "build"))
+    path = pathlib.Path(os.environ.get("FRICTIONLAB_CLI", build / "app" / "frictionlab"))
+    if not path.exists():
+        pytest.skip(f"frictionlab CLI not found at {path} (set FRICTIONLAB_CLI)")
+    return str(path)

@@ -64,10 +64,10 @@ def array_calls(idim_ok, emps, source_dir):
 # Public functions whose arguments are a path or a scenario (not arrays): name -> argument.
 PATH_CALLS = {"load": "path", "load_law": "path", "sha256_file": "path", "simulate": "scenario", "export_c": "model"}
 # Public names that take no array: result and option classes (made by the package or with no
-# arguments), the version, the list of law names. FrictionLaw's dict is tested on its own below.
+# arguments), the version, the lists of law names and of methods. FrictionLaw's dict is tested on its own below.
 NO_ARRAYS = {"ArgumentTypeError", "BreakawayOptions", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
              "FitFigures", "IdimOptions", "Parameter", "Result", "StaticFit", "StaticFitOptions", "StickSlipOptions",
-             "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__", "law_names", "Data",
+             "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__", "law_names", "methods", "Data",
              "Scenario", "FrictionLaw"}
 ARRAY_FUNCTIONS = {"identify_idim", "idim_regression", "cross_test", "idim_reconstruction", "identify_breakaway",
                    "identify_sweep", "sweep_points", "identify_decay", "identify_lugre", "fit_static_law",

@@ -2,9 +2,8 @@
 same answers, so that the ratios bench/compare prints compare equal work. Fast (a few seconds);
 timings are never asserted here.
 
-frictionlab's side: the command-line tool, located by the environment variable FRICTIONLAB_CLI
-(path of the built `frictionlab` binary), else $FRICTIONLAB_BUILD_DIR/app/frictionlab (set by
-ctest), else <source>/build/app/frictionlab; the Stribeck fit
+frictionlab's side: the command-line tool (the `cli` fixture of conftest.py: $FRICTIONLAB_CLI,
+else $FRICTIONLAB_BUILD_DIR/app/frictionlab, set by ctest); the Stribeck fit
 through the Python module (fit_static_law). Peers run in this interpreter (needs scipy: skipped
 without it)."""
 import csv
@@ -34,18 +33,10 @@ STICK_SLIP_REL_TOL = 1e-3
 STRIBECK_REL_TOL = 1e-5
 
 
-def cli():
-    build = pathlib.Path(os.environ.get("FRICTIONLAB_BUILD_DIR", SOURCE / "build"))
-    path = pathlib.Path(os.environ.get("FRICTIONLAB_CLI", build / "app" / "frictionlab"))
-    if not path.exists():
-        pytest.skip(f"frictionlab CLI not found at {path} (set FRICTIONLAB_CLI)")
-    return str(path)
-
-
-def test_emps_idim_parameters_agree():
+def test_emps_idim_parameters_agree(cli):
     import emps_idim
 
-    out = subprocess.run([cli(), "identify", "idim", str(SOURCE / "data" / "emps" / "DATA_EMPS.mat"), "--time", "t",
+    out = subprocess.run([cli, "identify", "idim", str(SOURCE / "data" / "emps" / "DATA_EMPS.mat"), "--time", "t",
                           "--position", "qm", "--input", "vir", "--gain", "gtau", "--json", "-"],
                          stdout=subprocess.PIPE, text=True, check=True).stdout
     fl = json.loads(out)
@@ -57,11 +48,11 @@ def test_emps_idim_parameters_agree():
     assert fl["fit"]["relative_error_percent"] == pytest.approx(rel, rel=IDIM_REL_TOL)
 
 
-def test_canudas_stick_slip_period_and_peak_agree(tmp_path):
+def test_canudas_stick_slip_period_and_peak_agree(cli, tmp_path):
     import canudas_stick_slip as peer
 
     csv_path = tmp_path / "canudas.csv"
-    subprocess.run([cli(), "simulate", str(SOURCE / "examples" / "canudas_stick_slip.yaml"), "-o", str(csv_path)],
+    subprocess.run([cli, "simulate", str(SOURCE / "examples" / "canudas_stick_slip.yaml"), "-o", str(csv_path)],
                    check=True, stdout=subprocess.DEVNULL)
     with open(csv_path) as f:
         rows = list(csv.DictReader(f))
@@ -113,16 +104,16 @@ LUGRE_REL_TOL = 2e-3
 LUGRE_START_REL_TOL = 1e-9
 
 
-def test_lugre_fit_parameters_agree(tmp_path):
+def test_lugre_fit_parameters_agree(cli, tmp_path):
     import lugre_fit as peer
 
     scenario, record, static = tmp_path / "lugre.yaml", tmp_path / "lugre.csv", tmp_path / "static.json"
     common.lugre_scenario_yaml(scenario)
-    subprocess.run([cli(), "simulate", str(scenario), "-o", str(record)], check=True, stdout=subprocess.DEVNULL)
+    subprocess.run([cli, "simulate", str(scenario), "-o", str(record)], check=True, stdout=subprocess.DEVNULL)
     L = common.LUGRE
     static.write_text(json.dumps({"law": "stribeck", "Fc": L["Fc"], "Fs": L["Fs"], "vs": L["vs"], "delta": L["delta"],
                                   "Fv": L["s2"]}))
-    out = subprocess.run([cli(), "identify", "lugre", str(record), "--force", "applied", "--inertia", str(L["M"]),
+    out = subprocess.run([cli, "identify", "lugre", str(record), "--force", "applied", "--inertia", str(L["M"]),
                           "--static", str(static), "--json", "-"], stdout=subprocess.PIPE, text=True, check=True).stdout
     fl = json.loads(out)
     assert fl["status"] == "ok", fl["message"]

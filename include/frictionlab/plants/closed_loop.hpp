@@ -51,9 +51,11 @@ struct ControllerParams {
 /// acceleration dr/dt) and its reference position is the measured one (no position error). Its
 /// drive input is the inner plant's drive signal at the saturated output (the force applied).
 /// Its event functions are the loop's own (Plant::num_events, events, on_event), so the engine
-/// locates its switches. Its initial states come from rest at x = 0 with a zero reference
-/// (initial_extras sees neither the initial position and velocity nor the input); see each
-/// compensator for how it recovers when the run starts elsewhere.
+/// locates its switches. Its initial states come from the initial position and velocity and the
+/// reference at t = 0 (initial_extras with the inputs; without them: from rest at x = 0 with a
+/// zero reference). In fixed-step mode its states advance by the compensator's own fixed-step
+/// update (Compensator::update, what a drive runs, stable at any step), with the drive force held
+/// over the step, instead of explicit Euler.
 class ClosedLoop : public SingleContactPlant {
  public:
   /// \throws std::invalid_argument when a gain is negative or not finite, Kd != 0 in a velocity
@@ -65,6 +67,11 @@ class ClosedLoop : public SingleContactPlant {
   int num_states() const override { return n_inner_ + 1 + n_comp_; }
   double inertia(int = 0) const override { return inner_->inertia(); }
   void initial_extras(std::span<double> x) const override;
+  void initial_extras(std::span<double> x, Inputs u) const override;
+  /// True with a compensator that has states.
+  bool has_fixed_step_update() const override { return n_comp_ > 0; }
+  void fixed_step_update(double t, double dt, std::span<const double> before, Inputs u_before, std::span<double> x,
+                         Inputs u) const override;
   double applied(double t, std::span<const double> x, const InputValue& r) const override;
   void derivatives(double t, std::span<const double> x, const InputValue& r, double friction,
                    std::span<double> dx) const override;

@@ -60,8 +60,13 @@ class Plant {
   /// `applied` is the force the drive supplies. The engine then never sticks the body.
   virtual bool kinematic() const { return false; }
   /// Sets the initial values of the states that are not a contact's position or velocity (those
-  /// are set by the caller). Default 0.
+  /// are set by the caller). Default 0. The engine calls the overload with the inputs below.
   virtual void initial_extras(std::span<double> x) const;
+  /// The same at the start of a run, given what the plant's own states may need to start
+  /// consistent with (a controller's or an observer's states: with the measurement and the
+  /// reference): x holds every contact's initial position and velocity already, u the inputs at
+  /// t = 0 (value, rate and acceleration). The engine calls this one. Default: initial_extras(x).
+  virtual void initial_extras(std::span<double> x, Inputs u) const;
 
   /// Net non-friction force on each contact's body (N or N m) at time t (s), state x and inputs u;
   /// friction balances it while stuck. Contract: contact i obeys M_i dv_i/dt = applied_i - F_i,
@@ -108,6 +113,20 @@ class Plant {
   /// At event k (located at time t): may rewrite the plant's own discrete states in x (never a
   /// contact's position or velocity). Default: nothing.
   virtual void on_event(double t, std::span<double> x, Inputs u, int k) const;
+
+  /// True when the plant advances some of its own states by a discrete rule of its own in
+  /// fixed-step mode (fixed_step_update). Asked once per run. Default false.
+  virtual bool has_fixed_step_update() const { return false; }
+  /// Fixed-step mode: the plant's own update over the step of dt seconds that ends at time t (s).
+  /// `before` is the state at t - dt and `u_before` the inputs there (what was held over the
+  /// step); x is the state at t after the engine's step of every state (symplectic Euler for the
+  /// contacts, explicit Euler for the other states) and u the inputs at t. The plant rewrites in
+  /// x the states it advances itself, from their values in `before` (a compensator's fixed-step
+  /// form, what a drive runs, stable at any dt where explicit Euler is not), never a contact's
+  /// position or velocity. Called only when has_fixed_step_update(); before sample() and the
+  /// event check at t. Default: nothing.
+  virtual void fixed_step_update(double t, double dt, std::span<const double> before, Inputs u_before,
+                                 std::span<double> x, Inputs u) const;
 };
 
 /// Convenience base of a 1-DOF plant: one contact at x[0], x[1], one input. It implements the

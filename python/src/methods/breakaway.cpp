@@ -1,0 +1,30 @@
+// frictionlab.identify_breakaway: the torque-mode trapezoid experiment. Binds BreakawayOptions
+// and _identify_breakaway (the keyword API is python/frictionlab/identify.py).
+#include "frictionlab/identify/breakaway.hpp"
+
+#include "method.hpp"
+
+namespace frictionlab::python {
+namespace {
+
+void bind(py::module_& m) {
+  auto brk_opts = py::class_<BreakawayOptions>(m, "BreakawayOptions", "Options of identify_breakaway.");
+  brk_opts.def(py::init<>())
+      .def_readwrite("inertia", &BreakawayOptions::inertia, "Inertia held fixed, kg m^2 or kg (NaN: estimated as M).")
+      .def_readwrite("velocity_threshold", &BreakawayOptions::velocity_threshold, "|v| above which the axis moves, rad/s or m/s (NaN: 1 % of max |v|).")
+      .def_readwrite("edge_samples", &BreakawayOptions::edge_samples, "Samples skipped at each end of a sliding interval (2).");
+  axis_property(brk_opts);
+
+  m.def("_identify_breakaway", [](py::object time, py::object force, py::object velocity, const BreakawayOptions& o) {
+    const auto [t, f, v] = time_force_velocity("identify_breakaway", time, force, velocity);
+    const BreakawayData d{t, f, v};
+    py::gil_scoped_release release;
+    return identify_breakaway(d, o);
+  });
+}
+
+}  // namespace
+
+PyMethod breakaway_binding() { return {"breakaway", "identify_breakaway", bind}; }
+
+}  // namespace frictionlab::python

@@ -1,0 +1,97 @@
+// frictionlab.identify_idim: inverse dynamic model least squares on a trajectory. Binds
+// IdimOptions, idim_rate_defaults, _identify_idim, _cross_test and _idim_regression (the keyword
+// API is python/frictionlab/identify.py).
+#include "frictionlab/identify/idim.hpp"
+
+#include "method.hpp"
+
+namespace frictionlab::python {
+namespace {
+
+IdimData idim_data(const char* function, const py::object& time, const py::object& force, const py::object& position,
+                   const py::object& velocity, const std::string& file, const std::string& sha256) {
+  IdimData d;
+  d.time = vector_arg(time, function, "time");
+  d.force = vector_arg(force, function, "force");
+  ArraySpec optional;
+  optional.optional = true;
+  d.position = vector_arg(position, function, "position", optional);
+  d.velocity = vector_arg(velocity, function, "velocity", optional);
+  same_length(function, {{"time", d.time.size()}, {"force", d.force.size()}, {"position", d.position.size()},
+                         {"velocity", d.velocity.size()}});
+  d.file = file;
+  d.sha256 = sha256;
+  return d;
+}
+
+void bind(py::module_& m) {
+  auto idim_opts = py::class_<IdimOptions>(m, "IdimOptions", "Options of identify_idim; defaults are the EMPS recipe.");
+  idim_opts.def(py::init<>())
+      .def_readwrite("terms", &IdimOptions::terms, "Regressor terms in column order: inertia, viscous, coulomb, offset, asymmetric, "
+                                                   "viscous_pos, coulomb_pos, viscous_neg, coulomb_neg, stribeck.")
+      .def_readwrite("cutoff_hz", &IdimOptions::cutoff_hz, "Position low-pass cut-off, Hz (100).")
+      .def_readwrite("filter_order", &IdimOptions::filter_order, "Butterworth order (4).")
+      .def_readwrite("padlen", &IdimOptions::padlen, "Odd padding of the zero-phase filter, samples (12).")
+      .def_readwrite("input_delay", &IdimOptions::input_delay, "Samples the applied force lags the recorded input (0; EMPS: 1).")
+      .def_readwrite("skip", &IdimOptions::skip, "Samples dropped at the start (49).")
+      .def_readwrite("skip_end", &IdimOptions::skip_end, "Samples dropped at the end (0).")
+      .def_readwrite("decimation", &IdimOptions::decimation, "Decimation factor (10; 1 = none).")
+      .def_readwrite("auto_cutoff", &IdimOptions::auto_cutoff,
+                     "Take cutoff_hz from the sample rate fs: min(100 Hz, fs/10) (False).")
+      .def_readwrite("auto_decimation", &IdimOptions::auto_decimation,
+                     "Take decimation from fs: floor(fs/100 Hz), 1 to 10 (False).")
+      .def_readwrite("auto_skip", &IdimOptions::auto_skip,
+                     "Take skip from fs: five periods of the cut-off less one sample (False).")
+      .def_readwrite("stribeck_vs", &IdimOptions::stribeck_vs, "Stribeck velocity of the stribeck term, m/s or rad/s (0.01).")
+      .def_readwrite("search_stribeck_vs", &IdimOptions::search_stribeck_vs, "Search the Stribeck velocity (False).")
+      .def_readwrite("stribeck_delta", &IdimOptions::stribeck_delta, "Stribeck exponent (2).")
+      .def_readwrite("min_velocity", &IdimOptions::min_velocity, "No excitation at or below this max |qd|, m/s or rad/s (0).")
+      .def_readwrite("max_condition", &IdimOptions::max_condition, "Largest condition number accepted (1e8).");
+  axis_property(idim_opts);
+  m.def(
+      "idim_rate_defaults",
+      [](double sample_rate_hz) {
+        const IdimRateDefaults d = idim_rate_defaults(sample_rate_hz);
+        py::dict out;
+        out["cutoff_hz"] = d.cutoff_hz;
+        out["decimation"] = d.decimation;
+        out["skip"] = d.skip;
+        return out;
+      },
+      py::arg("sample_rate_hz"),
+      "The idim cut-off (Hz), decimation and skip (samples) chosen from the sample rate fs (Hz): "
+      "min(100 Hz, fs/10), clamp(floor(fs/100 Hz), 1, 10), round(5 fs/cutoff) - 1; exactly the EMPS "
+      "recipe (100 Hz, 10, 49) at 1 kHz. Raises ValueError when fs is not a positive finite number.");
+
+  m.def("_identify_idim", [](py::object time, py::object force, py::object position, py::object velocity,
+                             const IdimOptions& o, const std::string& file, const std::string& sha256) {
+    const IdimData d = idim_data("identify_idim", time, force, position, velocity, file, sha256);
+    py::gil_scoped_release release;
+    return identify_idim(d, o);
+  });
+  m.def("_cross_test", [](const Result& r, py::object time, py::object force, py::object position, py::object velocity,
+                          const IdimOptions& o, const std::string& file, const std::string& sha256) {
+    const IdimData d = idim_data("cross_test", time, force, position, velocity, file, sha256);
+    py::gil_scoped_release release;
+    return cross_test(r, d, o);
+  });
+  m.def("_idim_regression", [](py::object time, py::object force, py::object position, py::object velocity,
+                               const IdimOptions& o) {
+    const IdimRegression reg = idim_regression(idim_data("idim_regression", time, force, position, velocity, "", ""), o);
+    py::dict d;
+    d["X"] = reg.X;
+    d["y"] = reg.y;
+    py::list names;
+    for (const auto& t : reg.terms) names.append(t.parameter);
+    d["parameters"] = names;
+    d["dt"] = reg.dt;
+    d["max_speed"] = reg.max_speed;
+    return d;
+  });
+}
+
+}  // namespace
+
+PyMethod idim_binding() { return {"idim", "identify_idim", bind}; }
+
+}  // namespace frictionlab::python
