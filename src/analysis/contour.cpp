@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -61,13 +62,9 @@ QuadrantGlitch glitch_at(double reversal_deg, const std::vector<std::size_t>& in
   return g;
 }
 
-}  // namespace
-
-std::array<double, 3> fit_circle(std::span<const double> x, std::span<const double> y) {
-  if (x.size() != y.size())
-    throw std::invalid_argument("fit_circle: x has " + std::to_string(x.size()) + " points but y has " +
-                                std::to_string(y.size()));
-  if (x.size() < 3) throw std::invalid_argument("fit_circle: needs at least 3 points, got " + std::to_string(x.size()));
+// The algebraic least-squares circle {cx, cy, R}, or nothing when the points fix none (collinear,
+// coincident). x and y have one length, at least 3.
+std::optional<std::array<double, 3>> circle_fit(std::span<const double> x, std::span<const double> y) {
   const Eigen::Index n = static_cast<Eigen::Index>(x.size());
   // About the mean point, so that a small circle far from the origin stays well conditioned.
   double mx = 0, my = 0;
@@ -80,13 +77,41 @@ std::array<double, 3> fit_circle(std::span<const double> x, std::span<const doub
     A.row(i) << u, v, 1.0;
     b(i) = -(u * u + v * v);
   }
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
-  if (qr.rank() < 3) throw std::invalid_argument("fit_circle: the points are collinear or coincide: no circle");
+  // Points on a line leave the x and y columns dependent up to roundoff: a pivot below 1e-10 of
+  // the largest counts as zero (a circle of radius R m below 1 m has pivots about R / sqrt(2) of the
+  // largest, the column of ones: far above for any machine's circle).
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A.rows(), A.cols());
+  qr.setThreshold(1e-10);
+  qr.compute(A);
+  if (qr.rank() < 3) return std::nullopt;
   const Eigen::Vector3d p = qr.solve(b);
   const double cu = -p(0) / 2, cv = -p(1) / 2, r2 = cu * cu + cv * cv - p(2);
-  if (!(r2 > 0)) throw std::invalid_argument("fit_circle: the points do not lie on a circle");
-  return {cu + mx, cv + my, std::sqrt(r2)};
+  if (!(r2 > 0)) return std::nullopt;
+  return std::array<double, 3>{cu + mx, cv + my, std::sqrt(r2)};
 }
+
+}  // namespace
+
+void ContourOptions::validate() const {
+  if (centre && (!std::isfinite((*centre)[0]) || !std::isfinite((*centre)[1])))
+    throw std::invalid_argument("contour: centre must be finite (m), got (" + format_number((*centre)[0]) + ", " +
+                                format_number((*centre)[1]) + ")");
+  if (!std::isnan(radius) && !(radius > 0 && std::isfinite(radius)))
+    throw std::invalid_argument("contour: radius must be a positive number of m, got " + format_number(radius));
+  if (!(extent_fraction > 0 && extent_fraction < 1))
+    throw std::invalid_argument("contour: extent fraction must be in (0, 1), got " + format_number(extent_fraction));
+}
+
+std::array<double, 3> fit_circle(std::span<const double> x, std::span<const double> y) {
+  if (x.size() != y.size())
+    throw std::invalid_argument("fit_circle: x has " + std::to_string(x.size()) + " points but y has " +
+                                std::to_string(y.size()));
+  if (x.size() < 3) throw std::invalid_argument("fit_circle: needs at least 3 points, got " + std::to_string(x.size()));
+  const auto c = circle_fit(x, y);
+  if (!c) throw std::invalid_argument("fit_circle: the points are collinear or coincide: no circle");
+  return *c;
+}
+
 
 ContourResult analyze_contour(std::span<const double> t, std::span<const double> x, std::span<const double> y,
                               std::span<const double> xr, std::span<const double> yr, const ContourOptions& options) {
@@ -111,14 +136,7 @@ ContourResult analyze_contour(std::span<const double> t, std::span<const double>
     if (!(t[i] > t[i - 1]))
       throw std::invalid_argument("contour: time must increase strictly; sample " + std::to_string(i + 1) + " (" +
                                   format_number(t[i]) + " s) does not");
-  if (options.centre && (!std::isfinite((*options.centre)[0]) || !std::isfinite((*options.centre)[1])))
-    throw std::invalid_argument("contour: centre must be finite (m)");
-  if (!std::isnan(options.radius) && !(options.radius > 0 && std::isfinite(options.radius)))
-    throw std::invalid_argument("contour: radius must be a positive number of m, got " +
-                                format_number(options.radius));
-  if (!(options.extent_fraction > 0 && options.extent_fraction < 1))
-    throw std::invalid_argument("contour: extent fraction must be in (0, 1), got " +
-                                format_number(options.extent_fraction));
+  options.validate();
 
   ContourResult r;
   const bool given_radius = !std::isnan(options.radius);
@@ -127,13 +145,11 @@ ContourResult analyze_contour(std::span<const double> t, std::span<const double>
   } else {
     r.centre_source = reference ? "reference" : "fit";
     const std::span<const double> px = reference ? xr : x, py = reference ? yr : y;
-    std::array<double, 3> fit{};
-    try {
-      fit = fit_circle(px, py);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(std::string("contour: ") + (reference ? "reference" : "measured path") + ": " +
-                                  (e.what() + std::string("fit_circle: ").size()));
-    }
+    const auto fitted = circle_fit(px, py);
+    if (!fitted)
+      throw std::invalid_argument(std::string("contour: the ") + (reference ? "reference" : "measured path") +
+                                  " lies on a line or a point: no circle to measure against");
+    const std::array<double, 3> fit = *fitted;
     if (reference) {
       double dev = 0;
       for (std::size_t i = 0; i < n; ++i) dev = std::max(dev, std::abs(std::hypot(xr[i] - fit[0], yr[i] - fit[1]) - fit[2]));

@@ -155,4 +155,12 @@ TEST(Contour, RefusesBadInput) {
   o.radius = -1;
   EXPECT_EQ(error_of([&] { analyze_contour(rec.t, rec.x, rec.y, {}, {}, o); }),
             "contour: radius must be a positive number of m, got -1");
+  o = ContourOptions{};
+  o.extent_fraction = 1.0;
+  EXPECT_EQ(error_of([&] { analyze_contour(rec.t, rec.x, rec.y, {}, {}, o); }),
+            "contour: extent fraction must be in (0, 1), got 1");
+  std::vector<double> line(rec.t.size());
+  for (std::size_t i = 0; i < line.size(); ++i) line[i] = 1e-3 * static_cast<double>(i);
+  EXPECT_EQ(error_of([&] { analyze_contour(rec.t, line, line); }),
+            "contour: the measured path lies on a line or a point: no circle to measure against");
 }

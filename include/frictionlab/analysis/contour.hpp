@@ -20,6 +20,10 @@ struct ContourOptions {
   double radius = std::numeric_limits<double>::quiet_NaN();
   /// A glitch's angular extent is where its error exceeds this fraction of its peak (0 < f < 1).
   double extent_fraction = 0.5;
+
+  /// \throws std::invalid_argument naming the field: a centre that is not finite, a radius that
+  ///         is neither NaN nor a positive finite number of m, an extent fraction outside (0, 1).
+  void validate() const;
 };
 
 /// One quadrant glitch: the radial error spike near an axis reversal.
@@ -54,9 +58,8 @@ struct ContourResult {
 /// \param t  sample times (s), strictly increasing; x, y the measured path (m); all of one length n.
 /// \param xr yr the reference path (m): both empty, or both of length n.
 /// \throws std::invalid_argument when the lengths differ, n < 20, a value is not finite (naming
-///         the signal and 1-based sample), t is not strictly increasing, the radius or centre given
-///         is not finite or the radius not positive, the extent fraction is outside (0, 1), the
-///         reference is not a circle (radial deviation above 0.1 % of its radius: use a given
+///         the signal and 1-based sample), t is not strictly increasing, the options are not valid
+///         (ContourOptions::validate), the reference is not a circle (radial deviation above 0.1 % of its radius: use a given
 ///         centre and radius for another path), the path passes through the centre, or the
 ///         measured path covers less than one turn (not a closed contour).
 ContourResult analyze_contour(std::span<const double> t, std::span<const double> x, std::span<const double> y,
