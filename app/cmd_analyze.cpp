@@ -143,7 +143,10 @@ std::string contour_text(const ContourResult& r) {
   const auto mm = [&](double m) { return n(std::abs(m) < 1e-9 ? 0.0 : m * 1e3); };
   std::ostringstream o;
   o << "circle       R " << n(r.radius * 1e3) << " mm about (" << mm(r.centre_x) << ", " << mm(r.centre_y)
-    << ") mm (from the " << (r.centre_source == "fit" ? std::string("measured path's fit") : r.centre_source)
+    << ") mm ("
+    << (r.centre_source == "given"     ? "given"
+        : r.centre_source == "reference" ? "from the reference"
+                                         : "fitted to the measured path")
     << "), " << format_number(r.turns, 3) << " turns\n"
     << "roundness    " << um(r.roundness_m) << " (max - min radial error)\n"
     << "max error    " << um(r.max_radial_error_m) << " (largest |r - R|)\n"

@@ -200,7 +200,7 @@ ContourResult analyze_contour(std::span<const double> t, std::span<const double>
   const double span = *hi - *lo;
   r.turns = span / 360.0;
   if (span + median(steps) < 360.0)
-    throw std::invalid_argument("contour: the measured path covers " + format_number(span) +
+    throw std::invalid_argument("contour: the measured path covers " + format_number(span, 4) +
                                 " deg about the centre, less than one turn: not a closed contour");
 
   std::array<std::vector<std::size_t>, 4> sector;
