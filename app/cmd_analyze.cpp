@@ -1,17 +1,22 @@
-// frictionlab analyze envelope|stick-slip DATA [--time C] [--position C] [--velocity C] [--force C]
+// frictionlab analyze envelope|stick-slip|contour DATA [--time C] [--position C] [--velocity C] [--force C]
+//                     [--x C --y C --x-reference C --y-reference C --centre X,Y --radius R]
 //                     [--json FILE|-] [--plot FILE] [--overwrite]: out through emit (output.hpp),
 //                     the one output path of identify and validate.
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <iomanip>
 #include <sstream>
 
 #include "commands.hpp"
+#include "contour_figure.hpp"
 #include "data_options.hpp"
 #include "figures.hpp"
 #include "frictionlab/io/figure.hpp"
 #include "output.hpp"
+#include "frictionlab/analysis/contour.hpp"
 #include "frictionlab/analysis/envelope.hpp"
 #include "frictionlab/analysis/stick_slip.hpp"
 #include "frictionlab/format.hpp"
@@ -25,6 +30,11 @@ struct AnalyzeArgs {
   std::string method;
   std::string data;
   std::string time = "time", position = "position", velocity = "velocity", force = "friction";
+  // contour: the measured path and its reference (xy-table columns of `frictionlab simulate`)
+  std::string x = "x.position", y = "y.position", x_reference = "x.reference", y_reference = "y.reference";
+  std::vector<double> centre;  // m, empty: from the reference or a fit
+  double radius = std::numeric_limits<double>::quiet_NaN();  // m
+  CLI::Option *x_reference_opt = nullptr, *y_reference_opt = nullptr;
   OutputOptions output;  // --json, --plot, --overwrite (no --report)
   double threshold = 0.0;
   ReadOptions read;  // --names, --resample, --max-gap, --drop-invalid
@@ -111,16 +121,65 @@ std::string stick_slip_text(const StickSlipResult& r, bool with_force) {
   return o.str();
 }
 
+nlohmann::json contour_json(const ContourResult& r) {
+  nlohmann::json glitches = nlohmann::json::array();
+  for (const auto& g : r.glitches)
+    glitches.push_back({{"reversal_deg", g.reversal_deg}, {"peak_m", num(g.peak_m)}, {"angle_deg", num(g.angle_deg)},
+                        {"extent_deg", num(g.extent_deg)}, {"time", num(g.time)}});
+  return {{"centre_m", {num(r.centre_x), num(r.centre_y)}},
+          {"radius_m", num(r.radius)},
+          {"centre_from", r.centre_source},
+          {"turns", num(r.turns)},
+          {"roundness_m", num(r.roundness_m)},
+          {"max_radial_error_m", num(r.max_radial_error_m)},
+          {"quadrant_glitches", glitches}};
+}
+
+std::string contour_text(const ContourResult& r) {
+  // Micrometres to 3 significant digits: a ballbar trace holds no more.
+  const auto um = [](double m) { return format_number(m * 1e6, 3) + " um"; };
+  const auto n = [](double x) { return format_number(x, 4); };
+  // A centre within a nanometre of an axis is on it (the roundoff of a fit is not a position).
+  const auto mm = [&](double m) { return n(std::abs(m) < 1e-9 ? 0.0 : m * 1e3); };
+  std::ostringstream o;
+  o << "circle       R " << n(r.radius * 1e3) << " mm about (" << mm(r.centre_x) << ", " << mm(r.centre_y)
+    << ") mm ("
+    << (r.centre_source == "given"     ? "given"
+        : r.centre_source == "reference" ? "from the reference"
+                                         : "fitted to the measured path")
+    << "), " << format_number(r.turns, 3) << " turns\n"
+    << "roundness    " << um(r.roundness_m) << " (max - min radial error)\n"
+    << "max error    " << um(r.max_radial_error_m) << " (largest |r - R|)\n"
+    << "quadrant glitches (peak over the local level, outward +; extent above half the peak):\n";
+  for (const auto& g : r.glitches)
+    o << "  " << std::setw(3) << g.reversal_deg << " deg    " << std::setw(9) << um(g.peak_m) << " at "
+      << format_number(g.angle_deg, 3) << " deg, extent " << format_number(g.extent_deg, 2) << " deg (t "
+      << format_number(g.time, 4) << " s)\n";
+  return o.str();
+}
+
+// diagnostics.quadrant_glitch_m (the four peaks, m, at 0, 90, 180, 270 deg) and
+// diagnostics.max_radial_error_m next to the reading notes: Diagnostics has no plain array, so
+// the section replaces "diagnostics" with the result's own diagnostics plus the array.
+void contour_diagnostics(Result& r, const ContourResult& c) {
+  r.diagnostics.numbers["max_radial_error_m"] = c.max_radial_error_m;
+  r.diagnostics.numbers["roundness_m"] = c.roundness_m;
+  nlohmann::json d = nlohmann::json::parse(to_json(r, -1))["diagnostics"];
+  d["quadrant_glitch_m"] = nlohmann::json::array();
+  for (const auto& g : c.glitches) d["quadrant_glitch_m"].push_back(num(g.peak_m));
+  r.json_sections["diagnostics"] = d.dump();
+}
+
 }  // namespace
 
 Handler register_analyze(CLI::App& app) {
   auto a = std::make_shared<AnalyzeArgs>();
   CLI::App* cmd = app.add_subcommand("analyze", "Analyse a motion record: decay envelope or stick-slip.");
   cmd->add_option("method", a->method,
-                  "envelope (free-oscillation decay) or stick-slip (exit 2 with a message when the record never "
-                  "slips)")
+                  "envelope (free-oscillation decay), stick-slip (exit 2 with a message when the record never "
+                  "slips) or contour (a two-axis circular test: radial error, quadrant glitches, roundness)")
       ->required()
-      ->check(CLI::IsMember({"envelope", "stick-slip"}));
+      ->check(CLI::IsMember({"envelope", "stick-slip", "contour"}));
   cmd->add_option("data", a->data,
                   "CSV file, with a header row (the output of `frictionlab simulate` works) or without one (see "
                   "--names), or .mat")
@@ -130,6 +189,19 @@ Handler register_analyze(CLI::App& app) {
   cmd->add_option("--velocity", a->velocity, "velocity column (stick-slip)")->capture_default_str();
   cmd->add_option("--force", a->force, "friction force column (stick-slip; optional: skipped if absent)")
       ->capture_default_str();
+  cmd->add_option("--x", a->x, "contour: measured x position column (m)")->capture_default_str();
+  cmd->add_option("--y", a->y, "contour: measured y position column (m)")->capture_default_str();
+  a->x_reference_opt = cmd->add_option("--x-reference", a->x_reference,
+                                       "contour: reference x column (m); when the file has no such column (and the "
+                                       "option is not given) the centre and radius come from a circle fit")
+                           ->capture_default_str();
+  a->y_reference_opt =
+      cmd->add_option("--y-reference", a->y_reference, "contour: reference y column (m)")->capture_default_str();
+  cmd->add_option("--centre", a->centre, "contour: centre of the nominal circle X,Y (m); default from the reference")
+      ->expected(2)
+      ->delimiter(',');
+  cmd->add_option("--radius", a->radius, "contour: radius of the nominal circle (m); default from the reference")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--threshold", a->threshold,
                   "stick-slip: |v| at or below counts as stuck (0 = automatic: exact zeros or 1 % of max |v|)");
   CLI::Option* json = cmd->add_option("--json", a->output.json, "write the result as JSON to FILE, or '-' for stdout");
@@ -161,6 +233,28 @@ Handler register_analyze(CLI::App& app) {
       r.json_sections["result"] = envelope_json(e).dump();
       if (!a->output.plot.empty()) figures.push_back({"fit", "", envelope_figure(t, x, e, name)});
       text = envelope_text(e);
+    } else if (a->method == "contour") {
+      const std::vector<double> x = column(d, a->x, "--x"), y = column(d, a->y, "--y");
+      // The reference is optional by default; asked for by name, it must be there.
+      const bool asked = a->x_reference_opt->count() > 0 || a->y_reference_opt->count() > 0;
+      std::vector<double> xr, yr;
+      if (asked || (d.has_column(a->x_reference) && d.has_column(a->y_reference))) {
+        xr = column(d, a->x_reference, "--x-reference");
+        yr = column(d, a->y_reference, "--y-reference");
+      }
+      ContourOptions o;
+      if (!a->centre.empty()) o.centre = std::array<double, 2>{a->centre[0], a->centre[1]};
+      o.radius = a->radius;
+      ContourResult c;
+      try {
+        c = analyze_contour(t, x, y, xr, yr, o);
+      } catch (const std::invalid_argument& ex) {
+        throw std::invalid_argument(d.where() + ex.what());
+      }
+      r.json_sections["result"] = contour_json(c).dump();
+      contour_diagnostics(r, c);
+      if (!a->output.plot.empty()) figures.push_back({"fit", "", contour_figure(t, c, name)});
+      text = contour_text(c);
     } else {
       const std::vector<double> v = column(d, a->velocity, "--velocity");
       std::vector<double> f;

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "frictionlab/format.hpp"
+#include "contour_figure.hpp"
 #include "figures.hpp"
 #include "frictionlab/io/figure.hpp"
 #include "output.hpp"
@@ -100,9 +101,10 @@ Handler register_simulate(CLI::App& app) {
       // Pendulums and motors turn (rad, N m); the other plants translate (m, N).
       const std::string type = sc.plant->type();
       const Axis axis = (type == "pendulum" || type == "dc-motor") ? Axis::rotary : Axis::linear;
-      const FigureFiles files = write_figure(
-          trajectory_figure(tr, axis, std::filesystem::path(args->scenario).filename().string()), args->plot,
-          args->overwrite);
+      const std::string title = std::filesystem::path(args->scenario).filename().string();
+      // A two-axis table: its path in the plane (the circular test's polar error plot).
+      const std::optional<Figure> xy = xy_figure(tr, title);
+      const FigureFiles files = write_figure(xy ? *xy : trajectory_figure(tr, axis, title), args->plot, args->overwrite);
       progress_stop();
       std::cerr << "figure     " << files.figure << " (data " << files.data << ", script " << files.script << ")\n";
     }

@@ -20,6 +20,7 @@ Plotting helpers (matplotlib) are in frictionlab.plot, imported on first use.
 from ._core import (
     ArgumentTypeError,
     BreakawayOptions,
+    ContourResult,
     DecayOptions,
     Diagnostics,
     EnvelopeFit,
@@ -39,6 +40,7 @@ from ._core import (
     Trajectory,
     ValidationFigures,
     __version__,
+    analyze_contour,
     export_c,
     law_names,
     load_law,
@@ -55,10 +57,10 @@ from .simulate import simulate
 globals().update(_METHOD_FUNCTIONS)
 
 __all__ = [
-    "ArgumentTypeError", "BreakawayOptions", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
+    "ArgumentTypeError", "BreakawayOptions", "ContourResult", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
     "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
-    "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "law_names", "load", "load_law",
+    "analyze_contour", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "law_names", "load", "load_law",
     "methods", "sha256_file", "simulate", *_METHOD_FUNCTIONS,
 ]
 

@@ -134,6 +134,7 @@ py::array_t<double> to_array(std::span<const double> values) {
 }
 
 void init_export(py::module_& m);  // export.cpp: export_c (the C header of io/c_export.hpp)
+void init_contour(py::module_& m);  // contour.cpp: analyze_contour (analysis/contour.hpp)
 
 }  // namespace frictionlab::python
 
@@ -170,4 +171,5 @@ PYBIND11_MODULE(_core, m) {
   fp::init_simulate(m);
   fp::init_analysis(m);
   fp::init_export(m);
+  fp::init_contour(m);
 }

@@ -246,6 +246,7 @@ std::string gnuplot_script(const Figure& figure, const std::string& path) {
     g << "\n";
   }
   int index = 0, colour = 0;
+  bool equal_before = false;  // the panel before set an aspect ratio: the next resets it
   for (const FigurePanel& panel : figure.panels) {
     g << "\n# panel: " << (panel.title.empty() ? panel.y_label : panel.title) << "\n";
     g << "set title " << gp_quote(panel.title) << " noenhanced\n"
@@ -256,7 +257,9 @@ std::string gnuplot_script(const Figure& figure, const std::string& path) {
       << (panel.tight_x ? "set autoscale xfix\nset offsets 0, 0, graph 0.05, graph 0.05\n"
                         : "set offsets graph 0.02, graph 0.02, graph 0.05, graph 0.05\n")
       << (panel.zero_line ? "set xzeroaxis lt -1 lw 1 lc rgb '#606060'\n" : "unset xzeroaxis\n")
-      << (panel.zero_x_line ? "set yzeroaxis lt -1 lw 1 lc rgb '#606060'\n" : "unset yzeroaxis\n");
+      << (panel.zero_x_line ? "set yzeroaxis lt -1 lw 1 lc rgb '#606060'\n" : "unset yzeroaxis\n")
+      << (panel.equal_axes ? "set size ratio -1\n" : equal_before ? "set size noratio\n" : "");
+    equal_before = panel.equal_axes;
     std::vector<std::string> plots;
     for (const FigureSeries& s : panel.series) {
       if (!drawable(s)) continue;

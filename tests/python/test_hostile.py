@@ -50,6 +50,8 @@ def array_calls(idim_ok, emps, source_dir):
         "fit_static_law": (fl.fit_static_law, {"velocity": WAVE + 2.0, "force": WAVE}, set()),
         "decay_envelope": (fl.decay_envelope, {"t": T, "x": WAVE}, set()),
         "detect_stick_slip": (fl.detect_stick_slip, {"t": T, "v": WAVE, "force": WAVE}, {"force"}),
+        "analyze_contour": (fl.analyze_contour, {"t": T, "x": np.cos(2 * np.pi * 5 * T), "y": WAVE,
+                                                 "xr": np.cos(2 * np.pi * 5 * T), "yr": WAVE.copy()}, {"xr", "yr"}),
         "validate": (lambda **a: fl.validate(idim_ok, data, scenario, **a),
                      {"time": T, "position": WAVE, "force": WAVE}, set()),
         "FrictionLaw.sliding": (lambda **a: fl.FrictionLaw({"law": "coulomb", "Fc": 1.0}).sliding(**a),
@@ -65,13 +67,13 @@ def array_calls(idim_ok, emps, source_dir):
 PATH_CALLS = {"load": "path", "load_law": "path", "sha256_file": "path", "simulate": "scenario", "export_c": "model"}
 # Public names that take no array: result and option classes (made by the package or with no
 # arguments), the version, the lists of law names and of methods. FrictionLaw's dict is tested on its own below.
-NO_ARRAYS = {"ArgumentTypeError", "BreakawayOptions", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
+NO_ARRAYS = {"ArgumentTypeError", "BreakawayOptions", "ContourResult", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
              "FitFigures", "IdimOptions", "Parameter", "Result", "StaticFit", "StaticFitOptions", "StickSlipOptions",
              "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__", "law_names", "methods", "Data",
              "Scenario", "FrictionLaw"}
 ARRAY_FUNCTIONS = {"identify_idim", "idim_regression", "cross_test", "idim_reconstruction", "identify_breakaway",
                    "identify_sweep", "sweep_points", "identify_decay", "identify_lugre", "fit_static_law",
-                   "decay_envelope", "detect_stick_slip", "validate"}
+                   "decay_envelope", "detect_stick_slip", "validate", "analyze_contour"}
 
 
 def test_every_public_name_is_covered():

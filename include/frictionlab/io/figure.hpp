@@ -46,6 +46,7 @@ struct FigurePanel {
   bool zero_line = false;  ///< draw the y = 0 line (signed quantities: velocity, force)
   bool zero_x_line = false;  ///< draw the x = 0 line (maps against a signed x, e.g. velocity)
   bool tight_x = false;    ///< x range exactly the data's (time axes); else rounded to tics
+  bool equal_axes = false;  ///< one unit as long on x as on y (a path in the plane: a circle stays round)
   std::string key = "top right";  ///< legend position in gnuplot words ("top left", "bottom right", ...)
 };
 
