@@ -174,7 +174,7 @@ void contour_diagnostics(Result& r, const ContourResult& c) {
 
 Handler register_analyze(CLI::App& app) {
   auto a = std::make_shared<AnalyzeArgs>();
-  CLI::App* cmd = app.add_subcommand("analyze", "Analyse a motion record: decay envelope or stick-slip.");
+  CLI::App* cmd = app.add_subcommand("analyze", "Analyse a motion record: decay envelope, stick-slip, or a two-axis circular test (contour).");
   cmd->add_option("method", a->method,
                   "envelope (free-oscillation decay), stick-slip (exit 2 with a message when the record never "
                   "slips) or contour (a two-axis circular test: radial error, quadrant glitches, roundness)")
