@@ -612,7 +612,9 @@ CompensationParams make_compensation(std::string_view type, const std::map<std::
     for (const auto& t : compensation_types()) valid += (valid.empty() ? "" : ", ") + t;
     throw std::invalid_argument("compensation '" + std::string(type) + "' is not known; valid types: " + valid);
   }
-  for (const auto& [name, value] : values) {
+  for (const auto& entry : values) {
+    const auto& name = entry.first;  // not a structured binding: clang (the fuzz build) cannot capture one
+    const auto value = entry.second;
     const auto it = std::find_if(fields.begin(), fields.end(), [&](const auto& f) { return name == f.first; });
     if (it == fields.end()) {
       std::string has;
