@@ -1,5 +1,6 @@
 #include "frictionlab/identify/least_squares.hpp"
 
+#include <Eigen/QR>
 #include <Eigen/SVD>
 #include <cmath>
 #include <stdexcept>
@@ -41,9 +42,14 @@ LeastSquaresFit linear_least_squares(const Eigen::MatrixXd& X, const Eigen::Vect
       return f;
     }
   const Eigen::VectorXd d = norms.cwiseInverse();
-  const Eigen::JacobiSVD<Eigen::MatrixXd> plain(X);  // the units-dependent figure, for the record
+  // X = Q R (Householder; Q: N x p with orthonormal columns): X and R have the same singular
+  // values, and so have X D and R D, so the SVDs below are of p x p matrices and cost nothing
+  // next to the one pass of the QR over the N rows.
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(X);
+  const Eigen::MatrixXd R = qr.matrixQR().topRows(p).triangularView<Eigen::Upper>();
+  const Eigen::JacobiSVD<Eigen::MatrixXd> plain(R);  // the units-dependent figure, for the record
   f.condition_number = plain.singularValues()(0) / plain.singularValues()(p - 1);
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(X * d.asDiagonal(), Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R * d.asDiagonal(), Eigen::ComputeFullU | Eigen::ComputeFullV);
   const Eigen::VectorXd& s = svd.singularValues();
   f.condition_number_scaled = s(0) / s(p - 1);
   if (!(f.condition_number_scaled <= o.max_condition)) {
@@ -59,7 +65,9 @@ LeastSquaresFit linear_least_squares(const Eigen::MatrixXd& X, const Eigen::Vect
                 (involved.size() > 1 ? " cannot be told apart" : " is not determined");
     return f;
   }
-  f.theta = d.asDiagonal() * svd.solve(y);
+  // min ||X D u - y|| = min ||R D u - Q'y|| (the rest of y is orthogonal to X's columns).
+  const Eigen::VectorXd qty = (qr.householderQ().adjoint() * y).head(p);
+  f.theta = d.asDiagonal() * svd.solve(qty);
   f.residual = y - X * f.theta;
   const double ee = f.residual.squaredNorm();
   f.residual_variance = ee / static_cast<double>(std::max<Eigen::Index>(1, n - p));

@@ -11,6 +11,7 @@
 
 #include "frictionlab/identify/least_squares.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
+#include "../signal/scratch.hpp"
 
 namespace frictionlab {
 
@@ -38,11 +39,17 @@ const double kLogNegligibleDecayExponent = std::log(kNegligibleDecayExponent) * 
 // point's residual and Jacobian row together, which leaves r'r, J'J and J'r (all the solver
 // uses) unchanged.
 struct FoldedPoints {
-  Eigen::ArrayXd a, log_a, g;
-  // log_a is only allocated here: the start uses it as scratch space first (fresh allocations of
-  // 1e5 doubles cost page faults comparable to a pass over the points).
-  FoldedPoints(const Eigen::VectorXd& v, const Eigen::VectorXd& f)
-      : a(v.array().abs()), log_a(v.size()), g(f.array() * v.array().sign()) {}
+  Eigen::Map<Eigen::ArrayXd> a, log_a, g;
+  // The three arrays are the thread's scratch buffers (signal/scratch.hpp), taken from the
+  // caller's frame: a repeated fit then maps no new memory (fresh arrays of 1e5 doubles cost page
+  // faults comparable to a pass over the points, and whether the allocator reuses or returns
+  // them depends on what else the process holds). log_a serves the start as scratch space first.
+  FoldedPoints(detail::ScratchFrame& frame, const Eigen::VectorXd& v, const Eigen::VectorXd& f)
+      : a(frame.get(v.size()).data(), v.size()), log_a(frame.get(v.size()).data(), v.size()),
+        g(frame.get(v.size()).data(), v.size()) {
+    a = v.array().abs();
+    g = f.array() * v.array().sign();
+  }
 };
 
 // One pass over points [b, e) at parameters p: the 6x6 Gram matrix G = [J r]'[J r] of the
@@ -206,8 +213,8 @@ void linear_coulomb_viscous(const Eigen::VectorXd& v, const Eigen::VectorXd& f, 
 // nth_element calls on a copy of the speeds replace a full sort of 1e5 points; ties at a
 // boundary speed are taken in index order (a sort would take them in an arbitrary one).
 // `scratch` (n doubles) is overwritten.
-void initial_guess(const Eigen::ArrayXd& a, const Eigen::ArrayXd& g, double fixed_delta, double* p,
-                   Eigen::ArrayXd& scratch) {
+void initial_guess(const Eigen::Ref<const Eigen::ArrayXd>& a, const Eigen::Ref<const Eigen::ArrayXd>& g,
+                   double fixed_delta, double* p, Eigen::Ref<Eigen::ArrayXd> scratch) {
   const Eigen::Index n = a.size();
   const Eigen::Index h = n / 2, m = std::max<Eigen::Index>(1, n / 10);
   scratch = a;
@@ -219,7 +226,7 @@ void initial_guess(const Eigen::ArrayXd& a, const Eigen::ArrayXd& g, double fixe
   // Membership weights (1 or 0) of the faster half (n - h points from a_median up) and of the
   // slowest tenth (m points up to a_tenth), ties at the edge taken in index order; the sums
   // below are then vectorised Eigen reductions instead of branches on random data.
-  Eigen::ArrayXd& w = scratch;
+  Eigen::Ref<Eigen::ArrayXd>& w = scratch;
   const auto weigh = [&](bool upper, double edge, Eigen::Index count) {
     if (upper) w = (a > edge).cast<double>();
     else w = (a < edge).cast<double>();
@@ -263,7 +270,8 @@ OneSided fit_one_sided(const Eigen::VectorXd& v, const Eigen::VectorXd& f, const
   best.ssr = std::numeric_limits<double>::infinity();
   double start[kNp];
   // The guess works on the folded map (|v|, F sign(v)): both directions give the same levels.
-  FoldedPoints d(v, f);
+  detail::ScratchFrame frame;
+  FoldedPoints d(frame, v, f);
   initial_guess(d.a, d.g, o.fixed_delta, start, d.log_a);
   d.log_a = d.a.log();
   // Two exponent starts guard against the wrong minimum a single start can land in.

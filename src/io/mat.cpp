@@ -1,6 +1,5 @@
 #include "frictionlab/io/mat.hpp"
 
-#include <matio.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -17,6 +16,7 @@
 
 #include "frictionlab/format.hpp"
 #include "frictionlab/io/sha256.hpp"
+#include "matio_library.hpp"
 
 namespace frictionlab {
 namespace {
@@ -36,10 +36,10 @@ void matio_log(int level, char* message) {
 }
 
 struct MatCloser {
-  void operator()(mat_t* m) const { Mat_Close(m); }
+  void operator()(mat_t* m) const { detail::matio_library().Close(m); }
 };
 struct VarFreer {
-  void operator()(matvar_t* v) const { Mat_VarFree(v); }
+  void operator()(matvar_t* v) const { detail::matio_library().VarFree(v); }
 };
 using MatPtr = std::unique_ptr<mat_t, MatCloser>;
 using VarPtr = std::unique_ptr<matvar_t, VarFreer>;
@@ -78,8 +78,8 @@ std::string variable_problem(const matvar_t& v) {
     case MAT_C_CELL: return "a " + dims + " cell array";
     case MAT_C_STRUCT: {
       std::string fields;
-      const unsigned n = Mat_VarGetNumberOfFields(const_cast<matvar_t*>(&v));
-      char* const* names = Mat_VarGetStructFieldnames(&v);
+      const unsigned n = detail::matio_library().VarGetNumberOfFields(const_cast<matvar_t*>(&v));
+      char* const* names = detail::matio_library().VarGetStructFieldnames(&v);
       for (unsigned i = 0; names != nullptr && i < n && i < 10; ++i)
         fields += std::string(i ? ", " : "") + (names[i] != nullptr ? names[i] : "?");
       if (n > 10) fields += ", ...";
@@ -332,7 +332,7 @@ Dataset read_mat(const std::string& path) {
   data.file = path;
   data.sha256 = sha256_file(path);
 
-  Mat_LogInitFunc("frictionlab", &matio_log);
+  detail::matio_library().LogInitFunc("frictionlab", &matio_log);
   g_matio_log.clear();
   const auto fail = [&](const std::string& what) {
     std::string msg = path + ": " + what;
@@ -344,7 +344,7 @@ Dataset read_mat(const std::string& path) {
   if (const std::string problem = v5_structure_problem(path, false); !problem.empty()) {
     fail("not a valid MATLAB MAT file: " + problem);
   }
-  MatPtr mat(Mat_Open(path.c_str(), MAT_ACC_RDONLY));
+  MatPtr mat(detail::matio_library().Open(path.c_str(), MAT_ACC_RDONLY));
   if (!mat) fail("not a MATLAB MAT file (v5 or v7.3) or corrupt; expected a file saved by MATLAB's save");
 
   // A first pass over the variables' headers only. matio (1.5.23) allocates a variable's values
@@ -356,9 +356,9 @@ Dataset read_mat(const std::string& path) {
   const std::uintmax_t file_size = std::filesystem::file_size(path, ec);  // -1 when unknown: no bound
   const double file_bytes = static_cast<double>(file_size);
   std::size_t declared_count = 0;
-  for (VarPtr info(Mat_VarReadNextInfo(mat.get())); info; info.reset(Mat_VarReadNextInfo(mat.get()))) {
+  for (VarPtr info(detail::matio_library().VarReadNextInfo(mat.get())); info; info.reset(detail::matio_library().VarReadNextInfo(mat.get()))) {
     ++declared_count;
-    double bytes = static_cast<double>(Mat_SizeOfClass(info->class_type));
+    double bytes = static_cast<double>(detail::matio_library().SizeOfClass(info->class_type));
     std::string shape;
     for (int d = 0; d < info->rank && info->dims != nullptr; ++d) {
       bytes *= static_cast<double>(info->dims[d]);
@@ -372,7 +372,7 @@ Dataset read_mat(const std::string& path) {
            " bytes: corrupt file");
     }
   }
-  Mat_Rewind(mat.get());
+  detail::matio_library().Rewind(mat.get());
   g_matio_log.clear();
   // Then every compressed variable's stream to its end: after the size check above, so that a
   // header declaring more than the file holds is reported as that.
@@ -387,7 +387,7 @@ Dataset read_mat(const std::string& path) {
   while (true) {
     g_matio_log.clear();
     g_matio_error = false;
-    VarPtr var(Mat_VarReadNext(mat.get()));
+    VarPtr var(detail::matio_library().VarReadNext(mat.get()));
     if (!var) {
       // NULL ends the file; with an error logged on the way it is a damaged variable instead
       // (warnings, e.g. about a class matio skips, are not).
@@ -421,7 +421,7 @@ Dataset read_mat(const std::string& path) {
   if (data.rows() == 0) {
     // matio (1.5.23) opens a v7.3 file whose HDF5 part HDF5 cannot open (truncated, corrupt) and
     // then reports no variables and no error: say so rather than "no numeric vector".
-    if (names.empty() && Mat_GetVersion(mat.get()) == MAT_FT_MAT73)
+    if (names.empty() && detail::matio_library().GetVersion(mat.get()) == MAT_FT_MAT73)
       fail("cannot read the MAT v7.3 (HDF5) file: no variable could be read (corrupt, truncated or empty file)");
     std::string listed;
     for (const auto& n : names) {

@@ -4,6 +4,7 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <array>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -29,8 +30,30 @@ TransferFunction normalized(const TransferFunction& tf) {
 
 // Direct form II transposed on normalised coefficients, in scipy's order of operations, in place
 // over `count` samples from x with the given step (+1 forward, -1 backward). z: the k states.
+// K > 0 fixes k at compile time: the states and coefficients are then local variables. Through
+// the pointers they would be stored and reloaded every sample (z, x and the coefficients are all
+// double*, which the compiler cannot prove apart), and that store-to-load round trip would sit on
+// the recursion's critical path; the arithmetic, and so the result, is the same either way.
+template <int K = 0>
 void lfilter_in_place(const TransferFunction& tf, double* z, double* x, Eigen::Index count, int step) {
-  const Eigen::Index k = tf.a.size() - 1;
+  const Eigen::Index k = K > 0 ? K : tf.a.size() - 1;
+  if constexpr (K > 0) {
+    std::array<double, K + 1> b, a;
+    std::array<double, K> zl;
+    std::copy(tf.b.data(), tf.b.data() + K + 1, b.begin());
+    std::copy(tf.a.data(), tf.a.data() + K + 1, a.begin());
+    std::copy(z, z + K, zl.begin());
+    for (Eigen::Index n = 0; n < count; ++n) {
+      double* const at = x + n * step;  // never formed one past either end
+      const double xn = *at;
+      const double yn = zl[0] + b[0] * xn;
+      for (int i = 0; i + 1 < K; ++i) zl[i] = zl[i + 1] + xn * b[i + 1] - yn * a[i + 1];
+      zl[K - 1] = xn * b[K] - yn * a[K];
+      *at = yn;
+    }
+    std::copy(zl.begin(), zl.end(), z);
+    return;
+  }
   const double* b = tf.b.data();
   const double* a = tf.a.data();
   for (Eigen::Index n = 0; n < count; ++n) {
@@ -43,9 +66,18 @@ void lfilter_in_place(const TransferFunction& tf, double* z, double* x, Eigen::I
   }
 }
 
+// lfilter_in_place with the common orders' states in registers (see above).
+void lfilter_dispatch(const TransferFunction& tf, double* z, double* x, Eigen::Index count, int step) {
+  switch (tf.a.size() - 1) {
+    case 2: return lfilter_in_place<2>(tf, z, x, count, step);
+    case 4: return lfilter_in_place<4>(tf, z, x, count, step);
+    default: return lfilter_in_place(tf, z, x, count, step);
+  }
+}
+
 Eigen::VectorXd lfilter_normalized(const TransferFunction& tf, const Eigen::VectorXd& x, Eigen::VectorXd z) {
   Eigen::VectorXd y = x;
-  lfilter_in_place(tf, z.data(), y.data(), y.size(), 1);
+  lfilter_dispatch(tf, z.data(), y.data(), y.size(), 1);
   return y;
 }
 
@@ -75,7 +107,33 @@ constexpr int kDecimationSections = 4;  // scipy's order-8 decimation filter
 template <int W, int NS = 0>
 void cascade(const SectionCoefficients& s, double* z, double* x, Eigen::Index count, int step) {
   using Lanes = Eigen::Array<double, W, 1>;  // one SIMD-friendly value per channel
-  const Eigen::Index ns = NS > 0 ? NS : s.rows();
+  if constexpr (NS > 0) {
+    // States and coefficients in local variables, for the reason lfilter_in_place<K> gives.
+    std::array<Lanes, NS> z0, z1;
+    std::array<std::array<double, 6>, NS> c;
+    for (int r = 0; r < NS; ++r) {
+      z0[r] = Eigen::Map<Lanes>(z + 2 * r * W);
+      z1[r] = Eigen::Map<Lanes>(z + (2 * r + 1) * W);
+      for (int j = 0; j < 6; ++j) c[r][j] = s(r, j);
+    }
+    for (Eigen::Index n = 0; n < count; ++n) {
+      Eigen::Map<Lanes> sample(x + n * step * W);  // never formed one past either end
+      Lanes cur = sample;
+      for (int r = 0; r < NS; ++r) {
+        const Lanes out = c[r][0] * cur + z0[r];
+        z0[r] = c[r][1] * cur - c[r][4] * out + z1[r];
+        z1[r] = c[r][2] * cur - c[r][5] * out;
+        cur = out;
+      }
+      sample = cur;
+    }
+    for (int r = 0; r < NS; ++r) {
+      Eigen::Map<Lanes>(z + 2 * r * W) = z0[r];
+      Eigen::Map<Lanes>(z + (2 * r + 1) * W) = z1[r];
+    }
+    return;
+  }
+  const Eigen::Index ns = s.rows();
   for (Eigen::Index n = 0; n < count; ++n) {
     Eigen::Map<Lanes> sample(x + n * step * W);  // never formed one past either end
     Lanes cur = sample;
@@ -188,9 +246,9 @@ void filtfilt_in_place(const TransferFunction& tf, Eigen::Ref<Eigen::VectorXd> x
   }
   const Eigen::VectorXd zi = lfilter_zi(n);
   Eigen::VectorXd z = zi * x(0);
-  lfilter_in_place(n, z.data(), x.data(), x.size(), 1);
+  lfilter_dispatch(n, z.data(), x.data(), x.size(), 1);
   z = zi * x(x.size() - 1);
-  lfilter_in_place(n, z.data(), x.data() + x.size() - 1, x.size(), -1);
+  lfilter_dispatch(n, z.data(), x.data() + x.size() - 1, x.size(), -1);
 }
 
 Eigen::VectorXd filtfilt(const TransferFunction& tf, const Eigen::VectorXd& x, const FiltfiltOptions& options) {

@@ -1,5 +1,6 @@
 """frictionlab.load (CSV, MAT), load_law, sha256_file: values and error messages."""
 import json
+import os
 
 import numpy as np
 import pytest
@@ -182,3 +183,21 @@ def test_load_mat_corrupt_compressed_variable_and_wrong_shapes(tmp_path, source_
     with pytest.raises(KeyError, match=r"variable 'z' is a 1x20 complex vector"):
         d["z"]
     assert "char array" in d.unusable["label"]
+
+
+def test_import_does_not_load_matio_until_a_mat_file_is_read(source_dir):
+    # matio brings HDF5, curl, GnuTLS, ... (about 30 libraries): `import frictionlab` must not pay
+    # for them; the first MAT file loads them. A fresh interpreter, as pytest's has read MAT files.
+    import subprocess
+    import sys
+
+    code = ("import frictionlab as fl\n"
+            "maps = lambda: open('/proc/self/maps').read()\n"
+            "assert 'libfrictionlab' in maps(), 'the check would pass for the wrong reason'\n"
+            "assert 'libmatio' not in maps() and 'libhdf5' not in maps(), 'import loaded matio'\n"
+            "fl.load(sys.argv[1])\n"
+            "assert 'libmatio' in maps(), 'reading a MAT file did not load matio'\n")
+    mat = source_dir / "data" / "emps" / "DATA_EMPS.mat"
+    r = subprocess.run([sys.executable, "-c", "import sys\n" + code, str(mat)], capture_output=True, text=True,
+                       env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
+    assert r.returncode == 0, r.stderr
