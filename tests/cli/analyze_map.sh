@@ -71,4 +71,13 @@ expect_fail "--vary, --shard and -o belong to analyze map" analyze stick-slip "$
 import json, sys
 j = json.loads(sys.stdin.read())
 assert j["result"]["rows"][0]["class"] == "hunting", j'
+set +e
+"$exe" analyze map "$pid" --vary friction.Fx=1:2:2 --json - 2> /dev/null > "$tmp/err.json"
+code=$?
+set -e
+[ "$code" -eq 2 ] || fail "unknown key with --json -: exit $code"
+/usr/bin/python3 -c '
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["status"] == "error" and j["method"] == "map" and "friction.Fx" in j["message"], j' "$tmp/err.json"
 echo "ok"
