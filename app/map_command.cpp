@@ -205,6 +205,9 @@ int run_map_command(const std::string& scenario, const MapArgs& a, const OutputO
     if (ext != ".csv" && ext != ".json")
       throw std::invalid_argument("-o " + a.out + ": expected a .csv or .json file (the table)");
   }
+  if (!output.plot.empty() && grid.axes.size() > 2)
+    throw std::invalid_argument("--plot draws 1-D and 2-D maps; this one varies " + std::to_string(grid.axes.size()) +
+                                " keys (write the table with -o and plot two of them yourself)");
   check_output_file(a.out, output.overwrite, "-o");
   check_outputs(output);
   check_distinct_outputs({{"-o", a.out}, {"--json", output.json}, {"--plot", output.plot}});

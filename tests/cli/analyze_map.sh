@@ -66,6 +66,16 @@ expect_fail "--shard writes a part file only" analyze map "$pid" --vary friction
 expect_fail "-o $tmp/t.txt: expected a .csv or .json file" analyze map "$pid" --vary friction.Fs=1:2:2 -o "$tmp/t.txt"
 expect_fail "--vary, --shard and -o belong to analyze map" analyze stick-slip "$tmp/whole.csv" -o "$tmp/x.csv"
 
+# A 2-D spring-block map: both classes on either side of the drawn linear stability boundary.
+"$exe" analyze map "$src/examples/map_spring_block.yaml" --vary plant.V0=log:0.005:0.1:4 --vary plant.c=2:6:2 \
+  -o "$tmp/sb.csv" --plot "$tmp/sb.svg" > "$tmp/sb.txt"
+[ -s "$tmp/sb.svg" ] || fail "no figure"
+grep -q "linear stability boundary" "$tmp/sb.svg.dat" || fail "no boundary in the figure's data"
+grep -q "stick-slip" "$tmp/sb.csv" && grep -q "steady-sliding" "$tmp/sb.csv" || fail "both classes expected: $(cat "$tmp/sb.csv")"
+grep -q "agrees with the simulation at" "$tmp/sb.txt" || fail "no agreement line: $(cat "$tmp/sb.txt")"
+expect_fail "--plot draws 1-D and 2-D maps; this one varies 3 keys" analyze map "$src/examples/map_spring_block.yaml" \
+  --vary plant.V0=0.01:0.1:2 --vary plant.c=1:2:2 --vary plant.k=10:20:2 --plot "$tmp/x.svg"
+
 # --json - prints the error JSON on a failure and the result on success.
 "$exe" analyze map "$pid" --vary friction.Fs=1.5:1.5:1 --json - 2> /dev/null | /usr/bin/python3 -c '
 import json, sys
