@@ -312,6 +312,23 @@ TEST(MapTheoryAgainstSimulation, HuntingAmplitudeAndPeriodNearTheDescribingFunct
   }
 }
 
+TEST(RunMap, AFailedRunIsARowAndTheOthersGoOn) {
+  const ScenarioGrid g(kExamples + "map_pid_hunting.yaml", {"friction.Fs"});
+  std::vector<Scenario> sc = {g.at({1.5}), g.at({1.5})};
+  sc[1].plant = nullptr;  // simulate() refuses it
+  MotionOptions too_long;
+  too_long.transient = 1000;  // s: longer than the 240 s run
+  MapOptions o;
+  const std::vector<MotionSummary> s = run_map(sc, o);
+  EXPECT_EQ(s[0].kind, MotionClass::hunting);
+  EXPECT_EQ(s[1].kind, MotionClass::failed);
+  EXPECT_FALSE(s[1].message.empty());
+  o.motion = too_long;
+  const std::vector<MotionSummary> t = run_map({sc[0]}, o);
+  EXPECT_EQ(t[0].kind, MotionClass::failed);
+  EXPECT_THAT(t[0].message, HasSubstr("transient 1000 s leaves fewer than 8"));
+}
+
 TEST(MapTheoryAgainstSimulation, NoStictionConvergesAsPredicted) {
   const ScenarioGrid g(kExamples + "map_pid_hunting.yaml", {"friction.Fs"});
   const std::vector<Scenario> sc = {g.at({1.0})};
