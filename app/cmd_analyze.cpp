@@ -1,4 +1,4 @@
-// frictionlab analyze envelope|stick-slip|contour DATA [--time C] [--position C] [--velocity C] [--force C]
+// frictionlab analyze envelope|stick-slip|contour DATA [--time C] [--position C] [--velocity C] [--force C]  (map: app/map_command.cpp)
 //                     [--x C --y C --x-reference C --y-reference C --centre X,Y --radius R]
 //                     [--json FILE|-] [--plot FILE] [--overwrite]: out through emit (output.hpp),
 //                     the one output path of identify and validate.
@@ -14,6 +14,7 @@
 #include "contour_figure.hpp"
 #include "data_options.hpp"
 #include "figures.hpp"
+#include "map_command.hpp"
 #include "frictionlab/io/figure.hpp"
 #include "output.hpp"
 #include "frictionlab/analysis/contour.hpp"
@@ -38,6 +39,7 @@ struct AnalyzeArgs {
   OutputOptions output;  // --json, --plot, --overwrite (no --report)
   double threshold = 0.0;
   ReadOptions read;  // --names, --resample, --max-gap, --drop-invalid
+  MapArgs map;       // analyze map: --vary, --jobs, --shard, -o, --transient, --tolerance
 };
 
 // NaN is not JSON: null instead.
@@ -174,12 +176,17 @@ void contour_diagnostics(Result& r, const ContourResult& c) {
 
 Handler register_analyze(CLI::App& app) {
   auto a = std::make_shared<AnalyzeArgs>();
-  CLI::App* cmd = app.add_subcommand("analyze", "Analyse a motion record: decay envelope, stick-slip, or a two-axis circular test (contour).");
+  CLI::App* cmd = app.add_subcommand(
+      "analyze",
+      "Analyse a motion record: decay envelope, stick-slip, or a two-axis circular test (contour); or map a scenario "
+      "over a grid of its parameters (map: each point simulated and classified as converged, steady sliding, "
+      "stick-slip, hunting or oscillating, with the cycle's amplitude and period and the theory where it applies).");
   cmd->add_option("method", a->method,
                   "envelope (free-oscillation decay), stick-slip (exit 2 with a message when the record never "
-                  "slips) or contour (a two-axis circular test: radial error, quadrant glitches, roundness)")
+                  "slips), contour (a two-axis circular test: radial error, quadrant glitches, roundness) or map (DATA is a "
+                  "scenario file: see the Map options)")
       ->required()
-      ->check(CLI::IsMember({"envelope", "stick-slip", "contour"}));
+      ->check(CLI::IsMember({"envelope", "stick-slip", "contour", "map"}));
   cmd->add_option("data", a->data,
                   "CSV file, with a header row (the output of `frictionlab simulate` works) or without one (see "
                   "--names), or .mat")
@@ -208,9 +215,14 @@ Handler register_analyze(CLI::App& app) {
   add_plot_option(cmd, a->output.plot);
   cmd->add_flag("--overwrite", a->output.overwrite, "replace an existing --json or --plot file");
   add_read_options(cmd, a->read);
+  add_map_options(cmd, a->map);
   a->output.command = cmd;
   register_json_output(cmd, json, [a] { return a->method.empty() ? std::string("analyze") : a->method; });
   return [a]() -> int {
+    if (a->method == "map") return run_map_command(a->data, a->map, a->output);
+    if (!a->map.vary.empty() || !a->map.shard.empty() || !a->map.out.empty())
+      throw std::invalid_argument("--vary, --shard and -o belong to analyze map; analyze " + a->method +
+                                  " writes --json and --plot");
     check_outputs(a->output);
     const Dataset d = load_data(a->data, a->read, a->time);
     // The analysis goes out as identify's results do (emit): its figures as JSON under "result",

@@ -46,7 +46,7 @@ from ._core import (
     load_law,
     sha256_file,
 )
-from .analysis import decay_envelope, detect_stick_slip
+from .analysis import analyze_map, decay_envelope, detect_stick_slip
 from .data import Data, load
 # Each identification method's functions come from its module, frictionlab/methods/NAME.py, for
 # every method of the library's table (see frictionlab.identify): nothing here names them.
@@ -60,7 +60,7 @@ __all__ = [
     "ArgumentTypeError", "BreakawayOptions", "ContourResult", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
     "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
-    "analyze_contour", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "law_names", "load", "load_law",
+    "analyze_contour", "analyze_map", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "law_names", "load", "load_law",
     "methods", "sha256_file", "simulate", *_METHOD_FUNCTIONS,
 ]
 

@@ -1,4 +1,5 @@
-"""Analyses of motion records: decay envelope of a free oscillation, stick-slip detection."""
+"""Analyses of motion records: decay envelope of a free oscillation, stick-slip detection; maps of
+scenarios over grids of their parameters."""
 from . import _core
 
 
@@ -50,3 +51,43 @@ def detect_stick_slip(t, v=None, force=None, *, velocity_threshold=0.0, min_slip
     o.velocity_threshold = velocity_threshold
     o.min_slip_duration = min_slip_duration
     return _core._detect_stick_slip(t, v, force, o)
+
+
+def analyze_map(scenario, vary=None, *, transient=None, tolerance=0.01, jobs=0, shard=None):
+    """Map of a scenario file over a grid of its keys, as ``frictionlab analyze map``: each grid
+    point simulated and classified after a transient.
+
+    ``scenario``: the scenario YAML file (str or path). ``vary``: a "KEY=START:STOP:N" string
+    ("KEY=log:START:STOP:N" for log spacing), or a list of them (2-D and more), a key being a
+    dotted path into the file (``plant.k``, ``controller.Kp``, ``friction.Fs``); or a dict
+    ``{key: (start, stop, n)}``. ``transient``: seconds discarded from the start of each run (None:
+    half of each run). ``tolerance``: a velocity oscillation below this fraction of the run's
+    largest |v| counts as none (0.01). ``jobs``: threads (0: all cores). ``shard``: "K/N" to run
+    only the points i with i % N == K - 1.
+
+    Returns a list of dicts, one per grid point in grid order (the first key varying slowest),
+    with the same columns as the CLI's table: the varied keys, ``class`` ('converged',
+    'steady-sliding', 'stick-slip', 'hunting', 'oscillating', 'failed'), ``amplitude`` (m),
+    ``period`` (s), ``mean_velocity``, ``velocity_amplitude`` (m/s), ``stuck_fraction``,
+    ``transient`` (s), ``theory`` (the class theory predicts, '' where none applies),
+    ``theory_margin`` (N s/m), ``theory_amplitude`` (m), ``theory_period`` (s), ``message``, and
+    ``index`` (the point's global index). Numbers that do not exist are NaN.
+    Raises ValueError naming an unknown key or a bad grid.
+    """
+    import math
+    import os
+
+    if not isinstance(scenario, (str, os.PathLike)):
+        raise _core.ArgumentTypeError(
+            f"analyze_map: argument scenario: expected the path of a scenario file; got {type(scenario).__name__}")
+    if isinstance(vary, str):
+        vary = [vary]
+    elif isinstance(vary, dict):
+        vary = [f"{k}={float(a)!r}:{float(b)!r}:{int(n)}" for k, (a, b, n) in vary.items()]
+    elif not isinstance(vary, (list, tuple)) or not all(isinstance(v, str) for v in vary):
+        raise _core.ArgumentTypeError(
+            f"analyze_map: argument vary: expected 'KEY=START:STOP:N', a list of them or a dict "
+            f"{{key: (start, stop, n)}}; got {type(vary).__name__}")
+    out = _core._analyze_map(os.fspath(scenario), list(vary), math.nan if transient is None else float(transient),
+                             float(tolerance), int(jobs), "" if shard is None else str(shard))
+    return out["rows"]

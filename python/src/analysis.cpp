@@ -7,6 +7,7 @@
 #include "common.hpp"
 #include "frictionlab/analysis/envelope.hpp"
 #include "frictionlab/analysis/stick_slip.hpp"
+#include "frictionlab/io/map_run.hpp"
 
 namespace frictionlab::python {
 
@@ -121,6 +122,46 @@ void init_analysis(py::module_& m) {
     same_length("detect_stick_slip", {{"t", tv.size()}, {"v", vv.size()}, {"force", fv.size()}});
     return detect_stick_slip(tv, vv, fv, o);
   });
+
+  m.def(
+      "_analyze_map",
+      [](const std::string& scenario, const std::vector<std::string>& vary, double transient, double tolerance, int jobs,
+         const std::string& shard) {
+        MapGrid grid;
+        for (const auto& v : vary) grid.axes.push_back(parse_map_axis(v, "vary"));
+        MapRunOptions o;
+        if (!std::isnan(transient)) o.motion.transient = transient;
+        o.motion.tolerance = tolerance;
+        o.threads = jobs;
+        if (!shard.empty()) o.shard = parse_shard(shard, "shard");
+        MapRun run;
+        {
+          py::gil_scoped_release release;
+          run = map_scenario(scenario, grid, o);
+        }
+        py::list rows;
+        for (std::size_t r = 0; r < run.part.table.rows.size(); ++r) {
+          py::dict d;
+          d["index"] = run.part.table.index[r];
+          const auto& row = run.part.table.rows[r];
+          for (std::size_t c = 0; c < row.size(); ++c) {
+            const auto& name = run.part.table.columns[c];
+            if (const double* x = std::get_if<double>(&row[c]))
+              d[py::str(name)] = *x;
+            else
+              d[py::str(name)] = std::get<std::string>(row[c]);
+          }
+          rows.append(d);
+        }
+        py::dict out;
+        out["rows"] = rows;
+        out["theory"] = run.theory_kind;
+        out["theory_note"] = run.theory_note;
+        out["columns"] = run.part.table.columns;
+        return out;
+      },
+      py::arg("scenario"), py::arg("vary"), py::arg("transient"), py::arg("tolerance"), py::arg("jobs"), py::arg("shard"),
+      "Map of a scenario over a grid (see frictionlab.analyze_map).");
 }
 
 }  // namespace frictionlab::python

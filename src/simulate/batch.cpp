@@ -32,6 +32,7 @@ std::vector<BatchResult> simulate_batch(const std::vector<Scenario>& scenarios, 
       BatchResult& r = results[i];
       try {
         r.trajectory = simulate(scenarios[i]);
+        if (options.on_result) options.on_result(i, r);
       } catch (const std::exception& e) {
         r.error = std::current_exception();
         r.message = e.what();

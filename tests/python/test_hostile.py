@@ -64,7 +64,7 @@ def array_calls(idim_ok, emps, source_dir):
 
 
 # Public functions whose arguments are a path or a scenario (not arrays): name -> argument.
-PATH_CALLS = {"load": "path", "load_law": "path", "sha256_file": "path", "simulate": "scenario", "export_c": "model"}
+PATH_CALLS = {"analyze_map": "scenario", "load": "path", "load_law": "path", "sha256_file": "path", "simulate": "scenario", "export_c": "model"}
 # Public names that take no array: result and option classes (made by the package or with no
 # arguments), the version, the lists of law names and of methods. FrictionLaw's dict is tested on its own below.
 NO_ARRAYS = {"ArgumentTypeError", "BreakawayOptions", "ContourResult", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",

@@ -14,6 +14,15 @@
 
 namespace frictionlab {
 
+/// The outcome of one run of a batch: a trajectory, or the exception simulate() threw.
+struct BatchResult {
+  Trajectory trajectory;     ///< empty when the run failed
+  std::exception_ptr error;  ///< null on success; rethrow with std::rethrow_exception
+  std::string message;       ///< what() of the error ("" on success)
+
+  bool ok() const { return error == nullptr; }
+};
+
 /// Options of simulate_batch().
 struct BatchOptions {
   /// Worker threads, >= 0. 0 (default): std::thread::hardware_concurrency() (1 if unknown).
@@ -22,15 +31,14 @@ struct BatchOptions {
   /// Called after each finished run (from the worker that ran it, so it must be thread-safe)
   /// with the index of the scenario and the number finished so far. Optional.
   std::function<void(std::size_t index, std::size_t finished)> progress;
-};
-
-/// The outcome of one run of a batch: a trajectory, or the exception simulate() threw.
-struct BatchResult {
-  Trajectory trajectory;     ///< empty when the run failed
-  std::exception_ptr error;  ///< null on success; rethrow with std::rethrow_exception
-  std::string message;       ///< what() of the error ("" on success)
-
-  bool ok() const { return error == nullptr; }
+  /// Called after each successful run, before `progress`, from the worker that ran it (so it must
+  /// be thread-safe across indices), with the run's result, which it may move from or reduce:
+  /// simulate_batch returns whatever is left in it. A caller that keeps a few figures of each
+  /// run instead of its trajectory (a map over a large grid) then holds one trajectory per
+  /// thread, not one per run. Optional. An exception it throws is captured in the result as a
+  /// failed run's;
+  /// a failed run is not passed to it (its error stays in the returned result).
+  std::function<void(std::size_t index, BatchResult& result)> on_result;
 };
 
 /// Simulates every scenario (simulate(scenarios[i])) on options.threads threads. Runs are handed

@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# frictionlab analyze map and merge: a 1-D PID hunting map classifies Fs = Fc as converged and
+# stiction as hunting; three shards merged equal the unsharded CSV and JSON byte for byte; merge
+# names a missing, duplicated or foreign part; unknown keys and bad grids exit 2 naming them.
+set -euo pipefail
+exe="$1"
+src="$2"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+source "$src/tests/cli/lib.sh"
+pid="$src/examples/map_pid_hunting.yaml"
+vary=(--vary friction.Fs=1:2:3 --vary controller.Kp=3:4:2)  # 6 points
+
+"$exe" analyze map "$pid" "${vary[@]}" --jobs 2 -o "$tmp/whole.csv" --json "$tmp/whole.json" > "$tmp/text.txt"
+grep -q "transient: the first half of each run (120 s here) discarded" "$tmp/text.txt" || fail "no transient note: $(cat "$tmp/text.txt")"
+grep -q "theory (pid-hunting)" "$tmp/text.txt" || fail "no theory line: $(cat "$tmp/text.txt")"
+/usr/bin/python3 - "$tmp/whole.csv" "$tmp/whole.json" <<'PY'
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 6, rows
+for r in rows:
+    want = "converged" if float(r["friction.Fs"]) == 1.0 else "hunting"
+    assert r["class"] == want, r
+    assert r["theory"] == want, r
+j = json.load(open(sys.argv[2]))
+assert j["status"] == "ok" and j["method"] == "map", j
+assert j["result"]["grid"] == ["friction.Fs=1:2:3", "controller.Kp=3:4:2"], j["result"]["grid"]
+assert [r["class"] for r in j["result"]["rows"]] == [r["class"] for r in rows]
+assert j["data"]["sha256"], j["data"]
+PY
+
+# Shards (one thread each, as separate array tasks would run), merged in any order.
+for k in 1 2 3; do
+  "$exe" analyze map "$pid" "${vary[@]}" --jobs 1 --shard "$k/3" -o "$tmp/part$k.json" > /dev/null
+done
+"$exe" merge "$tmp/part3.json" "$tmp/part1.json" "$tmp/part2.json" -o "$tmp/merged.csv" > /dev/null
+cmp "$tmp/whole.csv" "$tmp/merged.csv" || fail "merged CSV differs from the unsharded run"
+"$exe" merge "$tmp/part1.json" "$tmp/part2.json" "$tmp/part3.json" -o "$tmp/merged.json" > /dev/null
+cmp "$tmp/whole.json" "$tmp/merged.json" || fail "merged JSON differs from the unsharded run"
+
+# merge refuses what does not make the whole run, naming the part.
+expect_fail "missing part: shard 2/3 was not given" merge "$tmp/part1.json" "$tmp/part3.json" -o "$tmp/m.csv"
+expect_fail "part2b.json: duplicated part: shard 2/3 is also" merge "$tmp/part1.json" "$tmp/part2.json" \
+  "$tmp/part3.json" "$(cp "$tmp/part2.json" "$tmp/part2b.json"; echo "$tmp/part2b.json")" -o "$tmp/m.csv"
+"$exe" analyze map "$pid" --vary friction.Fs=1:2:4 --vary controller.Kp=3:4:2 --shard 2/3 -o "$tmp/other.json" > /dev/null
+expect_fail "other.json: foreign part: its key differs" merge "$tmp/part1.json" "$tmp/other.json" "$tmp/part3.json" -o "$tmp/m.csv"
+expect_fail "not a frictionlab part file" merge "$tmp/whole.json" -o "$tmp/m.csv"
+expect_fail "-o $tmp/m.txt: expected a .csv or .json file" merge "$tmp/part1.json" -o "$tmp/m.txt"
+expect_fail "$tmp/merged.csv" merge "$tmp/part1.json" "$tmp/part2.json" "$tmp/part3.json" -o "$tmp/merged.csv"
+[ ! -e "$tmp/m.csv" ] || fail "a failed merge left $tmp/m.csv"
+
+# Bad keys and grids: exit 2 naming them, before anything is simulated.
+expect_fail "--vary friction.Fx: the scenario does not give it, and as a new field" \
+  analyze map "$pid" --vary friction.Fx=1:2:2
+expect_fail "--vary plant.spring.k: the scenario has no 'spring' under plant (it has type, M)" \
+  analyze map "$pid" --vary plant.spring.k=1:2:2
+expect_fail "--vary controller: names a section, not a number" analyze map "$pid" --vary controller=1:2:2
+expect_fail "--vary description: the scenario gives 'PID position loop hunting on Coulomb + static friction' there, not a number" \
+  analyze map "$pid" --vary description=1:2:2
+expect_fail "--vary 'friction.Fs=1:2': expected START:STOP:N" analyze map "$pid" --vary friction.Fs=1:2
+expect_fail "map: no --vary given" analyze map "$pid"
+expect_fail "with friction.Fs=0.5: friction" analyze map "$pid" --vary friction.Fs=0.5:1:2
+expect_fail "--shard '4/3': K = 4 must be <= N = 3" analyze map "$pid" --vary friction.Fs=1:2:2 --shard 4/3 -o "$tmp/p.json"
+expect_fail "--shard 1/2 needs -o PART" analyze map "$pid" --vary friction.Fs=1:2:2 --shard 1/2
+expect_fail "--shard writes a part file only" analyze map "$pid" --vary friction.Fs=1:2:2 --shard 1/2 -o "$tmp/p.json" --json -
+expect_fail "-o $tmp/t.txt: expected a .csv or .json file" analyze map "$pid" --vary friction.Fs=1:2:2 -o "$tmp/t.txt"
+expect_fail "--vary, --shard and -o belong to analyze map" analyze stick-slip "$tmp/whole.csv" -o "$tmp/x.csv"
+
+# A 2-D spring-block map: both classes on either side of the drawn linear stability boundary.
+"$exe" analyze map "$src/examples/map_spring_block.yaml" --vary plant.V0=log:0.005:0.1:4 --vary plant.c=2:6:2 \
+  -o "$tmp/sb.csv" --plot "$tmp/sb.svg" > "$tmp/sb.txt"
+[ -s "$tmp/sb.svg" ] || fail "no figure"
+grep -q "linear stability boundary" "$tmp/sb.svg.dat" || fail "no boundary in the figure's data"
+grep -q "stick-slip" "$tmp/sb.csv" && grep -q "steady-sliding" "$tmp/sb.csv" || fail "both classes expected: $(cat "$tmp/sb.csv")"
+grep -q "agrees with the simulation at" "$tmp/sb.txt" || fail "no agreement line: $(cat "$tmp/sb.txt")"
+expect_fail "--plot draws 1-D and 2-D maps; this one varies 3 keys" analyze map "$src/examples/map_spring_block.yaml" \
+  --vary plant.V0=0.01:0.1:2 --vary plant.c=1:2:2 --vary plant.k=10:20:2 --plot "$tmp/x.svg"
+
+# --json - prints the error JSON on a failure and the result on success.
+"$exe" analyze map "$pid" --vary friction.Fs=1.5:1.5:1 --json - 2> /dev/null | /usr/bin/python3 -c '
+import json, sys
+j = json.loads(sys.stdin.read())
+assert j["result"]["rows"][0]["class"] == "hunting", j'
+set +e
+"$exe" analyze map "$pid" --vary friction.Fx=1:2:2 --json - 2> /dev/null > "$tmp/err.json"
+code=$?
+set -e
+[ "$code" -eq 2 ] || fail "unknown key with --json -: exit $code"
+/usr/bin/python3 -c '
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["status"] == "error" and j["method"] == "map" and "friction.Fx" in j["message"], j' "$tmp/err.json"
+echo "ok"
