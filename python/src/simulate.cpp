@@ -152,10 +152,12 @@ dict(trajectory) gives the columns; also law_state, switches, stats, to_csv().)d
         py::dict d;
         d["steps"] = t.stats.steps;
         d["rhs_evaluations"] = t.stats.rhs_evaluations;
+        d["jacobian_rhs_evaluations"] = t.stats.jacobian_rhs_evaluations;
         d["restarts"] = t.stats.restarts;
         d["solver"] = std::string(t.stats.solver);
         return d;
-      }, "Integrator counters and the solver used.")
+      }, "Integrator counters and the solver used: steps, rhs_evaluations, jacobian_rhs_evaluations (right-hand "
+         "sides of difference-quotient Newton matrices; 0 with an analytic Jacobian), restarts, solver.")
       .def("to_csv", &Trajectory::to_csv, "The CSV text `frictionlab simulate -o` writes.")
       .def("__repr__", [](const Trajectory& t) {
         std::ostringstream o;

@@ -2,9 +2,11 @@
 #include "frictionlab/plants/xy_table.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include "frictionlab/models/parameter.hpp"
 
@@ -92,14 +94,17 @@ CompensatorInput XyTable::measured(int i, double t, std::span<const double> x, c
 }
 
 // ClosedLoop's position law (derivative on the measurement), compensation before the saturation.
-double XyTable::pid(int i, std::span<const double> x, const InputValue& r, double compensation) const {
+double XyTable::unsaturated(int i, std::span<const double> x, const InputValue& r, double compensation) const {
   const ControllerParams& c = axes_[i].gains;
   const double pos = x[static_cast<std::size_t>(2 * i)], vel = x[static_cast<std::size_t>(2 * i + 1)];
   const double integral = x[block(i) + kIntegral];
-  double out = c.Kp * (r.value - pos) + c.Ki * integral - c.Kd * vel + c.Kvff * r.rate + c.Kaff * r.accel;
-  out += compensation;
-  if (c.limit > 0) out = std::clamp(out, -c.limit, c.limit);
-  return out;
+  return c.Kp * (r.value - pos) + c.Ki * integral - c.Kd * vel + c.Kvff * r.rate + c.Kaff * r.accel + compensation;
+}
+
+double XyTable::pid(int i, std::span<const double> x, const InputValue& r, double compensation) const {
+  const double out = unsaturated(i, x, r, compensation);
+  const double limit = axes_[i].gains.limit;
+  return limit > 0 ? std::clamp(out, -limit, limit) : out;
 }
 
 double XyTable::command(int i, double t, std::span<const double> x, const InputValue& r) const {
@@ -153,6 +158,79 @@ void XyTable::derivatives(double t, std::span<const double> x, Inputs u, std::sp
     dx[p] = x[p + 1];
     dx[p + 1] = (drive - friction[static_cast<std::size_t>(i)]) / mass_[i];
   }
+}
+
+bool XyTable::jacobian(double t, std::span<const double> x, Inputs u, std::span<const double>, std::span<double> dfdx,
+                       std::span<double> dfdF) const {
+  const auto n = static_cast<std::size_t>(num_states());
+  constexpr std::size_t nc = 2;
+  // The compensators' partials first, with respect to w = (position, velocity, drive, z...): one
+  // without an analytic form leaves the whole Jacobian to difference quotients, nothing written.
+  // Sampled, they are not needed (the compensator's states are discrete, its output is in the
+  // held command). Scratch on the stack for up to kStack states each, else on the heap.
+  constexpr std::size_t kStack = 8, kW = 3 + kStack;
+  std::array<double, 2 * kW> dout_stack{};
+  std::array<double, 2 * kStack * kW> dderiv_stack{};
+  std::vector<double> heap[2];
+  std::span<double> dout[2], dderiv[2];
+  double comp_out[2] = {0.0, 0.0};
+  for (int i = 0; i < 2; ++i) {
+    const Compensator* comp = axes_[i].compensator.get();
+    if (!comp || sampled()) continue;
+    const auto nz = static_cast<std::size_t>(comp->num_states()), w = 3 + nz;
+    if (nz <= kStack) {
+      dout[i] = std::span<double>(dout_stack).subspan(static_cast<std::size_t>(i) * kW, w);
+      dderiv[i] = std::span<double>(dderiv_stack).subspan(static_cast<std::size_t>(i) * kStack * kW, nz * w);
+    } else {  // no compensator of the library has more than one state
+      heap[i].assign(w * (nz + 1), 0.0);
+      dout[i] = std::span<double>(heap[i]).first(w);
+      dderiv[i] = std::span<double>(heap[i]).subspan(w, nz * w);
+    }
+    const CompensatorInput in = measured(i, t, x, u[static_cast<std::size_t>(i)]);
+    const auto z = x.subspan(block(i) + comp_offset(), nz);
+    if (!comp->jacobian(in, z, dout[i], dderiv[i])) return false;
+    comp_out[i] = comp->output(in, z);
+  }
+
+  std::fill(dfdx.begin(), dfdx.begin() + static_cast<std::ptrdiff_t>(n * n), 0.0);
+  std::fill(dfdF.begin(), dfdF.begin() + static_cast<std::ptrdiff_t>(n * nc), 0.0);
+  auto at = [&](std::size_t row, std::size_t col) -> double& { return dfdx[row * n + col]; };
+  for (int i = 0; i < 2; ++i) {
+    const std::size_t p = static_cast<std::size_t>(2 * i), v = p + 1, b = block(i);
+    const double M = mass_[i];
+    at(p, v) = 1.0;                                     // d position / dt = velocity
+    dfdF[v * nc + static_cast<std::size_t>(i)] = -1.0 / M;  // M dv/dt = drive - F
+    if (sampled()) {
+      at(v, b + kApplied) = 1.0 / M;  // the held command; every discrete state has derivative 0
+      continue;
+    }
+    // Continuous: drive = sat(raw), raw = Kp (r - p) + Ki I - Kd v + feedforward + c(p, v, z).
+    const ControllerParams& g = axes_[i].gains;
+    const Compensator* comp = axes_[i].compensator.get();
+    const std::size_t nz = comp ? static_cast<std::size_t>(comp->num_states()) : 0, w = 3 + nz, zc = b + comp_offset();
+    const double raw = unsaturated(i, x, u[static_cast<std::size_t>(i)], comp_out[i]);
+    // Slope of the saturation: 1 inside (clamp is the identity at |raw| = limit too), 0 beyond.
+    const double s = g.limit > 0 && std::abs(raw) > g.limit ? 0.0 : 1.0;
+    // d drive / d(p, v, I, z_j): the compensator's output enters raw (it never reads the drive).
+    const double dp = s * (-g.Kp + (comp ? dout[i][0] : 0.0));
+    const double dv = s * (-g.Kd + (comp ? dout[i][1] : 0.0));
+    const double dI = s * g.Ki;
+    at(v, p) = dp / M;
+    at(v, v) = dv / M;
+    at(v, b + kIntegral) = dI / M;
+    for (std::size_t j = 0; j < nz; ++j) at(v, zc + j) = s * dout[i][3 + j] / M;
+    at(b + kIntegral, p) = -1.0;  // d I / dt = r - p
+    // The compensator's state equations: through p, v and the drive (which depends on p, v, I, z).
+    for (std::size_t k = 0; k < nz; ++k) {
+      const std::span<const double> row = dderiv[i].subspan(k * w, w);
+      const double dd = row[2];  // d (dz_k/dt) / d drive
+      at(zc + k, p) = row[0] + dd * dp;
+      at(zc + k, v) = row[1] + dd * dv;
+      at(zc + k, b + kIntegral) = dd * dI;
+      for (std::size_t j = 0; j < nz; ++j) at(zc + k, zc + j) = row[3 + j] + dd * s * dout[i][3 + j];
+    }
+  }
+  return true;
 }
 
 void XyTable::signals(double t, std::span<const double> x, Inputs u, std::span<PlantSignals> out) const {

@@ -635,11 +635,13 @@ class Engine {
   }
 
   void accumulate_stats() {
-    long nst = 0, nfe = 0;
+    long nst = 0, nfe = 0, nfe_jac = 0;
     CVodeGetNumSteps(sd_.mem, &nst);
     CVodeGetNumRhsEvals(sd_.mem, &nfe);
+    CVodeGetNumLinRhsEvals(sd_.mem, &nfe_jac);
     steps_ += nst;
     rhs_evals_ += nfe;
+    jacobian_rhs_evals_ += nfe_jac;
   }
 
   [[noreturn]] void fail(double t, const std::string& why) {
@@ -808,6 +810,7 @@ class Engine {
     accumulate_stats();
     tr.stats.steps = steps_;
     tr.stats.rhs_evaluations = rhs_evals_;
+    tr.stats.jacobian_rhs_evaluations = jacobian_rhs_evals_;
     tr.stats.restarts = restarts_;
   }
 
@@ -1029,7 +1032,7 @@ class Engine {
   double stop_set_ = -1.0;
   std::optional<detail::StepInterpolant> interpolant_;  // rows inside the last step (stiff mode)
   std::vector<double> y_row_;   // n: the state of an interpolated row
-  long steps_ = 0, rhs_evals_ = 0, restarts_ = 0;
+  long steps_ = 0, rhs_evals_ = 0, jacobian_rhs_evals_ = 0, restarts_ = 0;
 };
 
 }  // namespace

@@ -29,6 +29,46 @@ TEST(Feedback, LawOutsideZeroInsideTheDeadBand) {
   EXPECT_GT(fb.force(db * (1 + 1e-9)), 1.4);
 }
 
+TEST(Feedback, JacobianIsTheLawsSlopeOutsideTheDeadBand) {
+  // Stribeck (the slope changes sign through vs), an asymmetric law (each side its own) and a
+  // table (Hermite segments), both directions, inside and outside the band.
+  Asymmetric<Stribeck> asym;
+  asym.pos = Stribeck{1.0, 1.5, 0.01, 2.0, 0.4};
+  asym.neg = Stribeck{0.8, 1.1, 0.02, 1.0, 0.3};
+  const Table table({0.001, 0.01, 0.1}, {1.2, 1.0, 1.3});  // m/s, N (mirrored for v < 0)
+  constexpr double kFdRelTol = 1e-6;  // central differences of a smooth curve, step 1e-6 of v: ~1e-9
+  for (const FrictionLaw& law : {FrictionLaw(stribeck()), FrictionLaw(asym), FrictionLaw(table)}) {
+    const FeedbackCompensation fb(law, {.dead_band = 2e-3});
+    for (double v : {-0.3, -0.012, -0.004, -1e-3, 0.0, 5e-4, 0.004, 0.012, 0.3}) {
+      SCOPED_TRACE(law.name() + " at v = " + std::to_string(v));
+      CompensatorInput in;
+      in.velocity = v;
+      in.position = 0.02;
+      in.drive = 3.0;
+      std::vector<double> z(1);
+      fb.initial_states(in, z);
+      testing::expect_jacobian_matches(fb, in, z, kFdRelTol);
+      std::vector<double> dy(4), df(4);
+      ASSERT_TRUE(fb.jacobian(in, z, dy, df));
+      if (std::abs(v) <= 2e-3) {
+        EXPECT_EQ(dy[1], 0.0);  // inside the dead band: the output is 0
+      }
+    }
+  }
+  // Outside the band the slope is the law's (Stribeck at 0.3 m/s: Fv plus a vanishing decay term).
+  const FeedbackCompensation fb(stribeck(), {.dead_band = 2e-3});
+  CompensatorInput in;
+  in.velocity = 0.3;
+  std::vector<double> z{1.0}, dy(4), df(4);
+  ASSERT_TRUE(fb.jacobian(in, z, dy, df));
+  EXPECT_NEAR(dy[1], 0.4, 1e-12);
+  // A dynamic law's output is its steady-state force, which has no differentiable form here.
+  const FeedbackCompensation dynamic(FrictionLaw(LuGre{}), {.dead_band = 2e-3});
+  dy.assign(4, -7.0);
+  EXPECT_FALSE(dynamic.jacobian(in, z, dy, df));
+  EXPECT_EQ(dy[1], -7.0);  // nothing written
+}
+
 TEST(Feedback, EventsLocateTheDeadBandEdges) {
   // The measured velocity decelerates linearly through rest: v = 0.01 - 0.02 t (m/s).
   const double db = 1e-3;

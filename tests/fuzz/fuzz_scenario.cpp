@@ -1,6 +1,7 @@
 // libFuzzer target: the scenario parser (load_scenario on a .yaml file). The scratch directory
-// also holds data.csv and data.mat (scenario_data.hpp), so that scenarios naming either reach the
-// data inputs, named constants, pulses and an initial position read from a column. Bad input
+// also holds data.csv, data.mat, model.json and law.yaml (scenario_data.hpp), so that scenarios
+// naming them reach the data inputs, named constants, pulses, an initial position read from a
+// column, an xy-table's path and a compensation's model file. Bad input
 // must end in std::invalid_argument; anything else is a finding.
 
 #include <cstddef>
@@ -15,7 +16,8 @@
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   using namespace frictionlab::fuzz;
-  (void)write_input("data.csv", reinterpret_cast<const std::uint8_t*>(kScenarioCsv), std::strlen(kScenarioCsv));
+  for (const auto& [name, text] : kScenarioTextFiles)
+    (void)write_input(name, reinterpret_cast<const std::uint8_t*>(text), std::strlen(text));
   std::filesystem::copy_file(std::string(FRICTIONLAB_FUZZ_DIR) + "/" + kScenarioMat, scratch_dir() / "data.mat");
   return 0;
 }

@@ -18,6 +18,9 @@
 #include "frictionlab/io/law_file.hpp"
 #include "frictionlab/io/load.hpp"
 #include "frictionlab/io/scenario.hpp"
+#include "frictionlab/plants/closed_loop.hpp"
+#include "frictionlab/plants/emps_pd.hpp"
+#include "frictionlab/plants/xy_table.hpp"
 
 namespace fl = frictionlab;
 namespace fs = std::filesystem;
@@ -50,6 +53,19 @@ void expect_read_or_refused(const fs::path& input, const TempDir& dir, const std
   } catch (const std::exception& e) {
     ADD_FAILURE() << input << ": not std::invalid_argument: " << e.what();
   }
+}
+
+// The types of the compensators a scenario's plant runs ("x: lugre-observer, y: none" on an
+// xy-table), "" when it runs none.
+std::string compensations(const fl::Plant& plant) {
+  auto type_of = [](const fl::Compensator* c) { return c ? c->type() : std::string(); };
+  if (const auto* loop = dynamic_cast<const fl::ClosedLoop*>(&plant)) return type_of(loop->compensator());
+  if (const auto* loop = dynamic_cast<const fl::EmpsPdLoop*>(&plant)) return type_of(loop->compensator());
+  if (const auto* xy = dynamic_cast<const fl::XyTable*>(&plant)) {
+    const std::string x = type_of(xy->axis(0).compensator.get()), y = type_of(xy->axis(1).compensator.get());
+    return x.empty() && y.empty() ? "" : "x: " + (x.empty() ? "none" : x) + ", y: " + (y.empty() ? "none" : y);
+  }
+  return "";
 }
 
 }  // namespace
@@ -89,10 +105,49 @@ TEST(FuzzRegressions, MatVariableLargerThanTheFileCouldHoldIsRefused) {
 
 TEST(FuzzRegressions, ScenarioInputsReadOrAreRefused) {
   TempDir dir;
-  std::ofstream(dir.file("data.csv")) << fl::fuzz::kScenarioCsv;
+  for (const auto& [name, text] : fl::fuzz::kScenarioTextFiles) std::ofstream(dir.file(name)) << text;
   fs::copy_file(kFuzzDir / fl::fuzz::kScenarioMat, dir.file("data.mat"));
   for (const fs::path& input : regressions("fuzz_scenario"))
     expect_read_or_refused(input, dir, "scenario.yaml", [](const std::string& p) { (void)fl::load_scenario(p); });
+}
+
+// The hand-made seeds of fuzz_scenario (the corpus files with an extension) are scenarios the
+// parser accepts, beside the same data and model files as the fuzzer's: a seed refused at its first
+// key would leave the fuzzer to find the deeper readers (an xy-table's axes, a compensation's model
+// file) by chance. The xy-table and compensation seeds build what they name.
+TEST(FuzzSeeds, ScenarioSeedsLoad) {
+  TempDir dir;
+  for (const auto& [name, text] : fl::fuzz::kScenarioTextFiles) std::ofstream(dir.file(name)) << text;
+  fs::copy_file(kFuzzDir / fl::fuzz::kScenarioMat, dir.file("data.mat"));
+  int seeds = 0;
+  for (const auto& e : fs::directory_iterator(kFuzzDir / "corpus" / "fuzz_scenario")) {
+    if (!e.path().has_extension()) continue;  // inputs the fuzzer kept: any input may be refused
+    const std::string path = dir.file("scenario.yaml");
+    fs::copy_file(e.path(), path, fs::copy_options::overwrite_existing);
+    ++seeds;
+    try {
+      const fl::Scenario sc = fl::load_scenario(path);
+      const std::string file = e.path().filename().string();
+      if (file.rfind("xy_", 0) == 0) {
+        ASSERT_TRUE(sc.plant) << file;
+        EXPECT_EQ(sc.plant->type(), "xy-table") << file;
+        EXPECT_EQ(sc.inputs.size(), 2u) << file;
+      }
+      const std::string built = compensations(*sc.plant);
+      if (file == "xy_axis_compensations.yaml") {
+        EXPECT_EQ(built, "x: lugre-observer, y: disturbance-observer");
+      } else if (file == "xy_shared_feedback.yaml") {
+        EXPECT_EQ(built, "x: feedback, y: none");  // y says `compensation: none`
+      } else if (file == "xy_circle_compensated.yaml") {
+        EXPECT_EQ(built, "x: feedforward, y: feedforward");
+      } else if (file.find("compensat") != std::string::npos) {
+        EXPECT_NE(built, "") << file << ": no compensation built";
+      }
+    } catch (const std::exception& e2) {
+      ADD_FAILURE() << e.path() << ": a seed the parser refuses: " << e2.what();
+    }
+  }
+  EXPECT_GE(seeds, 20);  // the 14 single-axis seeds and the xy-table and compensation ones
 }
 
 TEST(FuzzRegressions, LawInputsReadOrAreRefused) {

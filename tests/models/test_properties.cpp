@@ -12,19 +12,14 @@
 #include <vector>
 
 #include "frictionlab/models/friction_law.hpp"
+#include "property_cases.hpp"
 
 namespace frictionlab {
 namespace {
 
 constexpr unsigned kSeed = 20240611;
 
-int property_cases() {
-  if (const char* text = std::getenv("FRICTIONLAB_PROPERTY_CASES")) {
-    const int n = std::atoi(text);
-    if (n > 0) return n;
-  }
-  return 1000;
-}
+using testing::property_cases;
 
 class Random {
  public:

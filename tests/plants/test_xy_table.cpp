@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "error_message.hpp"
+#include "xy_loop.hpp"
 #include "frictionlab/control/feedback.hpp"
 #include "frictionlab/control/feedforward.hpp"
 #include "frictionlab/models/static_coulomb_viscous.hpp"
@@ -22,21 +23,10 @@
 
 using namespace frictionlab;
 using frictionlab::testing::error_of;
+using frictionlab::testing::gains_for;
+using frictionlab::testing::relative_difference;
 
 namespace {
-
-// A 40 Hz PID position loop with velocity and acceleration feedforward for a body of mass M.
-ControllerParams gains_for(double M) {
-  const double w = 2.0 * std::numbers::pi * 40.0;
-  ControllerParams c;
-  c.Kp = M * w * w;
-  c.Kd = 1.4 * w * M;
-  c.Ki = c.Kp * w / 10.0;
-  c.Kvff = c.Kd;
-  c.Kaff = M;
-  c.limit = 400.0;
-  return c;
-}
 
 XyAxis axis_of(double mass, FrictionLaw law, ControllerParams gains) {
   XyAxis a;
@@ -44,17 +34,6 @@ XyAxis axis_of(double mass, FrictionLaw law, ControllerParams gains) {
   a.law = std::move(law);
   a.gains = gains;
   return a;
-}
-
-// Largest |a - b| over the columns, relative to b's largest magnitude.
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  EXPECT_EQ(a.size(), b.size());
-  double scale = 1e-300, diff = 0.0;
-  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
-    scale = std::max(scale, std::abs(b[i]));
-    diff = std::max(diff, std::abs(a[i] - b[i]));
-  }
-  return diff / scale;
 }
 
 }  // namespace

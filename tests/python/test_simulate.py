@@ -42,6 +42,7 @@ def test_craig_trapezoid_switch_times(example):
     assert tr.switches[0]["time"] == pytest.approx(0.0015 / 0.0141 / 0.003, rel=1e-6)
     assert tr.switches[1]["time"] == pytest.approx(102.0, abs=0.05)
     assert tr.stats["solver"] == "hybrid"
+    assert tr.stats["jacobian_rhs_evaluations"] > 0  # the hybrid engine's Newton matrices: difference quotients
     assert tr.law_state.shape == (0, len(tr))
 
 
@@ -49,6 +50,9 @@ def test_canudas_stick_slip_lugre(example):
     # DESIGN.md reference (tight LSODA run): period 6.36 s, peak slip velocity 0.370 m/s.
     tr = fl.simulate(example("canudas_stick_slip"))
     assert tr.law_state.shape == (1, len(tr))
+    # The stiff engine on the spring-base plant's analytic Jacobian: no difference quotients.
+    assert tr.stats["solver"] == "stiff" and tr.stats["jacobian_rhs_evaluations"] == 0
+    assert tr.stats["rhs_evaluations"] > tr.stats["steps"] > 0
     s = fl.detect_stick_slip(tr)
     assert s.period == pytest.approx(6.36, abs=0.01)
     assert s.peak_slip_velocity == pytest.approx(0.370, abs=0.001)

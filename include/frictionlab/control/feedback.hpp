@@ -26,6 +26,13 @@ class FeedbackCompensation : public BandCompensation {
   explicit FeedbackCompensation(FrictionLaw law, FeedbackParams p = {});
 
   std::string type() const override { return "feedback"; }
+  /// d output / d velocity = the law's slope dF/dv at the measured velocity (N s/m or N m s/rad)
+  /// outside the dead band (in the region the state holds), 0 inside it; every other entry 0 (the
+  /// region is discrete). The slope comes from forward-mode automatic differentiation of the law's
+  /// sliding formula, so it is exact. Static laws only: for a dynamic law (whose output is the
+  /// steady-state force) it returns false, writing nothing.
+  bool jacobian(const CompensatorInput& in, std::span<const double> z, std::span<double> doutput,
+                std::span<double> dderiv) const override;
   const FeedbackParams& params() const { return p_; }
 
  protected:

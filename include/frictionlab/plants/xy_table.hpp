@@ -88,6 +88,18 @@ class XyTable : public Plant {
   void applied(double t, std::span<const double> x, Inputs u, std::span<double> force) const override;
   void derivatives(double t, std::span<const double> x, Inputs u, std::span<const double> friction,
                    std::span<double> dx) const override;
+  /// Analytic partials of derivatives() (the stiff engine's Newton matrix; layout as
+  /// Plant::jacobian: dfdx num_states()^2 and dfdF num_states() x 2, row-major). Continuous: each
+  /// axis's PID terms through the saturation (slope 1 while |command| <= limit, 0 beyond it), the
+  /// compensator's partials from Compensator::jacobian (its output into the command, its state
+  /// equations through the measured position, velocity and the saturated command). Sampled: the
+  /// held command is a state and the discrete states do not move between samples. The axes do not
+  /// couple: the x block never depends on y's states. Returns false, writing nothing, when a
+  /// compensator of a continuous loop has no analytic partials (Compensator::jacobian returns
+  /// false: a feedback compensation of a dynamic law): the engine then uses difference quotients.
+  /// No allocation for compensators of up to 8 states.
+  bool jacobian(double t, std::span<const double> x, Inputs u, std::span<const double> friction,
+                std::span<double> dfdx, std::span<double> dfdF) const override;
   void signals(double t, std::span<const double> x, Inputs u, std::span<PlantSignals> out) const override;
   double sample_period() const override { return timing_.Ts; }
   void sample(double t, std::span<double> x, Inputs u) const override;
@@ -108,6 +120,8 @@ class XyTable : public Plant {
   std::size_t comp_offset() const { return sampled() ? 3 : 1; }
   CompensatorInput measured(int i, double t, std::span<const double> x, const InputValue& r) const;
   double pid(int i, std::span<const double> x, const InputValue& r, double compensation) const;
+  // The PID terms' value before the saturation (N), compensation included.
+  double unsaturated(int i, std::span<const double> x, const InputValue& r, double compensation) const;
 
   XyAxis axes_[2];
   XyTiming timing_;

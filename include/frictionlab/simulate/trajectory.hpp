@@ -33,7 +33,12 @@ struct PlantEvent {
 /// Counters of the integrator.
 struct SimulationStats {
   long steps = 0;             ///< CVODE steps (fixed-step mode: steps of dt)
-  long rhs_evaluations = 0;   ///< right-hand side calls
+  long rhs_evaluations = 0;   ///< right-hand side calls of the integrator's steps and Newton iterations
+  /// Right-hand side calls CVODE made to build Newton matrices by difference quotients (one per
+  /// state and matrix; not in rhs_evaluations); 0 where the plant and laws give an analytic
+  /// Jacobian (stiff runs with dynamic laws on plants that provide Plant::jacobian) and in
+  /// fixed-step mode.
+  long jacobian_rhs_evaluations = 0;
   long restarts = 0;          ///< CVODE re-initialisations (mode switches and input corners)
   const char* solver = "";    ///< the solver mode actually used ("hybrid", "stiff", "fixed-step")
 };
