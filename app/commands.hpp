@@ -18,5 +18,6 @@ Handler register_identify(CLI::App& app);
 Handler register_validate(CLI::App& app);
 Handler register_analyze(CLI::App& app);
 Handler register_export(CLI::App& app);
+Handler register_plan(CLI::App& app);
 
 }  // namespace frictionlab::cli
