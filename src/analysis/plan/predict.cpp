@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "frictionlab/format.hpp"
 #include "frictionlab/identify/breakaway.hpp"
 #include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/lugre.hpp"
@@ -192,6 +193,13 @@ MonteCarloSpread monte_carlo_spread(PlanMethod method, const ExperimentProfile& 
         out.warnings.push_back(name + " is not determined by this plan: " + std::to_string(params[name].flagged) +
                                " of " + std::to_string(ok) + " identifications could not determine it");
     }
+    // A bias the runs' spread cannot explain (beyond 4 standard errors of the mean and 1 % of
+    // the prior): the method, not the noise, limits this parameter on this plan.
+    if (!s.undetermined && std::isfinite(s.prior) && s.prior != 0 &&
+        std::abs(s.mean - s.prior) > std::max(4 * s.std_monte_carlo / std::sqrt(double(s.runs)), 0.01 * std::abs(s.prior)))
+      out.warnings.push_back(name + ": the estimates are biased by " + format_number(s.mean - s.prior, 3) + " " + s.unit +
+                             " (" + format_number(100 * (s.mean - s.prior) / std::abs(s.prior), 3) +
+                             " % of the prior), more than their spread explains");
     out.parameters.push_back(s);
   }
   for (const auto& name : readoff_order) out.readoff.push_back(spread(name, readoff[name], rig.prior(name), false));

@@ -68,6 +68,8 @@ struct MonteCarloSpread {
   /// breakaway: the spread of the lecture's read-offs (diagnostics.readoff Fs, Fc, Fv).
   std::vector<ParameterSpread> readoff;
   std::vector<std::string> undetermined;  ///< parameters the runs could not determine
+  /// Undetermined parameters, failed runs, and biases the spread cannot explain (a mean off the
+  /// prior by more than 4 standard errors and 1 %: the method, not the noise, limits it).
   std::vector<std::string> warnings;
   std::string first_failure;  ///< message of the first failed run
   /// The spread of `name`. \throws std::invalid_argument listing the names.
