@@ -106,16 +106,17 @@ Handler register_plan(CLI::App& app) {
   auto a = std::make_shared<PlanArgs>();
   auto* cmd = app.add_subcommand(
       "plan",
-      "Design an identification experiment (the excitation profile for the rig's controller) from a prior model and "
-      "the rig's scenario, and predict each parameter's standard deviation before anything is run: the plan is "
-      "simulated on the prior, the stated sensor noise added R times, the method's identification run on each copy "
-      "(Monte Carlo; with the Fisher-information std for sweep and idim)");
+      "Design an identification experiment (the profile for the rig's controller) from a prior model and a rig "
+      "scenario, and predict each parameter's std before it is run");
   cmd->footer(
+      "The plan is simulated on the prior, the sensor noise added R times, the method's identification run on each\n"
+      "copy (Monte Carlo); sweep and idim also report the Fisher-information std of their least-squares fits.\n"
       "Methods and what they need in the scenario:\n"
       "  breakaway  trapezoid of current (dc-motor, drive: current) or force (axis): ramp slow against M / Fv,\n"
       "             peak --margin x Fs (1.4), hold to steady state, ramp down.  Columns time_s,current_A\n"
-      "  sweep      velocity set points log-spaced from vs / 5 to the top speed, both directions, under a\n"
-      "             velocity loop (controller: {loop: velocity, ...}).  Columns time_s,velocity_rad_s (or _m_s)\n"
+      "  sweep      velocity set points log-spaced from vs / 5 (at least 4 below vs) to the top speed, both\n"
+      "             directions, under a velocity loop (controller: {loop: velocity, ...}).\n"
+      "             Columns time_s,velocity_rad_s (or _m_s)\n"
       "  idim       trapezoidal velocity moves out and back at 1, 1/2, 1/4 of the top speed, under a position\n"
       "             loop (controller: {loop: position, ...}).  Columns time_s,position_m (or _rad)\n"
       "  lugre      presliding sine (0.8 Fs) then sliding sine (2 Fs) of force or current; a LuGre prior.\n"
@@ -127,7 +128,7 @@ Handler register_plan(CLI::App& app) {
       "  the start).  A limit that leaves no experiment is exit status 2 naming it.\n"
       "A parameter the plan cannot determine (e.g. vs when no speed lies below it) has std null and a warning.\n"
       "Example: frictionlab plan breakaway --prior examples/plan/craig_motor_prior.json \\\n"
-      "           --scenario examples/craig_motor_trapezoid.yaml --noise current=1e-4,velocity=0.5 -o ramp.csv");
+      "           --scenario examples/craig_motor_trapezoid.yaml --noise current=2e-4,velocity=0.5 -o ramp.csv");
   cmd->add_option("METHOD", a->method, "breakaway, sweep, idim or lugre")->required();
   cmd->add_option("--prior", a->prior,
                   "Prior model: MODEL.json written by frictionlab identify ... --json (its law; parameters.M replaces "
@@ -153,7 +154,7 @@ Handler register_plan(CLI::App& app) {
   cmd->add_option("--rate", a->rate, "Sample rate of the profile and of the simulated measurement, Hz (default: the "
                                      "scenario's output_rate)");
   cmd->add_flag("--overwrite", a->overwrite, "Replace an existing -o or --json file");
-  register_json_output(cmd, json, [] { return std::string("plan"); });
+  register_json_output(cmd, json, [a] { return a->method.empty() ? std::string("plan") : a->method; });
   return [a]() -> int { return run(*a); };
 }
 

@@ -14,15 +14,7 @@ PlanRig load_plan_rig(const std::string& prior_path, const std::string& scenario
   const nlohmann::json j = read_model_json(prior_path);
   const FrictionLaw law = j.contains("law") && j["law"].is_object() ? law_from_json(j["law"], prior_path + ": law")
                                                                      : law_from_json(j, prior_path);
-  std::optional<double> inertia;
-  if (j.contains("parameters") && j["parameters"].is_object() && j["parameters"].contains("M")) {
-    const auto& m = j["parameters"]["M"];
-    const auto& v = m.is_object() ? m.value("value", nlohmann::json()) : m;
-    if (!v.is_number())
-      throw std::invalid_argument(prior_path + ": parameters.M: expected the inertia, a number > 0 (kg or kg m^2), got " +
-                                  v.dump());
-    inertia = v.get<double>();
-  }
+  const std::optional<double> inertia = model_inertia(j, prior_path);
   std::optional<Axis> axis;
   if (j.contains("axis")) {
     if (!j["axis"].is_string())
