@@ -26,6 +26,20 @@ def _items(argument, value, keys):
     return [",".join(items)] if items else []
 
 
+def _whole(argument, value):
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value != int(value):
+        raise _core.ArgumentTypeError(f"plan: argument {argument}: expected a whole number, got {value!r}")
+    return int(value)
+
+
+def _number(argument, value):
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise _core.ArgumentTypeError(f"plan: argument {argument}: expected a number, got {type(value).__name__}")
+    if not math.isfinite(value):
+        raise ValueError(f"plan: argument {argument}: expected a finite number, got {value!r}")
+    return float(value)
+
+
 def plan(method, prior, scenario, *, noise=None, limits=None, runs=0, seed=1, margin=0.0, lag_fraction=0.01,
          speeds=15, rate=0.0, output=None, overwrite=False):
     """Design an experiment and predict the std of each parameter.
@@ -47,9 +61,13 @@ def plan(method, prior, scenario, *, noise=None, limits=None, runs=0, seed=1, ma
     the plan cannot determine NAME, which is then listed in ``result["undetermined"]``).
     Raises ValueError naming the limit that makes the plan impossible, or a bad key.
     """
+    if not isinstance(method, str):
+        raise _core.ArgumentTypeError(f"plan: argument method: expected one of breakaway, sweep, idim, lugre; "
+                                      f"got {type(method).__name__}")
     text, t, u = _core._plan(method, prior, scenario, _items("noise", noise, _NOISE_KEYS),
-                             _items("limits", limits, _LIMIT_KEYS), int(runs), int(seed), float(margin),
-                             float(lag_fraction), int(speeds), float(rate), output, bool(overwrite))
+                             _items("limits", limits, _LIMIT_KEYS), _whole("runs", runs), _whole("seed", seed),
+                             _number("margin", margin), _number("lag_fraction", lag_fraction),
+                             _whole("speeds", speeds), _number("rate", rate), output, bool(overwrite))
     result = json.loads(text)
     result["profile"]["time"] = t
     result["profile"]["command"] = u
