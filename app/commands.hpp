@@ -19,5 +19,6 @@ Handler register_validate(CLI::App& app);
 Handler register_analyze(CLI::App& app);
 Handler register_export(CLI::App& app);
 Handler register_merge(CLI::App& app);
+Handler register_plan(CLI::App& app);
 
 }  // namespace frictionlab::cli

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   add(frictionlab::cli::register_validate);
   add(frictionlab::cli::register_analyze);
   add(frictionlab::cli::register_export);
+  add(frictionlab::cli::register_plan);
   add(frictionlab::cli::register_merge);
 
   // Every failure goes through fail() (app/output.hpp): one line on stderr, and the error JSON

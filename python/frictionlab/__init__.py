@@ -52,6 +52,7 @@ from .data import Data, load
 # every method of the library's table (see frictionlab.identify): nothing here names them.
 from .identify import METHOD_FUNCTIONS as _METHOD_FUNCTIONS
 from .identify import fit_static_law, methods
+from .plan import plan
 from .simulate import simulate
 
 globals().update(_METHOD_FUNCTIONS)
@@ -60,8 +61,8 @@ __all__ = [
     "ArgumentTypeError", "BreakawayOptions", "ContourResult", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
     "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
-    "analyze_contour", "analyze_map", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "law_names", "load", "load_law",
-    "methods", "sha256_file", "simulate", *_METHOD_FUNCTIONS,
+    "analyze_contour", "analyze_map", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "law_names", "load",
+    "load_law", "methods", "plan", "sha256_file", "simulate", *_METHOD_FUNCTIONS,
 ]
 
 

@@ -135,6 +135,7 @@ py::array_t<double> to_array(std::span<const double> values) {
 
 void init_export(py::module_& m);  // export.cpp: export_c (the C header of io/c_export.hpp)
 void init_contour(py::module_& m);  // contour.cpp: analyze_contour (analysis/contour.hpp)
+void init_plan(py::module_& m);  // plan.cpp: _plan, the core of frictionlab.plan (analysis/plan/plan.hpp)
 
 }  // namespace frictionlab::python
 
@@ -172,4 +173,5 @@ PYBIND11_MODULE(_core, m) {
   fp::init_analysis(m);
   fp::init_export(m);
   fp::init_contour(m);
+  fp::init_plan(m);
 }

@@ -631,15 +631,7 @@ ExportModel read_export_model(const std::string& path) {
   if (ext == ".yaml" || ext == ".yml") return {load_law(path), std::nullopt};
   const nlohmann::json j = read_model_json(path);
   ExportModel m{law_from_json(j, path), std::nullopt};
-  // M as `identify --json` writes it ({"value": v, ...}) or as a plain number.
-  if (j.contains("parameters") && j["parameters"].is_object() && j["parameters"].contains("M")) {
-    const auto& p = j["parameters"]["M"];
-    const auto& v = p.is_object() ? p.value("value", nlohmann::json()) : p;
-    if (!v.is_number())
-      throw std::invalid_argument(path + ": parameters.M: expected the identified inertia, a number (kg or kg m^2), got " +
-                                  v.dump());
-    m.inertia = v.get<double>();
-  }
+  m.inertia = model_inertia(j, path);
   return m;
 }
 

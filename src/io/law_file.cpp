@@ -160,4 +160,14 @@ nlohmann::json law_to_json(const FrictionLaw& law) {
   return j;
 }
 
+std::optional<double> model_inertia(const nlohmann::json& j, const std::string& path) {
+  if (!j.contains("parameters") || !j["parameters"].is_object() || !j["parameters"].contains("M")) return std::nullopt;
+  const auto& p = j["parameters"]["M"];
+  const auto& v = p.is_object() ? p.value("value", nlohmann::json()) : p;
+  if (!v.is_number())
+    throw std::invalid_argument(path + ": parameters.M: expected the identified inertia, a number (kg or kg m^2), got " +
+                                v.dump());
+  return v.get<double>();
+}
+
 }  // namespace frictionlab

@@ -65,6 +65,8 @@ def array_calls(idim_ok, emps, source_dir):
 
 # Public functions whose arguments are a path or a scenario (not arrays): name -> argument.
 PATH_CALLS = {"analyze_map": "scenario", "load": "path", "load_law": "path", "sha256_file": "path", "simulate": "scenario", "export_c": "model"}
+# Public functions of files and keyword options, each with its own test below.
+OTHER_CALLS = {"plan"}
 # Public names that take no array: result and option classes (made by the package or with no
 # arguments), the version, the lists of law names and of methods. FrictionLaw's dict is tested on its own below.
 NO_ARRAYS = {"ArgumentTypeError", "BreakawayOptions", "ContourResult", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
@@ -77,12 +79,12 @@ ARRAY_FUNCTIONS = {"identify_idim", "idim_regression", "cross_test", "idim_recon
 
 
 def test_every_public_name_is_covered():
-    missing = set(fl.__all__) - ARRAY_FUNCTIONS - set(PATH_CALLS) - NO_ARRAYS
+    missing = set(fl.__all__) - ARRAY_FUNCTIONS - set(PATH_CALLS) - NO_ARRAYS - OTHER_CALLS
     assert not missing, f"public names without hostile-input tests (add them to tests/python/test_hostile.py): {missing}"
     # Every public function with an array-like parameter is in the array table.
     for name in fl.__all__:
         obj = getattr(fl, name)
-        if inspect.isfunction(obj) and name not in ARRAY_FUNCTIONS | set(PATH_CALLS):
+        if inspect.isfunction(obj) and name not in ARRAY_FUNCTIONS | set(PATH_CALLS) | OTHER_CALLS:
             assert not inspect.signature(obj).parameters, f"{name} takes arguments but is not tested here"
     # FrictionLaw's public methods that take arrays are covered too.
     law_methods = {m for m in dir(fl.FrictionLaw) if not m.startswith("_")
@@ -189,6 +191,29 @@ def test_path_arguments_are_checked():
             with pytest.raises((ValueError, TypeError)) as info:
                 getattr(fl, fname)(bad)
             assert re.search(rf"\b{arg}\b", str(info.value)), f"{fname}({bad!r}): {info.value}"
+
+
+def test_plan_arguments_name_themselves(source_dir):
+    prior = source_dir / "examples" / "plan" / "craig_motor_prior.json"
+    motor = source_dir / "examples" / "craig_motor_trapezoid.yaml"
+    for bad in (None, 1.5, np.array([1.0])):
+        for arg in ("prior", "scenario"):
+            paths = {"prior": prior, "scenario": motor, arg: bad}
+            with pytest.raises((ValueError, TypeError)) as info:
+                fl.plan("breakaway", paths["prior"], paths["scenario"], runs=2)
+            assert re.search(rf"\b{arg}\b", str(info.value)), f"{arg}={bad!r}: {info.value}"
+    for key, argument in (("current", "noise"), ("speed", "limits")):
+        for bad in (math.nan, "a", True, -1.0, [1.0]):
+            with pytest.raises((ValueError, TypeError)) as info:
+                fl.plan("breakaway", prior, motor, runs=2, **{argument: {key: bad}})
+            assert key in str(info.value) and argument in str(info.value), f"{argument}[{key}]={bad!r}: {info.value}"
+    for argument, bad in (("runs", math.nan), ("runs", 1), ("seed", "a"), ("speeds", 2.5), ("margin", math.inf),
+                          ("rate", None), ("method", None)):
+        kwargs = {"runs": 2, argument: bad} if argument != "method" else {"runs": 2}
+        method = bad if argument == "method" else "breakaway"
+        with pytest.raises((ValueError, TypeError)) as info:
+            fl.plan(method, prior, motor, **kwargs)
+        assert re.search(rf"\b{argument}\b", str(info.value)), f"{argument}={bad!r}: {info.value}"
 
 
 def test_number_arguments_name_themselves(idim_ok):

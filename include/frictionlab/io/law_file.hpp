@@ -13,6 +13,7 @@
 // object when present, else its "model" (the law name) with "parameters" mapping names to
 // {"value": v, "std": s, "unit": u}.
 
+#include <optional>
 #include <string>
 
 #include <nlohmann/json_fwd.hpp>
@@ -45,6 +46,12 @@ FrictionLaw load_law(const std::string& path);
 /// has no law to use). The one reader of model files (identify lugre --static, validate, Python's
 /// load_law). \throws std::invalid_argument naming the file.
 nlohmann::json read_model_json(const std::string& path);
+
+/// The identified inertia parameters.M of a MODEL.json (kg or kg m^2), as `identify --json` writes
+/// it ({"value": v, ...}) or as a plain number; nullopt when the model has none.
+/// \throws std::invalid_argument "PATH: parameters.M: expected the identified inertia, ..." when it
+///         is not a number.
+std::optional<double> model_inertia(const nlohmann::json& model, const std::string& path);
 
 /// The plain JSON form {"law": name, parameters..., lists...} of a law.
 nlohmann::json law_to_json(const FrictionLaw& law);

@@ -1,0 +1,46 @@
+// Experiment planning (analysis/plan/*.hpp): fl.plan's core, the JSON text and the profile samples.
+#include <pybind11/stl.h>
+
+#include "common.hpp"
+#include "frictionlab/analysis/plan/plan.hpp"
+#include "frictionlab/io/atomic_write.hpp"
+#include "frictionlab/io/plan_files.hpp"
+
+namespace frictionlab::python {
+
+void init_plan(py::module_& m) {
+  m.def(
+      "_plan",
+      [](const std::string& method, const py::handle& prior, const py::handle& scenario,
+         const std::vector<std::string>& noise, const std::vector<std::string>& limits, int runs, std::uint64_t seed,
+         double margin, double lag_fraction, int speeds, double rate, const py::handle& output, bool overwrite) {
+        const PlanMethod pm = parse_plan_method(method);
+        PlanOptions o;
+        o.noise = parse_sensor_noise(noise, "plan: noise");
+        o.limits = parse_plan_limits(limits, "plan: limits");
+        o.design.margin = margin;
+        o.design.lag_fraction = lag_fraction;
+        o.design.speeds = speeds;
+        o.design.sample_rate = rate;
+        o.runs = runs;
+        o.seed = seed;
+        const std::string out_path = output.is_none() ? std::string() : path_arg(output, "plan", "output");
+        if (!out_path.empty()) check_output_path(out_path, overwrite);
+        const PlanRig rig = load_plan_rig(path_arg(prior, "plan", "prior"), path_arg(scenario, "plan", "scenario"));
+        PlanResult r;
+        {
+          py::gil_scoped_release release;
+          r = plan_experiment(pm, rig, o);
+        }
+        if (r.ok && !out_path.empty()) write_file_atomic(out_path, r.profile.to_csv(), {overwrite});
+        std::vector<double> t, u;
+        r.profile.samples(t, u);
+        return py::make_tuple(plan_to_json(r, o, out_path, -1), to_array(t), to_array(u));
+      },
+      py::arg("method"), py::arg("prior"), py::arg("scenario"), py::arg("noise"), py::arg("limits"), py::arg("runs"),
+      py::arg("seed"), py::arg("margin"), py::arg("lag_fraction"), py::arg("speeds"), py::arg("rate"), py::arg("output"),
+      py::arg("overwrite"),
+      "Core of frictionlab.plan: returns (JSON text, profile time s, profile command).");
+}
+
+}  // namespace frictionlab::python

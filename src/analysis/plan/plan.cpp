@@ -1,0 +1,152 @@
+#include "frictionlab/analysis/plan/plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "frictionlab/format.hpp"
+#include "frictionlab/simulate/simulate.hpp"
+
+namespace frictionlab {
+
+namespace {
+
+constexpr int kDefaultRuns = 40;       // sample std to about 11 % (1 / sqrt(2 (R - 1)))
+constexpr int kDefaultLugreRuns = 8;   // each LuGre output-error fit takes about a second
+constexpr double kLimitSlack = 1.02;   // a simulated peak within 2 % of a limit (loop overshoot) passes
+
+nlohmann::json number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
+nlohmann::json spread_json(const ParameterSpread& s) {
+  nlohmann::json j;
+  j["prior"] = number(s.prior);
+  j["mean"] = number(s.mean);
+  j["bias"] = number(s.mean - s.prior);
+  j["std"] = number(s.std_monte_carlo);
+  j["std_monte_carlo"] = number(s.std_monte_carlo);
+  j["std_fisher"] = number(s.std_fisher);
+  const double ref = std::isfinite(s.prior) && s.prior != 0 ? s.prior : s.mean;
+  j["relative_std_percent"] = number(100 * s.std_monte_carlo / std::abs(ref));
+  j["unit"] = s.unit;
+  j["runs"] = s.runs;
+  return j;
+}
+
+}  // namespace
+
+PlanResult plan_experiment(PlanMethod method, const PlanRig& rig, const PlanOptions& options) {
+  PlanResult out;
+  out.method = plan_method_name(method);
+  out.prior_file = rig.prior_file;
+  out.scenario_file = rig.scenario_file;
+  out.drive = plan_drive_name(rig.drive);
+  out.axis = rig.axis;
+  out.profile = design_experiment(method, rig, options.limits, options.noise, options.design);
+  const ExperimentProfile& p = out.profile;
+  const Trajectory clean = simulate_profile(p, rig, rig.law);
+
+  // What the clean run on the prior reaches, against the limits.
+  const Axis ax = rig.axis;
+  double xmax = 0, vmax = 0, fmax = 0, imax = 0;
+  for (std::size_t i = 0; i < clean.rows(); ++i) {
+    xmax = std::max(xmax, std::abs(clean.position[i] - clean.position[0]));
+    vmax = std::max(vmax, std::abs(clean.velocity[i]));
+    fmax = std::max(fmax, std::abs(clean.drive[i]));
+    imax = std::max(imax, std::abs(clean.current[i]));
+  }
+  const std::string xu(unit(Quantity::displacement, ax)), vu(unit(Quantity::velocity, ax)), fu(unit(Quantity::force, ax));
+  out.simulated.push_back({"peak_speed", vmax, vu, "largest |velocity| on the prior"});
+  out.simulated.push_back({"excursion", xmax, xu, "largest |position - start| on the prior"});
+  out.simulated.push_back({"peak_force", fmax, fu, "largest |drive force| on the prior"});
+  if (rig.torque_constant > 0) out.simulated.push_back({"peak_current", imax, "A", "largest |motor current| on the prior"});
+  const PlanLimits& l = options.limits;
+  if (xmax > l.travel)
+    throw std::invalid_argument("--limits travel = " + format_number(l.travel, 4) + " " + xu + ": the plan moves the axis " +
+                                format_number(xmax, 4) + " " + xu + " from its start on the prior (a " + out.method +
+                                " plan needs that travel; a rotary axis without end stops has no travel limit)");
+  if (vmax > kLimitSlack * l.speed)
+    out.warnings.push_back("the simulated run reaches " + format_number(vmax, 4) + " " + vu + ", above --limits speed = " +
+                           format_number(l.speed, 4) + " " + vu + " (the loop overshoots its set point)");
+  if (fmax > kLimitSlack * l.force)
+    out.warnings.push_back("the simulated run needs " + format_number(fmax, 4) + " " + fu + ", above --limits force");
+  if (imax > kLimitSlack * l.current)
+    out.warnings.push_back("the simulated run needs " + format_number(imax, 4) + " A, above --limits current");
+  for (const auto& s : clean.switches) {
+    if (s.kind == SwitchKind::breakaway) {
+      out.simulated.push_back({"breakaway_time", s.time, "s", "first breakaway on the prior"});
+      break;
+    }
+  }
+  if (method == PlanMethod::breakaway)
+    for (auto it = clean.switches.rbegin(); it != clean.switches.rend(); ++it)
+      if (it->kind == SwitchKind::stick) {
+        out.simulated.push_back({"stop_time", it->time, "s", "return to standstill on the prior"});
+        break;
+      }
+
+  const int runs = options.runs > 0 ? options.runs : (method == PlanMethod::lugre ? kDefaultLugreRuns : kDefaultRuns);
+  out.prediction = monte_carlo_spread(method, p, rig, clean, options.noise, runs, options.seed, options.progress);
+  out.warnings.insert(out.warnings.begin(), p.warnings.begin(), p.warnings.end());
+  out.warnings.insert(out.warnings.end(), out.prediction.warnings.begin(), out.prediction.warnings.end());
+  out.undetermined = out.prediction.undetermined;
+  if (out.prediction.failed == runs) {
+    out.ok = false;
+    out.message = "the plan gives no identification on the prior: every one of " + std::to_string(runs) +
+                  " simulated runs failed; the first: " + out.prediction.first_failure;
+  }
+  return out;
+}
+
+std::string plan_to_json(const PlanResult& r, const PlanOptions& o, const std::string& profile_file, int indent) {
+  nlohmann::json j;
+  j["schema"] = 1;
+  j["status"] = r.ok ? "ok" : "error";
+  j["message"] = r.message;
+  j["method"] = r.method;
+  j["prior"] = {{"file", r.prior_file}};
+  j["scenario"] = {{"file", r.scenario_file}, {"drive", r.drive}};
+  j["axis"] = r.axis == Axis::rotary ? "rotary" : "linear";
+  const ExperimentProfile& p = r.profile;
+  nlohmann::json prof;
+  if (!profile_file.empty()) prof["file"] = profile_file;
+  prof["columns"] = p.column_names();
+  prof["command"] = p.command;
+  prof["unit"] = p.command_unit;
+  prof["duration_s"] = p.duration;
+  prof["sample_rate_hz"] = p.sample_rate;
+  prof["samples"] = static_cast<long long>(std::floor(p.duration * p.sample_rate + 1e-9)) + 1;
+  nlohmann::json design = nlohmann::json::object();
+  for (const auto& f : p.figures) design[f.name] = {{"value", number(f.value)}, {"unit", f.unit}, {"what", f.what}};
+  prof["design"] = design;
+  nlohmann::json windows = nlohmann::json::array();
+  for (const auto& w : p.windows)
+    windows.push_back({{"kind", w.kind}, {"t_begin_s", w.t_begin}, {"t_end_s", w.t_end}, {"level", number(w.level)}});
+  prof["windows"] = windows;
+  j["profile"] = prof;
+  nlohmann::json sim = nlohmann::json::object();
+  for (const auto& f : r.simulated) sim[f.name] = {{"value", number(f.value)}, {"unit", f.unit}};
+  j["simulated"] = sim;
+  j["noise"] = {{"position", o.noise.position}, {"velocity", o.noise.velocity}, {"current", o.noise.current},
+                {"force", o.noise.force}, {"encoder", o.noise.encoder}};
+  j["limits"] = {{"current", number(o.limits.current)}, {"force", number(o.limits.force)},
+                 {"speed", number(o.limits.speed)}, {"min_speed", o.limits.min_speed},
+                 {"travel", number(o.limits.travel)}};
+  nlohmann::json pred;
+  pred["runs"] = r.prediction.runs;
+  pred["failed"] = r.prediction.failed;
+  pred["seed"] = r.prediction.seed;
+  nlohmann::json params = nlohmann::json::object();
+  for (const auto& s : r.prediction.parameters) params[s.name] = spread_json(s);
+  pred["parameters"] = params;
+  if (!r.prediction.readoff.empty()) {
+    nlohmann::json ro = nlohmann::json::object();
+    for (const auto& s : r.prediction.readoff) ro[s.name] = spread_json(s);
+    pred["readoff"] = ro;
+  }
+  j["prediction"] = pred;
+  j["undetermined"] = r.undetermined;
+  j["warnings"] = r.warnings;
+  return j.dump(indent);
+}
+
+}  // namespace frictionlab

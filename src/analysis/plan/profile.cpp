@@ -1,0 +1,53 @@
+#include "frictionlab/analysis/plan/profile.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+namespace frictionlab {
+
+namespace {
+std::string shortest(double x) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
+}  // namespace
+
+double ExperimentProfile::figure(const std::string& name) const {
+  std::string names;
+  for (const auto& f : figures) {
+    if (f.name == name) return f.value;
+    names += (names.empty() ? "" : ", ") + f.name;
+  }
+  throw std::invalid_argument("plan " + method + ": no figure '" + name + "'; the figures are " + names);
+}
+
+std::vector<std::string> ExperimentProfile::column_names() const {
+  std::string unit = command_unit;
+  for (auto& c : unit)
+    if (c == ' ' || c == '/') c = '_';
+  return {"time_s", command + "_" + unit};
+}
+
+void ExperimentProfile::samples(std::vector<double>& time, std::vector<double>& command_values) const {
+  const auto n = static_cast<std::size_t>(std::floor(duration * sample_rate + 1e-9)) + 1;
+  time.resize(n);
+  command_values.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    time[k] = static_cast<double>(k) / sample_rate;
+    command_values[k] = signal.at(time[k]).value;
+  }
+}
+
+std::string ExperimentProfile::to_csv() const {
+  std::vector<double> t, u;
+  samples(t, u);
+  const auto names = column_names();
+  std::string out = names[0] + "," + names[1] + "\n";
+  out.reserve(out.size() + t.size() * 24);
+  for (std::size_t k = 0; k < t.size(); ++k) out += shortest(t[k]) + "," + shortest(u[k]) + "\n";
+  return out;
+}
+
+}  // namespace frictionlab
