@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "frictionlab/models/parameter.hpp"
+#include "scratch.hpp"
 
 namespace frictionlab {
 namespace {
@@ -17,12 +18,6 @@ std::string step(double dt) { return detail::format_value(dt, 6); }
 
 std::string label_of(const RowLabeller& labeller, Eigen::Index k) { return labeller ? labeller(k) : sample_label(k); }
 
-double median_of(std::vector<double> values) {
-  auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), mid, values.end());
-  return *mid;
-}
-
 }  // namespace
 
 std::string sample_label(Eigen::Index k) { return "sample " + std::to_string(k + 1); }
@@ -31,13 +26,18 @@ TimeSteps time_steps(const Eigen::VectorXd& t) {
   TimeSteps s;
   const Eigen::Index n = t.size();
   if (n < 2) return s;
-  std::vector<double> steps(static_cast<std::size_t>(n - 1));
-  for (Eigen::Index k = 1; k < n; ++k) steps[static_cast<std::size_t>(k - 1)] = t(k) - t(k - 1);
-  const auto [lo, hi] = std::minmax_element(steps.begin(), steps.end());
-  s.min = *lo;
-  s.max = *hi;
+  // The steps go to the thread's scratch buffers (signal/scratch.hpp): every reader and method
+  // checks its time column, often twice per record, and a fresh array of a long record's size
+  // per check costs page faults on the virtual machines users run on.
+  detail::ScratchFrame frame;
+  Eigen::Map<Eigen::VectorXd> steps = frame.get(n - 1);
+  steps = t.tail(n - 1) - t.head(n - 1);
+  s.min = steps.minCoeff();
+  s.max = steps.maxCoeff();
   s.mean = (t(n - 1) - t(0)) / static_cast<double>(n - 1);
-  s.median = median_of(std::move(steps));
+  double* const mid = steps.data() + (n - 1) / 2;
+  std::nth_element(steps.data(), mid, steps.data() + (n - 1));
+  s.median = *mid;
   return s;
 }
 
