@@ -123,9 +123,10 @@ Eigen::VectorXd numeric_values(const matvar_t& v) {
 
 using U32Reader = std::function<std::uint32_t(const unsigned char*)>;
 
-// One subelement of a v5 variable's header as its tag declares it: byte count, where its data
-// start, where the next tag starts.
+// One subelement of a v5 variable's header as its tag declares it: data type, byte count, where
+// its data start, where the next tag starts.
 struct V5Subelement {
+  std::uint32_t type = 0;
   std::size_t bytes = 0, data_at = 0, next = 0;
 };
 
@@ -139,10 +140,12 @@ int v5_header_subelements(const unsigned char* p, std::size_t n, const U32Reader
     const std::uint32_t type = u32(p + at);
     V5Subelement& e = out[static_cast<std::size_t>(count)];
     if ((type >> 16) != 0) {  // small element: byte count in the upper half, data in the tag
+      e.type = type & 0xffffu;
       e.bytes = type >> 16;
       e.data_at = at + 4;
       e.next = at + 8;
     } else {
+      e.type = type;
       e.bytes = u32(p + at + 4);
       e.data_at = at + 8;
       e.next = e.data_at + (e.bytes + 7) / 8 * 8;
@@ -167,8 +170,11 @@ std::string v5_variable_name(const unsigned char* p, std::size_t n, const U32Rea
 // sizes their tags declare, before anything else is read, so a damaged tag (a name declaring
 // 3 GB) would be allocated as it stands. Each must fit in the variable (`element_bytes`, its
 // declared size), the flags take 8 bytes, the dimensions at most 64 (4-byte) values and the name
-// at most 4096 characters (MATLAB's own limit is 63). Returns the problem, or "" (also when the
-// n bytes end before the three tags: the later checks then speak).
+// at most 4096 characters (MATLAB's own limit is 63). Each must also be of the format's type
+// (flags miUINT32, dimensions miINT32 in whole 4-byte values, name miINT8): matio walks a header
+// of another type by other rules than the format's and can then read a name tag where the data
+// are (a 728-byte file had it allocate 4 GB). Returns the problem, or "" (also when the n bytes
+// end before the three tags: the later checks then speak).
 std::string v5_matrix_header_problem(const unsigned char* p, std::size_t n, std::size_t element_bytes, const U32Reader& u32) {
   constexpr std::uint32_t kMiMatrix = 14;
   if (n < 8 || u32(p) != kMiMatrix) return "";
@@ -181,6 +187,13 @@ std::string v5_matrix_header_problem(const unsigned char* p, std::size_t n, std:
     if (s.bytes > most[k] || s.next > 8 + element_bytes)
       return "the tag of its " + std::string(what[k]) + " declares " + std::to_string(s.bytes) +
              " bytes, more than the variable holds or than " + std::to_string(most[k]) + " (corrupt header)";
+    constexpr std::uint32_t kMiInt8 = 1, kMiInt32 = 5, kMiUint32 = 6;
+    const std::uint32_t type[3] = {kMiUint32, kMiInt32, kMiInt8};
+    const char* type_name[3] = {"miUINT32", "miINT32", "miINT8"};
+    if (s.type != type[k] || (k == 1 && s.bytes % 4 != 0))
+      return "the tag of its " + std::string(what[k]) + " declares data type " + std::to_string(s.type) + " and " +
+             std::to_string(s.bytes) + " bytes; expected " + type_name[k] + (k == 1 ? " values (4 bytes each)" : "") +
+             " (corrupt header)";
   }
   return "";
 }

@@ -103,6 +103,18 @@ TEST(FuzzRegressions, MatVariableLargerThanTheFileCouldHoldIsRefused) {
   }
 }
 
+// A 728-byte file whose dimensions tag is of data type 2048: matio read a name tag inside the
+// data and allocated 4.2 GB for it. Refused by the header-tag check before matio opens the file.
+TEST(FuzzRegressions, MatHeaderTagOfAnotherTypeIsRefused) {
+  TempDir dir;
+  const std::string path = dir.file("dims.mat");
+  fs::copy_file(kFuzzDir / "regressions" / "fuzz_mat" / "dims_tag_of_another_type_4GB_name.mat", path);
+  const std::string message = error_of([&] { (void)fl::load_dataset(path); });
+  EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+  EXPECT_NE(message.find("variable 2"), std::string::npos) << message;
+  EXPECT_NE(message.find("dimensions declares data type 2048 and 5 bytes; expected miINT32"), std::string::npos) << message;
+}
+
 TEST(FuzzRegressions, ScenarioInputsReadOrAreRefused) {
   TempDir dir;
   for (const auto& [name, text] : fl::fuzz::kScenarioTextFiles) std::ofstream(dir.file(name)) << text;
