@@ -82,14 +82,17 @@ std::string cell_text(const nlohmann::json& v) {
 
 std::string table_csv(const std::vector<std::string>& columns, const std::vector<std::map<std::string, nlohmann::json>>& rows) {
   std::string out;
-  for (std::size_t i = 0; i < columns.size(); ++i) out += (i ? "," : "") + csv_cell(columns[i]);
-  out += "\n";
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (i) out += ',';
+    out += csv_cell(columns[i]);
+  }
+  out += '\n';
   for (const auto& row : rows) {
     for (std::size_t i = 0; i < columns.size(); ++i) {
-      const auto it = row.find(columns[i]);
-      out += (i ? "," : "") + (it == row.end() ? std::string() : cell_text(it->second));
+      if (i) out += ',';
+      if (const auto it = row.find(columns[i]); it != row.end()) out += cell_text(it->second);
     }
-    out += "\n";
+    out += '\n';
   }
   return out;
 }
@@ -367,10 +370,11 @@ int run_identify_batch(const std::vector<std::string>& data, const BatchOptions&
   }
   progress_stop();
   if (ok == 0) {
+    const std::string& first = rows.front().result.message;
     // Exit 2 with the one error line of every failed run; the table holds each file's reason.
     print_error("every file failed (" + std::to_string(rows.size()) + " files" +
-                (o.table.empty() || o.table == "-" ? "" : "; table " + o.table) + "); the first: " + rows.front().job.file +
-                ": " + rows.front().result.message);
+                (o.table.empty() || o.table == "-" ? "" : "; table " + o.table) + "); the first: " +
+                (first.find(rows.front().job.file) == std::string::npos ? rows.front().job.file + ": " + first : first));
     return 2;
   }
   std::cerr << "frictionlab identify: " << rows.size() << " files: " << ok << " ok, " << rows.size() - ok << " failed";
@@ -381,8 +385,11 @@ int run_identify_batch(const std::vector<std::string>& data, const BatchOptions&
   std::size_t flagged = 0;
   for (const auto& d : drift) flagged += d.flagged;
   if (dated) std::cerr << "drift: " << flagged << " flagged (a change beyond " << o.drift_threshold << " combined std)\n";
-  for (const auto& r : rows)
-    if (!r.result.ok()) std::cerr << "  failed: " << r.job.file << ": " << r.result.message << "\n";
+  for (const auto& r : rows) {
+    if (r.result.ok()) continue;
+    const std::string& m = r.result.message;
+    std::cerr << "  failed: " << (m.find(r.job.file) == std::string::npos ? r.job.file + ": " + m : m) << "\n";
+  }
   return 0;
 }
 

@@ -10,7 +10,7 @@ tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 . "$src/tests/cli/lib.sh"
 
-/usr/bin/python3 "$src/tests/python/fleet_logs.py" "$tmp/fleet" > /dev/null
+/usr/bin/python3 "$src/examples/fleet_logs.py" "$tmp/fleet" > /dev/null
 sweep=(identify sweep --resample --model coulomb-viscous)
 
 # A folder: 8 good logs and 3 broken files, one row each, in name order; exit 0 (some ok).

@@ -13,7 +13,7 @@ import pytest
 
 import frictionlab as fl
 
-sys.path.insert(0, os.path.dirname(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples"))
 import fleet_logs  # noqa: E402
 
 # The sweep's Fc on these logs is within 3 % of the truth: the ten levels' means average the

@@ -1,5 +1,6 @@
-"""A fleet of realistic constant-velocity logs of one rotary axis over days, and broken files, for
-the batch tests (tests/python/test_batch.py and tests/cli/identify_batch.sh).
+"""A fleet of realistic constant-velocity logs of one rotary axis over days, and broken files: the
+data of examples/fleet_drift.py, the README's batch section and the batch tests
+(tests/python/test_batch.py, tests/cli/identify_batch.sh).
 
 Each good log: ten speed levels (both directions, 0.2 to 4 rad/s, 1.5 s each) reached through
 the axis' first-order response (time constant 0.05 s); the logged velocity has white noise
@@ -8,7 +9,8 @@ J a + an offset of the current sensor (3 mN m) with noise (5 mN m), quantised by
 (1 mN m); the logger's time starts at 1000 s and its steps jitter by +-2 % (so the files need
 resampling). Fc rises by 30 % from the sixth day on (wear): the drift test's step.
 
-    python3 fleet_logs.py DIR      writes the files into DIR and prints their names
+Usage: python3 examples/fleet_logs.py [DIR]   writes the files into DIR (default: fleet_logs) and
+                                              prints their names
 """
 import os
 import sys
@@ -71,5 +73,5 @@ def write_fleet(folder):
 
 
 if __name__ == "__main__":
-    for name in write_fleet(sys.argv[1]):
+    for name in write_fleet(sys.argv[1] if len(sys.argv) > 1 else "fleet_logs"):
         print(name)
