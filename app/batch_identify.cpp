@@ -186,7 +186,8 @@ void add_batch_options(CLI::App* cmd, BatchOptions& o) {
   o.table_opt = cmd->add_option("--table", o.table,
                                 "Write one row per file (index, file, status, message, parameters with std and unit, "
                                 "fit figures): CSV, or JSON when FILE ends in .json; '-' for stdout (CSV). "
-                                "Several files or a folder write the table to stdout without it")
+                                "Several files or a folder write the table to stdout without it. A file that fails is "
+                                "its row's status and message; exit status 2 only when every file failed")
                     ->group(g);
   cmd->add_option("--jobs", o.jobs, "Files identified at once (threads)")
       ->check(CLI::Range(1, 1024))
@@ -199,7 +200,8 @@ void add_batch_options(CLI::App* cmd, BatchOptions& o) {
       ->group(g);
   cmd->add_option("--drift", o.drift,
                   "With --date-from: write the drift table (each parameter by date, its change from the previous "
-                  "log and whether it exceeds --drift-threshold combined std): CSV, or JSON by .json")
+                  "log and whether it exceeds --drift-threshold combined std): CSV, or JSON by .json. With several "
+                  "files, --plot FIG draws the drift figure (each parameter with its std against the date)")
       ->group(g);
   cmd->add_option("--drift-threshold", o.drift_threshold,
                   "Flag a change larger than this many combined std (1: about 32 % of pairs flag from noise "
