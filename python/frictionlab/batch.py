@@ -31,6 +31,7 @@ import glob
 import inspect
 import io
 import json
+import logging
 import math
 import os
 
@@ -179,8 +180,10 @@ def _run(function, jobs, client, workers, processes):
             raise ValueError(f"workers = {workers!r}: expected a whole number >= 1 of local workers")
         from distributed import Client, LocalCluster
 
+        # silence_logs: the cluster's own log lines (a worker's "scheduler was unaware of this
+        # worker" while it closes) are noise here; an item's failure is its row's message.
         with LocalCluster(n_workers=workers, threads_per_worker=1, processes=processes, dashboard_address=None,
-                          silence_logs=40) as cluster, Client(cluster) as c:
+                          silence_logs=logging.CRITICAL) as cluster, Client(cluster) as c:
             return _run_on(c, function, jobs)
     return _run_on(client, function, jobs)
 

@@ -56,9 +56,10 @@ std::optional<LogDate> log_date_from_name(const std::string& path) {
       if (auto d = make_date(std::stoi(m[1]), std::stoi(m[3]), std::stoi(m[4]), 0, 0, 0, false)) last = d;
       continue;
     }
-    const bool has_time = m[5].matched;
-    const auto d = make_date(std::stoi(m[1]), std::stoi(m[3]), std::stoi(m[4]), has_time ? std::stoi(m[5]) : 0,
-                             has_time ? std::stoi(m[6]) : 0, m[7].matched ? std::stoi(m[7]) : 0, has_time);
+    const int y = std::stoi(m[1]), mo = std::stoi(m[3]), day = std::stoi(m[4]);
+    auto d = m[5].matched ? make_date(y, mo, day, std::stoi(m[5]), std::stoi(m[6]), m[7].matched ? std::stoi(m[7]) : 0, true)
+                          : std::nullopt;
+    if (!d) d = make_date(y, mo, day, 0, 0, 0, false);  // no time, or digits that are no time of day: the day
     if (d) last = d;
   }
   return last;

@@ -124,6 +124,16 @@ def test_data_files_forms_and_errors(fleet, tmp_path):
         fl.batch.data_files(folder + "/*.txt")
     with pytest.raises(ValueError, match="method 'swep'"):
         fl.batch.identify(folder, "swep", client=None)
+    with pytest.raises(ValueError, match="client = 'remote': expected 'local', None"):
+        fl.batch.identify(folder, "sweep", client="remote")
+    with pytest.raises(ValueError, match="workers = 0: expected a whole number >= 1"):
+        fl.batch.identify(folder, "sweep", workers=0)
+    with pytest.raises(TypeError, match="load: expected a dict"):
+        fl.batch.identify(folder, "sweep", client=None, load=True)
+    with pytest.raises(ValueError, match="date_from = 'day'"):
+        fl.batch.identify(folder, "sweep", client=None, date_from="day")
+    with pytest.raises(TypeError, match="batch data: 3 is a int"):
+        fl.batch.identify([folder, 3], "sweep", client=None)
     # A file that is not there is its own error row.
     t = fl.batch.identify([folder + "/missing_2026-11-30.csv"], "sweep", client=None)
     assert t[0]["status"] == "error" and "missing_2026-11-30.csv" in t[0]["message"]
