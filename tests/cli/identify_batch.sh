@@ -39,6 +39,15 @@ assert "axis3_2026-11-21_text.csv" in bad["axis3_2026-11-21_text.csv"]["message"
 assert "empty" in bad["axis3_2026-11-22_empty.csv"]["message"]
 PY
 
+# MAT files (matio and HDF5 read one at a time) on two threads: the rows of one thread.
+idim=(identify idim --time t --position qm --input vir --gain gtau)
+for jobs in 1 2; do
+  expect 0 "" "${idim[@]}" "$src"/data/emps/DATA_EMPS.mat "$src"/data/emps/DATA_EMPS_PULSES.mat "$src"/data/emps/DATA_EMPS.mat \
+    --jobs $jobs --table "$tmp/emps$jobs.csv"
+done
+cmp "$tmp/emps1.csv" "$tmp/emps2.csv" || fail "MAT files: --jobs 2 rows differ from --jobs 1"
+[ "$(grep -c ',ok,' "$tmp/emps1.csv")" -eq 3 ] || fail "three EMPS rows"
+
 # JSON by the extension; several files in the order given; --date-from name; the drift table and figure.
 expect 0 "" "${sweep[@]}" "$tmp"/fleet/axis3_2026-11-0?.csv --table "$tmp/t.json" --date-from name \
   --drift "$tmp/drift.csv" --drift-threshold 3 --plot "$tmp/drift.svg"

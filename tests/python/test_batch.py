@@ -85,6 +85,22 @@ def test_a_client_passed_in_is_used(fleet, serial):
     assert t.json_text() == fl.batch.Table(serial.ok, serial.columns).json_text()
 
 
+def _dies_on_day_2(d):
+    """Arrays of a sweep log; the worker process dies (as a crash in native code would) on day 2."""
+    if d.file.endswith("2026-11-02.csv"):
+        os._exit(3)
+    return {"time": d["time"], "force": d["force"], "velocity": d["velocity"]}
+
+
+def test_a_worker_lost_is_its_row(fleet, serial):
+    folder, _ = fleet
+    files = [folder + "/axis3_2026-11-01.csv", folder + "/axis3_2026-11-02.csv"]
+    t = fl.batch.identify(files, "sweep", columns=_dies_on_day_2, workers=2, model="coulomb-viscous",
+                          load={"resample": True})
+    assert t[0]["status"] == "ok" and t[0]["Fc"] == serial[0]["Fc"]
+    assert t[1]["status"] == "error" and t[1]["message"].startswith("worker failed: KilledWorker"), t[1]["message"]
+
+
 def test_table_files_and_structured_array(serial, tmp_path):
     t = serial
     out_csv, out_json = tmp_path / "t.csv", tmp_path / "t.json"
