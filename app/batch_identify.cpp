@@ -348,9 +348,12 @@ int run_identify_batch(const std::vector<std::string>& data, const BatchOptions&
   check_distinct_outputs(outputs);
 
   progress_start("frictionlab identify (" + std::to_string(jobs.size()) + " files)");
-  const std::vector<BatchRow> rows = run_batch(jobs, o.jobs, identify, o.date_from, date_of_column);
+  std::vector<BatchRow> rows = run_batch(jobs, o.jobs, identify, o.date_from, date_of_column);
   std::size_t ok = 0;
-  for (const auto& r : rows) ok += r.result.ok();
+  for (auto& r : rows) {
+    ok += r.result.ok();
+    if (r.result.method.empty()) r.result.method = o.method;
+  }
 
   // Outputs: the drift table and figure first, the table last (the main output; a failure of
   // the others leaves none of them half-written, and no table that claims a finished run).

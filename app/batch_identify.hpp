@@ -28,6 +28,9 @@ struct BatchOptions {
   std::string drift;        ///< --drift FILE: the drift table (CSV, or JSON by .json), needs dates
   double drift_threshold = 1.0;  ///< --drift-threshold K: flag |change| > K combined std
   CLI::Option* table_opt = nullptr;  ///< set by add_batch_options
+  /// The method's name (set with the subcommand): the `method` of the rows of files that failed
+  /// before the method ran (a file that cannot be read).
+  std::string method;
 };
 
 /// Adds --table, --jobs, --date-from, --drift and --drift-threshold to `cmd` (group "Batch").

@@ -32,6 +32,7 @@ Handler register_identify(CLI::App& app) {
     add_data_options(cmd, io->columns, m.default_axis);
     add_output_options(cmd, io->output);
     add_batch_options(cmd, io->batch);
+    io->batch.method = m.name;
     MethodRun run = m.add_options(cmd);
     chosen->push_back({cmd, std::move(io), std::move(run)});
   }

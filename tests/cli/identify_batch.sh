@@ -33,7 +33,7 @@ for r in rows[:8]:
     assert abs(float(r["Fc"]) / Fc - 1) < 0.03, r
     assert r["Fc_unit"] == "N m" and float(r["Fc_std"]) > 0 and r["samples"] == "10"
 bad = {r["file"].rsplit("/", 1)[1]: r for r in rows[8:]}
-assert all(r["status"] == "error" and r["Fc"] == "" for r in bad.values())
+assert all(r["status"] == "error" and r["Fc"] == "" and r["method"] == "sweep" for r in bad.values())
 assert "force" in bad["axis3_2026-11-20_no_force.csv"]["message"]
 assert "axis3_2026-11-21_text.csv" in bad["axis3_2026-11-21_text.csv"]["message"]
 assert "empty" in bad["axis3_2026-11-22_empty.csv"]["message"]
