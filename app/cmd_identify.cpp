@@ -1,8 +1,11 @@
-// frictionlab identify METHOD DATA: friction parameters from measured data. One subcommand per
-// registered method (app/methods/): DATA, the column and output options, then the method's own.
+// frictionlab identify METHOD DATA...: friction parameters from measured data. One subcommand per
+// registered method (app/methods/): DATA, the column, output and batch options, then the
+// method's own. One file: its result (text, --json, --plot, --report). Several files or a
+// folder: one row per file in a table (batch_identify.hpp).
 #include <memory>
 #include <vector>
 
+#include "batch_identify.hpp"
 #include "commands.hpp"
 #include "methods/method.hpp"
 
@@ -21,17 +24,43 @@ Handler register_identify(CLI::App& app) {
     if (!m.add_options) continue;  // a command of its own (validate)
     auto io = std::make_unique<MethodIO>();
     auto* cmd = identify->add_subcommand(m.name, m.help);
-    cmd->add_option("DATA", io->data,
-                    "Measured data: a CSV file (with a header row, or without one: see --names), or a MATLAB .mat file")
+    cmd->add_option("DATA", io->inputs,
+                    "Measured data: a CSV file (with a header row, or without one: see --names), or a MATLAB .mat "
+                    "file. Several files or a folder (its .csv and .mat files): each identified alone, one row per "
+                    "file (see --table)")
         ->required();
     add_data_options(cmd, io->columns, m.default_axis);
     add_output_options(cmd, io->output);
+    add_batch_options(cmd, io->batch);
+    io->batch.method = m.name;
     MethodRun run = m.add_options(cmd);
     chosen->push_back({cmd, std::move(io), std::move(run)});
   }
   return [chosen]() -> int {
-    for (const auto& c : *chosen)
-      if (c.cmd->parsed()) return c.run(*c.io, *c.cmd);
+    for (const auto& c : *chosen) {
+      if (!c.cmd->parsed()) continue;
+      MethodIO& io = *c.io;
+      if (!is_batch(io.inputs, io.batch)) {
+        io.data = io.inputs.front();
+        check_outputs(io.output);
+        return emit(c.run(io, *c.cmd), io.output);
+      }
+      // Each file on its own copy of the options (the runs may be on several threads).
+      const auto identify_file = [&c, &io](const std::string& file) {
+        MethodIO one = io;
+        one.data = file;
+        return c.run(one, *c.cmd);
+      };
+      const auto date_of_column = [&io](const std::string& file, const std::string& name) {
+        const Dataset d = load_data(file, io.columns.read, io.columns.time);
+        if (d.has_column(name) && d.rows() > 0) return d.column(name)(0);
+        if (d.has_scalar(name)) return d.scalars.at(name);
+        throw std::invalid_argument(d.where() + "--date-from column:" + name + ": no column or scalar '" + name +
+                                    "'; the file has: " + d.describe_contents());
+      };
+      return run_identify_batch(io.inputs, io.batch, io.output.json, io.output.report, io.output.plot,
+                                io.output.overwrite, identify_file, date_of_column);
+    }
     return 2;
   };
 }

@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libceres-dev libsundials-dev libcli11-dev nlohmann-json3-dev
   libyaml-cpp-dev libmatio-dev zlib1g-dev libssl-dev libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-scipy python3-pytest
+  python3-distributed  # frictionlab.batch on Dask (a LocalCluster or any Client); optional at import
   python3-venv python3-pip python3-setuptools python3-wheel gnuplot-nox
   chromium  # the headless browser of the report test (tests/cli/report_browser.sh)
   clang libfuzzer-14-dev libclang-rt-14-dev  # the libFuzzer targets (with ASan and UBSan runtimes) of tests/fuzz/ (make fuzz, and a bounded run in make test)

@@ -17,8 +17,7 @@ struct BreakawayArgs {
   double threshold = std::numeric_limits<double>::quiet_NaN();
 };
 
-int run(const BreakawayArgs& a, const MethodIO& io) {
-  check_outputs(io.output);
+Result run(const BreakawayArgs& a, const MethodIO& io) {
   const Dataset d = load_data(io.data, io.columns);
   BreakawayData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns)};
   BreakawayOptions o;
@@ -27,7 +26,7 @@ int run(const BreakawayArgs& a, const MethodIO& io) {
   o.axis = io.columns.parsed_axis();
   Result r = identify_breakaway(x, o);
   stamp(r, d);
-  return emit(r, io.output);
+  return r;
 }
 
 MethodRun add_options(CLI::App* cmd) {

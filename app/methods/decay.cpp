@@ -19,8 +19,7 @@ struct DecayArgs {
   bool pendulum = false;
 };
 
-int run(const DecayArgs& a, const MethodIO& io) {
-  check_outputs(io.output);
+Result run(const DecayArgs& a, const MethodIO& io) {
   const Dataset d = load_data(io.data, io.columns);
   DecayData x{time_column(d, io.columns), position_column(d, io.columns)};
   DecayOptions o;
@@ -31,7 +30,7 @@ int run(const DecayArgs& a, const MethodIO& io) {
   o.axis = io.columns.parsed_axis();
   Result r = identify_decay(x, o);
   stamp(r, d);
-  return emit(r, io.output);
+  return r;
 }
 
 MethodRun add_options(CLI::App* decay) {

@@ -43,8 +43,7 @@ IdimData idim_data(const Dataset& d, const DataOptions& c, const std::string& fr
   return x;
 }
 
-int run(const IdimArgs& a, const MethodIO& io, const CLI::App& cmd) {
-  check_outputs(io.output);
+Result run(const IdimArgs& a, const MethodIO& io, const CLI::App& cmd) {
   IdimOptions o;
   o.terms = split_list(a.terms);
   o.cutoff_hz = a.cutoff;
@@ -79,7 +78,7 @@ int run(const IdimArgs& a, const MethodIO& io, const CLI::App& cmd) {
   if (r.ok() && !a.validate.empty())
     r.validation = cross_test(r, idim_data(load_data(a.validate, io.columns), io.columns, a.from), o);
   name_flags(r);
-  return emit(r, io.output);
+  return r;
 }
 
 MethodRun add_options(CLI::App* idim) {

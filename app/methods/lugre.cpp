@@ -22,8 +22,7 @@ struct LugreArgs {
   double vd = 0;
 };
 
-int run(const LugreArgs& a, const MethodIO& io) {
-  check_outputs(io.output);
+Result run(const LugreArgs& a, const MethodIO& io) {
   LugreOptions o;
   o.inertia = a.inertia;
   o.substeps = a.substeps;
@@ -38,7 +37,7 @@ int run(const LugreArgs& a, const MethodIO& io) {
   Result r = identify_lugre(x, o);
   stamp(r, d);
   name_flags(r);
-  return emit(r, io.output);
+  return r;
 }
 
 MethodRun add_options(CLI::App* lugre) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../batch_identify.hpp"
 #include "../data_options.hpp"
 #include "../output.hpp"
 #include "frictionlab/identify/result.hpp"
@@ -18,16 +19,22 @@
 
 namespace frictionlab::cli {
 
-/// The data file, column and output options of one method subcommand (each has its own, so that
-/// "was --force given?" is asked of the method the user chose).
+/// The data file, column, output and batch options of one method subcommand (each has its own,
+/// so that "was --force given?" is asked of the method the user chose).
 struct MethodIO {
-  std::string data;
+  std::string data;                 ///< the file a run reads (one of `inputs`)
+  std::vector<std::string> inputs;  ///< the DATA arguments: files or folders
   DataOptions columns;
   OutputOptions output;
+  BatchOptions batch;
 };
 
-/// Runs a parsed method subcommand; returns the exit status (emit's).
-using MethodRun = std::function<int(const MethodIO& io, const CLI::App& cmd)>;
+/// Identifies from the data file io.data with a parsed method subcommand's options: the Result
+/// (status error when the data could not give an answer). The caller checks and writes the
+/// outputs (one file: emit; several: the batch table of batch_identify.hpp), so the same run
+/// serves one file and a batch, from several threads at once (it reads only its arguments).
+/// \throws std::invalid_argument for bad input (an option, the file, a column), as emit's callers expect.
+using MethodRun = std::function<Result(const MethodIO& io, const CLI::App& cmd)>;
 
 /// One figure of a method's result.
 struct MethodFigure {

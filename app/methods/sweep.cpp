@@ -20,8 +20,7 @@ struct SweepArgs {
   std::string reference;  // commanded-velocity column to segment on
 };
 
-int run(const SweepArgs& a, const MethodIO& io) {
-  check_outputs(io.output);
+Result run(const SweepArgs& a, const MethodIO& io) {
   const Dataset d = load_data(io.data, io.columns);
   SweepData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns)};
   SweepOptions o;
@@ -46,7 +45,7 @@ int run(const SweepArgs& a, const MethodIO& io) {
   }
   Result r = identify_sweep(x, o);
   stamp(r, d);
-  return emit(r, io.output);
+  return r;
 }
 
 MethodRun add_options(CLI::App* sweep) {

@@ -14,7 +14,9 @@ RuntimeError.
     tr = fl.simulate("examples/craig_motor_trapezoid.yaml")
     fl.plot.simulation(tr, file="trapezoid.png")
 
-Plotting helpers (matplotlib) are in frictionlab.plot, imported on first use.
+Plotting helpers (matplotlib) are in frictionlab.plot, imported on first use. Batches (one
+identification per file of a folder, many simulations, the drift of a fleet's parameters) are in
+frictionlab.batch, on Dask's distributed scheduler or serially.
 """
 
 from ._core import (
@@ -46,6 +48,7 @@ from ._core import (
     load_law,
     sha256_file,
 )
+from . import batch  # imports dask only when a batch runs on it
 from .analysis import analyze_map, decay_envelope, detect_stick_slip
 from .data import Data, load
 # Each identification method's functions come from its module, frictionlab/methods/NAME.py, for

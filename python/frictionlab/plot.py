@@ -4,6 +4,7 @@
   idim(result)         measured vs reconstructed force (and the residual)
   simulation(traj)     time series of a simulation
   decay(t, x)          free decay with its peaks and the fitted envelope
+  drift(table)         a fleet's parameters with their std against the log's date, flagged changes marked
 
 Each returns the matplotlib Figure and, with ``file=``, writes it (PNG by the extension).
 matplotlib is imported here only, so ``import frictionlab`` does not need it.
@@ -124,4 +125,43 @@ def decay(t, x=None, *, envelope=None, file=None, title=None):
     ax_env.set_ylabel("amplitude")
     ax_env.legend()
     ax_env.grid(True, alpha=0.3)
+    return _finish(fig, file)
+
+
+def drift(table, parameters=None, *, file=None, title=None):
+    """A fleet's drift: one panel per parameter, its value with ±1 std error bars against the
+    log's date, the changes the drift rule flagged (frictionlab.batch.drift) circled in red.
+    ``table``: a drift Table (batch.drift) or an identification Table with dates (drift is
+    computed with the default threshold). ``parameters``: names to draw (default all).
+    Returns the Figure."""
+    import datetime
+
+    from .batch import drift as drift_table
+
+    if getattr(table, "kind", "drift") != "drift":
+        table = drift_table(table)
+    rows = list(table)
+    if not rows:
+        raise ValueError("drift plot: the table has no rows (no ok identification with a date)")
+    names = list(parameters) if parameters else list(dict.fromkeys(r["parameter"] for r in rows))
+    fig, axes = _figure(len(names), figsize=(8, 2.2 * len(names) + 1))
+    for ax, name in zip(axes, names):
+        mine = [r for r in rows if r["parameter"] == name]
+        if not mine:
+            raise ValueError(f"drift plot: no parameter '{name}' in the table")
+        dates = [datetime.datetime.fromisoformat(r["date"]) for r in mine]
+        values = np.array([r["value"] for r in mine], dtype=float)
+        stds = np.array([np.nan if r["std"] is None else r["std"] for r in mine], dtype=float)
+        ax.errorbar(dates, values, yerr=np.nan_to_num(stds), fmt="o-", ms=4, capsize=3, lw=1)
+        flagged = [k for k, r in enumerate(mine) if r["flagged"]]
+        if flagged:
+            ax.plot([dates[k] for k in flagged], values[flagged], "o", ms=11, mfc="none", mec="tab:red", mew=1.5,
+                    label="change > threshold x combined std")
+            ax.legend(loc="best")
+        unit = mine[0]["unit"]
+        ax.set_ylabel(f"{name} ({unit})" if unit else name)
+        ax.grid(True, alpha=0.3)
+    axes[-1].set_xlabel("log date (UTC)")
+    fig.autofmt_xdate()
+    axes[0].set_title(title or f"drift over {len({r['file'] for r in rows})} logs")
     return _finish(fig, file)

@@ -1,10 +1,14 @@
-// Analyses of motion records: decay envelope and stick-slip detection.
+// Analyses of motion records: decay envelope and stick-slip detection; the fleet drift table.
 #include <pybind11/stl.h>
 
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "common.hpp"
+#include "frictionlab/analysis/drift.hpp"
 #include "frictionlab/analysis/envelope.hpp"
 #include "frictionlab/analysis/stick_slip.hpp"
 #include "frictionlab/io/map_run.hpp"
@@ -162,6 +166,40 @@ void init_analysis(py::module_& m) {
       },
       py::arg("scenario"), py::arg("vary"), py::arg("transient"), py::arg("tolerance"), py::arg("jobs"), py::arg("shard"),
       "Map of a scenario over a grid (see frictionlab.analyze_map).");
+
+  // Fleet drift (frictionlab.batch.drift, log_date): dates as (iso, posix seconds) tuples.
+  m.def("_log_date_from_name", [](const std::string& path) -> py::object {
+    const auto d = log_date_from_name(path);
+    if (!d) return py::none();
+    return py::make_tuple(d->iso, d->posix_seconds);
+  });
+  m.def("_log_date_from_posix", [](double seconds) {
+    const LogDate d = log_date_from_posix(seconds);
+    return py::make_tuple(d.iso, d.posix_seconds);
+  });
+  m.def("_drift_table", [](const std::vector<std::tuple<std::string, std::string, double, std::string, double, double,
+                                                        std::string>>& samples,
+                           double threshold) {
+    std::vector<DriftSample> in;
+    in.reserve(samples.size());
+    for (const auto& [file, iso, posix, parameter, value, sd, unit] : samples)
+      in.push_back({file, {iso, posix}, parameter, value, sd, unit});
+    py::list out;
+    for (const DriftRow& r : drift_table(in, threshold)) {
+      py::dict d;
+      d["file"] = r.sample.file;
+      d["date"] = r.sample.date.iso;
+      d["parameter"] = r.sample.parameter;
+      d["value"] = r.sample.value;
+      d["std"] = r.sample.std;
+      d["unit"] = r.sample.unit;
+      d["change"] = r.change;
+      d["combined_std"] = r.combined_std;
+      d["flagged"] = r.flagged;
+      out.append(d);
+    }
+    return out;
+  });
 }
 
 }  // namespace frictionlab::python

@@ -2,6 +2,7 @@
 #include <pybind11/stl.h>
 
 #include "common.hpp"
+#include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/io/law_file.hpp"
 #include "frictionlab/io/load.hpp"
@@ -75,6 +76,13 @@ void init_io(py::module_& m) {
         "Reads a friction law from a .yaml/.yml file ({law: NAME, params...}) or a .json file (the same, or the "
         "MODEL.json an identification writes). Raises ValueError naming the file and key on bad content.");
 
+  m.def("_write_file_atomic", [](const py::object& p, const std::string& text, bool overwrite) {
+    AtomicWriteOptions o;
+    o.overwrite = overwrite;
+    write_file_atomic(path_arg(p, "write"), text, o);
+  }, py::arg("path"), py::arg("text"), py::arg("overwrite") = false,
+     "Writes `text` to `path` through a temporary file and a rename (io/atomic_write.hpp): a failed write "
+     "leaves no half-written file. ValueError when the file exists and overwrite is False.");
   m.def("sha256_file", [](const py::object& p) { return sha256_file(path_arg(p, "sha256_file")); }, py::arg("path"), "Lowercase hex SHA-256 of a file's bytes (as in results' data.sha256).");
 }
 

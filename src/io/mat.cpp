@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -345,6 +346,11 @@ Dataset read_mat(const std::string& path) {
   data.file = path;
   data.sha256 = sha256_file(path);
 
+  // matio and the HDF5 library under it (v7.3 files) are not thread-safe (Debian's HDF5 is built
+  // without its thread-safe option): one MAT reader at a time, so that batches (frictionlab
+  // identify DIR --jobs N) may read files from several threads.
+  static std::mutex matio_mutex;
+  const std::lock_guard matio_lock(matio_mutex);
   detail::matio_library().LogInitFunc("frictionlab", &matio_log);
   g_matio_log.clear();
   const auto fail = [&](const std::string& what) {

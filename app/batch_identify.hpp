@@ -1,0 +1,100 @@
+#pragma once
+// Batch identification: `frictionlab identify METHOD DATA...` with several files or a folder
+// identifies each file alone and writes one row per file to a table (CSV or JSON, the format of
+// python frictionlab.batch.Table), with --jobs threads; with --date-from, the log's date per
+// row, the fleet's drift table (--drift) and figure (--plot).
+//
+// The work is a list of jobs (batch_jobs): each file with its global index, its place in the
+// expanded DATA list. A row keeps that index, so a subset of the jobs (a shard of a Slurm array)
+// gives rows that a merge puts back in order.
+
+#include <CLI/CLI.hpp>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "frictionlab/analysis/drift.hpp"
+#include "frictionlab/identify/result.hpp"
+
+namespace frictionlab::cli {
+
+/// The batch options of an identify method subcommand.
+struct BatchOptions {
+  std::string table;        ///< --table FILE|-: the rows, CSV (JSON when FILE ends in .json); "" = none
+  int jobs = 1;             ///< --jobs N: files identified at once (threads), >= 1
+  std::string date_from;    ///< --date-from name|column:NAME; "" = no dates
+  std::string drift;        ///< --drift FILE: the drift table (CSV, or JSON by .json), needs dates
+  double drift_threshold = 1.0;  ///< --drift-threshold K: flag |change| > K combined std
+  CLI::Option* table_opt = nullptr;  ///< set by add_batch_options
+  /// The method's name (set with the subcommand): the `method` of the rows of files that failed
+  /// before the method ran (a file that cannot be read).
+  std::string method;
+};
+
+/// Adds --table, --jobs, --date-from, --drift and --drift-threshold to `cmd` (group "Batch").
+void add_batch_options(CLI::App* cmd, BatchOptions& o);
+
+/// One file of a batch and its global index (0-based place in the expanded DATA list).
+struct BatchJob {
+  std::size_t index = 0;
+  std::string file;
+};
+
+/// The jobs of DATA arguments, in order: a folder gives its .csv and .mat files (sorted by name,
+/// subfolders not read), anything else is one file (a missing one is kept: its row says so).
+/// \throws std::invalid_argument for a folder without data files, or no DATA.
+std::vector<BatchJob> batch_jobs(const std::vector<std::string>& data);
+
+/// True when the DATA arguments and options ask for a batch: more than one DATA, a folder, or
+/// --table given. One file without --table is the single-file command, unchanged.
+bool is_batch(const std::vector<std::string>& data, const BatchOptions& o);
+
+/// One row: the job, the log's date (empty without --date-from) and the result (a Result with
+/// status error and the message for a file that failed, however it failed).
+struct BatchRow {
+  BatchJob job;
+  LogDate date;
+  Result result;
+};
+
+/// Identifies every job with `identify(file)` on `threads` threads (handed out one at a time).
+/// An exception of one file (bad file, column, option) becomes its row's error; the others go on.
+/// `date_from`: "" (none), "name" (log_date_from_name) or "column:NAME" (POSIX time in the
+/// first sample of column NAME, or scalar NAME, read by `date_of_column`).
+/// \returns the rows in job order.
+std::vector<BatchRow> run_batch(const std::vector<BatchJob>& jobs, int threads,
+                                const std::function<Result(const std::string& file)>& identify,
+                                const std::string& date_from,
+                                const std::function<double(const std::string& file, const std::string& column)>& date_of_column);
+
+/// The table's columns: index, file, [date,] status, message, method, model, axis, then each
+/// parameter P as P, P_std, P_unit (in order of first appearance), then relative_error_percent,
+/// rmse, rmse_unit, samples, sha256.
+std::vector<std::string> batch_columns(const std::vector<BatchRow>& rows, bool with_date);
+
+/// The rows as CSV text (header row; numbers shortest round-trip; empty cell for none or NaN;
+/// cells with a comma, quote or line break quoted) or as JSON text
+/// {"schema": 1, "kind": "identify", "columns": [...], "rows": [{...}]} (NaN as null).
+std::string batch_csv(const std::vector<BatchRow>& rows, bool with_date);
+std::string batch_json(const std::vector<BatchRow>& rows, bool with_date);
+
+/// The drift table (analysis/drift.hpp) of the ok rows' parameters, by date.
+std::vector<DriftRow> batch_drift(const std::vector<BatchRow>& rows, double threshold);
+/// The drift table as CSV (file, date, parameter, value, std, unit, change, combined_std,
+/// flagged) or JSON {"schema": 1, "kind": "drift", "columns": [...], "rows": [...]}.
+std::string drift_csv(const std::vector<DriftRow>& rows);
+std::string drift_json(const std::vector<DriftRow>& rows);
+
+/// Runs a batch for a parsed method subcommand: checks the outputs first (--table, --drift,
+/// --plot; --json and --report are one file's outputs and are refused with a batch), identifies
+/// every job, writes the table (stdout when --table is not given), the drift table and figure,
+/// and prints "N files: K ok, F failed" on stderr, one line per failure.
+/// \returns 0 when at least one file gave a result, 2 when every file failed.
+int run_identify_batch(const std::vector<std::string>& data, const BatchOptions& o, const std::string& json,
+                       const std::string& report, const std::string& plot, bool overwrite,
+                       const std::function<Result(const std::string& file)>& identify,
+                       const std::function<double(const std::string& file, const std::string& column)>& date_of_column);
+
+}  // namespace frictionlab::cli

@@ -1,0 +1,252 @@
+"""frictionlab.batch: one identification per file of a fleet's folder (realistic logs and broken
+files), serially and on Dask (a two-worker LocalCluster gives the serial rows exactly), the
+table's files, Monte Carlo simulations, the drift table and figure, and the package without dask."""
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import frictionlab as fl
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples"))
+import fleet_logs  # noqa: E402
+
+# The sweep's Fc on these logs is within 3 % of the truth: the ten levels' means average the
+# noise (5 mN m) to about 0.3 mN m, and the sensor offset cancels between the two directions.
+FC_REL_TOL = 0.03
+# Fv likewise within 5 % (it rests on the spread of speeds, 0.2 to 4 rad/s).
+FV_REL_TOL = 0.05
+SWEEP = dict(model="coulomb-viscous", load={"resample": True}, date_from="name")
+
+
+@pytest.fixture(scope="module")
+def fleet(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("fleet")
+    return str(folder), fleet_logs.write_fleet(str(folder))
+
+
+@pytest.fixture(scope="module")
+def serial(fleet):
+    folder, _ = fleet
+    return fl.batch.identify(folder, "sweep", client=None, **SWEEP)
+
+
+def test_one_row_per_file_failures_in_their_rows(fleet, serial):
+    folder, truth = fleet
+    t = serial
+    assert [os.path.basename(f) for f in t["file"]] == sorted(truth)
+    assert list(t["index"]) == list(range(len(truth)))
+    by_name = {os.path.basename(r["file"]): r for r in t}
+    for name, Fc in truth.items():
+        r = by_name[name]
+        if Fc is None:
+            assert r["status"] == "error" and r["method"] == "sweep", name
+            assert name in r["message"], r["message"]
+            continue
+        assert r["status"] == "ok", (name, r["message"])
+        assert r["date"] == name[6:16]
+        assert r["Fc"] == pytest.approx(Fc, rel=FC_REL_TOL)
+        assert r["Fv"] == pytest.approx(fleet_logs.FV, rel=FV_REL_TOL)
+        assert 0 < r["Fc_std"] < 0.1 * Fc
+        assert r["Fc_unit"] == "N m" and r["Fv_unit"] == "N m s/rad"
+        assert r["axis"] == "rotary" and r["model"] == "coulomb-viscous"
+        assert r["samples"] == 10 and r["relative_error_percent"] < 5
+        assert len(r["sha256"]) == 64
+    # Each broken file says what is wrong with it.
+    assert "force" in by_name["axis3_2026-11-20_no_force.csv"]["message"]
+    assert "n/a" in by_name["axis3_2026-11-21_text.csv"]["message"] or "line" in by_name["axis3_2026-11-21_text.csv"]["message"]
+    assert "empty" in by_name["axis3_2026-11-22_empty.csv"]["message"]
+    assert len(t.ok) == fleet_logs.DAYS and len(t.failed) == len(fleet_logs.BROKEN)
+    assert t.columns[:8] == ["index", "file", "date", "status", "message", "method", "model", "axis"]
+    assert t.columns[-5:] == list(fl.batch.FIT_COLUMNS)
+
+
+def test_two_worker_local_cluster_gives_the_serial_rows(fleet, serial):
+    folder, _ = fleet
+    # The default: a LocalCluster of two worker processes, started and closed by the call.
+    on_cluster = fl.batch.identify(folder, "sweep", workers=2, **SWEEP)
+    assert on_cluster.json_text() == serial.json_text()
+    assert on_cluster.csv_text() == serial.csv_text()
+
+
+def test_a_client_passed_in_is_used(fleet, serial):
+    from distributed import Client, LocalCluster
+
+    folder, _ = fleet
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster, \
+            Client(cluster) as client:
+        t = fl.batch.identify(folder + "/axis3_2026-11-0*.csv", "sweep", client=client, **SWEEP)
+        assert len(client.scheduler_info()["workers"]) == 2
+    assert t.json_text() == fl.batch.Table(serial.ok, serial.columns).json_text()
+
+
+def _dies_on_day_2(d):
+    """Arrays of a sweep log; the worker process dies (as a crash in native code would) on day 2."""
+    if d.file.endswith("2026-11-02.csv"):
+        os._exit(3)
+    return {"time": d["time"], "force": d["force"], "velocity": d["velocity"]}
+
+
+def test_a_worker_lost_is_its_row(fleet, serial):
+    folder, _ = fleet
+    files = [folder + "/axis3_2026-11-01.csv", folder + "/axis3_2026-11-02.csv"]
+    t = fl.batch.identify(files, "sweep", columns=_dies_on_day_2, workers=2, model="coulomb-viscous",
+                          load={"resample": True})
+    assert t[0]["status"] == "ok" and t[0]["Fc"] == serial[0]["Fc"]
+    assert t[1]["status"] == "error" and t[1]["message"].startswith("worker failed: KilledWorker"), t[1]["message"]
+
+
+def test_table_files_and_structured_array(serial, tmp_path):
+    t = serial
+    out_csv, out_json = tmp_path / "t.csv", tmp_path / "t.json"
+    t.to_csv(out_csv)
+    t.to_json(out_json)
+    with pytest.raises(ValueError, match="exists"):
+        t.to_csv(out_csv)
+    t.to_csv(out_csv, overwrite=True)
+    rows = list(csv.DictReader(open(out_csv)))
+    assert len(rows) == len(t)
+    for r, row in zip(rows, t):
+        assert r["status"] == row["status"]
+        if row["status"] == "ok":
+            assert float(r["Fc"]) == row["Fc"]  # 17 digits: read back exactly
+        else:
+            assert r["Fc"] == ""
+    j = json.load(open(out_json))
+    assert j["schema"] == 1 and j["kind"] == "identify" and j["columns"] == t.columns
+    assert j["rows"][-1]["Fc"] is None and j["rows"][0]["Fc"] == t[0]["Fc"]
+    a = t.to_array()
+    assert a.dtype["index"] == np.int64 and a.dtype["Fc"] == np.float64 and a.dtype["file"].kind == "U"
+    assert np.isnan(a["Fc"][-1]) and a["Fc"][0] == t[0]["Fc"]
+    with pytest.raises(KeyError, match="no column 'Fx'"):
+        t["Fx"]
+    assert not list(tmp_path.glob("*.tmp*"))
+
+
+def test_data_files_forms_and_errors(fleet, tmp_path):
+    folder, truth = fleet
+    assert len(fl.batch.data_files(folder)) == len(truth)
+    assert len(fl.batch.data_files(folder + "/axis3_2026-11-0?.csv")) == fleet_logs.DAYS
+    listed = fl.batch.data_files([folder + "/axis3_2026-11-02.csv", folder + "/axis3_2026-11-01.csv"])
+    assert [os.path.basename(f) for f in listed] == ["axis3_2026-11-02.csv", "axis3_2026-11-01.csv"]
+    with pytest.raises(ValueError, match="has no .csv or .mat file"):
+        fl.batch.data_files(str(tmp_path))
+    with pytest.raises(ValueError, match="matches no file"):
+        fl.batch.data_files(folder + "/*.txt")
+    with pytest.raises(ValueError, match="method 'swep'"):
+        fl.batch.identify(folder, "swep", client=None)
+    with pytest.raises(ValueError, match="client = 'remote': expected 'local', None"):
+        fl.batch.identify(folder, "sweep", client="remote")
+    with pytest.raises(ValueError, match="workers = 0: expected a whole number >= 1"):
+        fl.batch.identify(folder, "sweep", workers=0)
+    with pytest.raises(TypeError, match="load: expected a dict"):
+        fl.batch.identify(folder, "sweep", client=None, load=True)
+    with pytest.raises(ValueError, match="date_from = 'day'"):
+        fl.batch.identify(folder, "sweep", client=None, date_from="day")
+    with pytest.raises(TypeError, match="batch data: 3 is a int"):
+        fl.batch.identify([folder, 3], "sweep", client=None)
+    # A file that is not there is its own error row.
+    t = fl.batch.identify([folder + "/missing_2026-11-30.csv"], "sweep", client=None)
+    assert t[0]["status"] == "error" and "missing_2026-11-30.csv" in t[0]["message"]
+
+
+def test_columns_mapping_and_function(fleet):
+    folder, _ = fleet
+    f = folder + "/axis3_2026-11-01.csv"
+    by_default = fl.batch.identify(f, "sweep", client=None, model="coulomb-viscous", load={"resample": True})
+    named = fl.batch.identify(f, "sweep", client=None, model="coulomb-viscous", load={"resample": True},
+                              columns={"force": "force", "velocity": "velocity"})
+    derived = fl.batch.identify(f, "sweep", client=None, model="coulomb-viscous", load={"resample": True},
+                                columns=lambda d: {"time": d["time"], "force": 2.0 * d["force"], "velocity": d["velocity"]})
+    assert named[0]["Fc"] == by_default[0]["Fc"]
+    # Twice the torque: twice Fc (the fit is linear in the force).
+    assert derived[0]["Fc"] == pytest.approx(2.0 * by_default[0]["Fc"], rel=1e-9)
+    bad = fl.batch.identify(f, "sweep", client=None, load={"resample": True}, columns={"torque": "force"})
+    assert bad[0]["status"] == "error" and "'torque' is not an array of this method" in bad[0]["message"]
+
+
+def test_drift_flags_the_wear_step(serial):
+    d = fl.batch.drift(serial, threshold=3.0)
+    assert d.kind == "drift" and d.columns == list(fl.batch.DRIFT_COLUMNS)
+    fc = [r for r in d if r["parameter"] == "Fc"]
+    assert [r["date"] for r in fc] == [f"2026-11-{k:02d}" for k in range(1, fleet_logs.DAYS + 1)]
+    flagged = [r["date"] for r in fc if r["flagged"]]
+    assert flagged == [f"2026-11-{fleet_logs.WORN_FROM_DAY:02d}"]
+    step = fc[fleet_logs.WORN_FROM_DAY - 1]
+    assert step["change"] == pytest.approx(fleet_logs.FC_WORN - fleet_logs.FC, rel=0.2)
+    assert step["combined_std"] == pytest.approx(math.hypot(step["std"], fc[fleet_logs.WORN_FROM_DAY - 2]["std"]))
+    assert math.isnan(fc[0]["change"]) and not fc[0]["flagged"]
+    # Only Fc: the table's other parameters when none is named.
+    assert {r["parameter"] for r in fl.batch.drift(serial, ["Fc"])} == {"Fc"}
+    assert {r["parameter"] for r in d} == {"Fc", "Fv"}
+    with pytest.raises(ValueError, match="no date"):
+        fl.batch.drift([{"file": "x.csv", "status": "ok", "Fc": 1.0, "Fc_std": 0.1, "Fc_unit": "N"}])
+    with pytest.raises(ValueError, match="threshold"):
+        fl.batch.drift(serial, threshold=0)
+
+
+def test_drift_figure(serial, tmp_path):
+    pytest.importorskip("matplotlib")
+    fig = fl.plot.drift(fl.batch.drift(serial, threshold=3.0), file=tmp_path / "drift.png")
+    assert len(fig.axes) == 2
+    assert (tmp_path / "drift.png").stat().st_size > 1000
+    # The Fc panel circles the one flagged log.
+    assert any(line.get_label().startswith("change >") for line in fig.axes[0].get_lines())
+
+
+def test_log_date_forms():
+    assert fl.batch.log_date("a/axis3_2026-11-02.csv") == ("2026-11-02", 1793577600.0)
+    assert fl.batch.log_date("log-20261102T0815.mat")[0] == "2026-11-02T08:15:00"
+    assert fl.batch.log_date("axis3.csv") is None
+    d = fl.Data([("time", np.array([1793577600.0 + 3600]))], {})
+    assert fl.batch.log_date("x.csv", "column:time", d)[0] == "2026-11-02T01:00:00"
+    with pytest.raises(ValueError, match="date_from"):
+        fl.batch.log_date("x.csv", "file")
+
+
+def _monte_carlo_scenario(seed):
+    rng = np.random.default_rng(seed)
+    return {"plant": {"type": "axis", "M": 1.0},
+            "friction": {"law": "coulomb", "Fc": 1.0 + 0.1 * rng.standard_normal()},
+            "input": {"type": "ramp", "rate": 1.0}, "duration": 3.0, "output_rate": 100}
+
+
+def test_simulate_monte_carlo_serial_equals_cluster(example):
+    serial = fl.batch.simulate(make=_monte_carlo_scenario, seeds=range(6), client=None)
+    threads = fl.batch.simulate(make=_monte_carlo_scenario, seeds=range(6), workers=2, processes=False)
+    assert serial.json_text() == threads.json_text()
+    assert all(r["status"] == "ok" for r in serial), [r["message"] for r in serial]
+    # A ramp of 1 N/s breaks a Coulomb level Fc away at t = Fc: one breakaway per run.
+    assert list(serial["breakaways"]) == [1] * 6
+    assert len(set(serial["final_velocity"])) == 6  # each seed its own Fc
+    listed = fl.batch.simulate([example("craig_motor_trapezoid"), {"plant": {"type": "nope"}}], client=None,
+                               duration=1.0)
+    assert listed[0]["status"] == "ok" and listed[0]["scenario"].endswith("craig_motor_trapezoid.yaml")
+    assert listed[1]["status"] == "error" and listed[1]["scenario"] == "#1" and "nope" in listed[1]["message"]
+    with pytest.raises(ValueError, match="make needs seeds"):
+        fl.batch.simulate(make=_monte_carlo_scenario)
+
+
+def test_package_and_serial_batch_without_dask(fleet):
+    folder, _ = fleet
+    code = (
+        "import sys\n"
+        "sys.modules['dask'] = None\n"
+        "sys.modules['distributed'] = None\n"
+        "import frictionlab as fl\n"
+        f"t = fl.batch.identify({folder!r} + '/axis3_2026-11-01.csv', 'sweep', client=None, "
+        "model='coulomb-viscous', load={'resample': True})\n"
+        "assert t[0]['status'] == 'ok', t[0]['message']\n"
+        "try:\n"
+        f"    fl.batch.identify({folder!r}, 'sweep')\n"
+        "except ImportError as e:\n"
+        "    print('no dask:', e)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=os.environ)
+    assert out.returncode == 0, out.stderr
+    assert "no dask:" in out.stdout
