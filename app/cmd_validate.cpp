@@ -61,7 +61,9 @@ ModelFile read_model(const std::string& path) {
   if (!(m.model.axis.M > 0))
     throw std::invalid_argument(path + ": parameters.M: " + nlohmann::json(m.model.axis.M).dump() +
                                 " must be > 0 (the identified inertia, kg or kg m^2)");
-  m.model.axis.offset = param("offset", false, 0.0, "a force offset in N or N m");
+  // The plant adds its offset to the drive; the identification's offset is spent by it (u = M a + F +
+  // offset): the negative (see model_from_result).
+  m.model.axis.offset = -param("offset", false, 0.0, "a force offset in N or N m");
   if (j.contains("method") && j["method"].is_string()) m.model.method = j["method"].get<std::string>();
   m.model.source = path;
   if (j.contains("data") && j["data"].is_object()) {

@@ -71,7 +71,10 @@ IdentifiedModel model_from_result(const Result& r) {
   const Parameter* M = r.find("M");
   if (!M) throw std::invalid_argument("model: no parameter 'M' (inertia, kg or kg m^2); expected one to simulate");
   m.axis.M = M->value;
-  if (const auto* off = r.find("offset")) m.axis.offset = off->value;
+  // The identification's model is u = M a + F + offset (offset: a constant force the drive
+  // spends), the plant's a = (u + offset - F) / M (offset: a force added to the drive): one is
+  // the negative of the other.
+  if (const auto* off = r.find("offset")) m.axis.offset = -off->value;
   RigidAxis check(m.axis);  // throws naming M or offset when out of range
   (void)check;
   return m;
@@ -145,7 +148,7 @@ Result validate_model(const IdentifiedModel& model, const Scenario& scenario, co
 
   const Axis axis = po.axis;
   r.parameters.push_back({"M", model.axis.M, std::numeric_limits<double>::quiet_NaN(), std::string(unit(Quantity::inertia, axis)), ""});
-  r.parameters.push_back({"offset", model.axis.offset, std::numeric_limits<double>::quiet_NaN(), std::string(unit(Quantity::force, axis)), ""});
+  r.parameters.push_back({"offset", -model.axis.offset, std::numeric_limits<double>::quiet_NaN(), std::string(unit(Quantity::force, axis)), ""});
   for (const auto& [name, value] : model.law.to_spec().scalars) {
     const bool viscous = name.rfind("Fv", 0) == 0 || name == "sigma1" || name == "sigma2";
     const bool force = !viscous && name.rfind("F", 0) == 0;

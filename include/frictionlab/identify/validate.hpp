@@ -22,12 +22,13 @@ namespace frictionlab {
 /// The identified model a validation simulates.
 struct IdentifiedModel {
   FrictionLaw law;        ///< friction law (MODEL.json "law")
-  AxisParams axis;        ///< M (kg or kg m^2) and offset (N or N m) (MODEL.json "parameters")
+  AxisParams axis;        ///< M (kg or kg m^2) and the plant's offset (N or N m): the negative of MODEL.json's "offset" (see model_from_result)
   std::string method;     ///< identification method, e.g. "idim" (for the report)
   std::string source;     ///< MODEL.json file name, or "" when built in memory
 };
 
-/// The model of an identification result: its `law`, parameter M, and offset (0 when absent).
+/// The model of an identification result: its `law`, parameter M, and offset (0 when absent; the
+/// plant adds -offset to the drive, as the identification's u = M a + F + offset means).
 /// \throws std::invalid_argument when the result is not ok, has no law, no parameter M, or the
 ///         values do not make a valid law or axis (message names the parameter).
 IdentifiedModel model_from_result(const Result& identified);
