@@ -84,14 +84,20 @@ void compare(const std::string& key, const Vec& y, const Vec& y_sim, const IdimO
   r.diagnostics.groups["relative_error_percent_full_rate"][key] = relative_error(y, y_sim);
 }
 
-// The law's parameters with their units, names prefixed (e.g. "x."), values without std.
+// The law's parameters with their units on `axis` (from each parameter's quantity: vs in m/s,
+// sigma0 in N/m, ...), names prefixed (e.g. "x."), values without std. Spec values the law does
+// not list as parameters follow, without a unit.
 void add_law_parameters(Result& r, const FrictionLaw& law, const std::string& prefix, Axis axis) {
-  for (const auto& [name, value] : law.to_spec().scalars) {
-    const bool viscous = name.rfind("Fv", 0) == 0 || name == "sigma1" || name == "sigma2";
-    const bool force = !viscous && name.rfind("F", 0) == 0;
-    const std::string u = viscous ? std::string(unit(Quantity::viscous, axis)) : force ? std::string(unit(Quantity::force, axis)) : "";
-    r.parameters.push_back({prefix + name, value, std::numeric_limits<double>::quiet_NaN(), u, ""});
+  const LawSpec spec = law.to_spec();
+  std::vector<std::string> listed;
+  for (const Parameter& p : law.parameters()) {
+    if (!spec.scalars.count(p.name)) continue;
+    listed.push_back(p.name);
+    r.parameters.emplace_back(prefix + p.name, spec.scalars.at(p.name), std::numeric_limits<double>::quiet_NaN(), p.quantity, axis);
   }
+  for (const auto& [name, value] : spec.scalars)
+    if (std::find(listed.begin(), listed.end(), name) == listed.end())
+      r.parameters.emplace_back(prefix + name, value, std::numeric_limits<double>::quiet_NaN(), std::string());
 }
 
 void add_run_numbers(Result& r, double dt, Eigen::Index n, const IdimOptions& po, const Trajectory& tr) {

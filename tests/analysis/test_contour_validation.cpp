@@ -199,7 +199,9 @@ TEST(ContourValidation, APathHasNoContourFigures) {
   for (int k = 0; k < 2; ++k)
     d.axes.push_back({k == 0 ? "x" : "y", Eigen::Map<const Eigen::VectorXd>(tr.contact(k).position.data(), n), {}});
   const Scenario sc = scenario(text, so);
-  const ContourValidation cv = validate_contour(sc, d, {});
+  ValidateOptions from_rest;  // the scenario's own start (at rest on the path): the run itself
+  from_rest.initial_state_from_data = false;
+  const ContourValidation cv = validate_contour(sc, d, {}, from_rest);
   EXPECT_FALSE(cv.measured.has_value());
   ASSERT_FALSE(cv.result.diagnostics.warnings.empty());
   EXPECT_NE(cv.result.diagnostics.warnings.back().find("no contour figures"), std::string::npos);
