@@ -1,5 +1,7 @@
 // frictionlab validate MODEL.json DATA --scenario SCENARIO.yaml: simulate an identified model in
-// the scenario's plant and controller and compare it with a measured run.
+// the scenario's plant and controller and compare it with a measured run. On a two-axis plant
+// (xy-table), MODEL is x=MODEL_X.json[,y=MODEL_Y.json] and the circular test of measured and
+// simulated is compared too (analysis/contour_validation.hpp).
 #include <cmath>
 #include <filesystem>
 #include <map>
