@@ -52,6 +52,11 @@ for f in contour axes measured-contour simulated-contour; do
   [ -s "$tmp/report/$f.svg" ] || fail "report: no $f.svg"
 done
 grep -q "quadrant glitches sit at the axis reversals" "$tmp/report/report.html" || fail "report: no contour caption"
+# The report's validation tables: every signal's error and the contour figures, measured and simulated.
+grep -q "<h2 id=\"validation\">" "$tmp/report/report.html" && grep -q "<td>y.force</td>" "$tmp/report/report.html" ||
+  fail "report: no per-axis validation table"
+grep -q "<td>max_quadrant_glitch_m</td>" "$tmp/report/report.html" && grep -q "<th>simulated</th>" "$tmp/report/report.html" ||
+  fail "report: no contour table"
 [ "$(grep -c "<svg" "$tmp/report/report.html")" -ge 4 ] || fail "report: fewer than 4 inline figures"
 
 # Only x from the nominal model (y keeps the scenario's law): a worse fit of the glitch.
