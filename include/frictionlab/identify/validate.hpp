@@ -93,7 +93,9 @@ struct MultiAxisValidationData {
 /// validate_model) and, when measured, drive force are compared with the simulation.
 /// `models` names the axes whose law and inertia came from an identified model (for the report).
 /// \returns method "validate", model "x: LAW, y: LAW" (every contact's), parameters "AXIS.M" (kg,
-///          the equivalent mass), "AXIS.offset" (N) and "AXIS.PARAM" of each contact's law;
+///          the equivalent mass), "AXIS.offset" (N; axes in `models`) and "AXIS.PARAM" of each
+///          contact's law (units on options.processing.axis); rmse of the measured drive forces
+///          (N, every sample; NaN when none was measured);
 ///          `validation` with errors (%) keyed "AXIS.position", "AXIS.velocity",
 ///          "AXIS.acceleration", "AXIS.force" on the IDIM grid; diagnostics group
 ///          "relative_error_percent_full_rate" (same keys, every sample); texts "AXIS.model" (the
