@@ -123,20 +123,6 @@ std::string stick_slip_text(const StickSlipResult& r, bool with_force) {
   return o.str();
 }
 
-nlohmann::json contour_json(const ContourResult& r) {
-  nlohmann::json glitches = nlohmann::json::array();
-  for (const auto& g : r.glitches)
-    glitches.push_back({{"reversal_deg", g.reversal_deg}, {"peak_m", num(g.peak_m)}, {"angle_deg", num(g.angle_deg)},
-                        {"extent_deg", num(g.extent_deg)}, {"time", num(g.time)}});
-  return {{"centre_m", {num(r.centre_x), num(r.centre_y)}},
-          {"radius_m", num(r.radius)},
-          {"centre_from", r.centre_source},
-          {"turns", num(r.turns)},
-          {"roundness_m", num(r.roundness_m)},
-          {"max_radial_error_m", num(r.max_radial_error_m)},
-          {"quadrant_glitches", glitches}};
-}
-
 std::string contour_text(const ContourResult& r) {
   // Micrometres to 3 significant digits: a ballbar trace holds no more.
   const auto um = [](double m) { return format_number(m * 1e6, 3) + " um"; };
@@ -263,7 +249,7 @@ Handler register_analyze(CLI::App& app) {
       } catch (const std::invalid_argument& ex) {
         throw std::invalid_argument(d.where() + ex.what());
       }
-      r.json_sections["result"] = contour_json(c).dump();
+      r.json_sections["result"] = contour_json(c);
       contour_diagnostics(r, c);
       if (!a->output.plot.empty()) figures.push_back({"fit", "", contour_figure(t, c, name)});
       text = contour_text(c);

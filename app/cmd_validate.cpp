@@ -1,6 +1,10 @@
 // frictionlab validate MODEL.json DATA --scenario SCENARIO.yaml: simulate an identified model in
-// the scenario's plant and controller and compare it with a measured run.
+// the scenario's plant and controller and compare it with a measured run. On a two-axis plant
+// (xy-table), MODEL is x=MODEL_X.json[,y=MODEL_Y.json] and the circular test of measured and
+// simulated is compared too (analysis/contour_validation.hpp).
 #include <cmath>
+#include <filesystem>
+#include <map>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -11,8 +15,12 @@
 #include "commands.hpp"
 #include "frictionlab/format.hpp"
 #include "data_options.hpp"
+#include "contour_figure.hpp"
+#include "figure_kit.hpp"
+#include "frictionlab/analysis/contour_validation.hpp"
 #include "frictionlab/identify/validate.hpp"
 #include "frictionlab/io/atomic_write.hpp"
+#include "frictionlab/io/columns.hpp"
 #include "frictionlab/io/law_file.hpp"
 #include "frictionlab/io/scenario.hpp"
 #include "output.hpp"
@@ -23,6 +31,9 @@ namespace {
 struct ValidateArgs {
   std::string model, data, scenario;
   DataOptions columns;
+  // A two-axis plant (xy-table): the measured positions and, optionally, drive forces per axis.
+  std::string x = "x.position", y = "y.position", x_force = "x.drive", y_force = "y.drive";
+  CLI::Option *x_force_opt = nullptr, *y_force_opt = nullptr;
   OutputOptions output;
 };
 
@@ -74,6 +85,60 @@ ModelFile read_model(const std::string& path) {
   return m;
 }
 
+// MODEL as "AXIS=FILE[,AXIS=FILE]" (a model per axis of a two-axis plant): the pairs, in order;
+// empty for a plain file name (one model, a one-axis plant). A name that is an existing file
+// is a file, whatever it contains.
+std::vector<std::pair<std::string, std::string>> axis_models(const std::string& arg) {
+  std::vector<std::pair<std::string, std::string>> out;
+  std::error_code ec;
+  if (arg.find('=') == std::string::npos || std::filesystem::exists(arg, ec)) return out;
+  std::size_t start = 0;
+  while (start <= arg.size()) {
+    const std::size_t end = std::min(arg.find(',', start), arg.size());
+    const std::string piece = arg.substr(start, end - start);
+    const std::size_t eq = piece.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == piece.size())
+      throw std::invalid_argument("MODEL '" + arg + "': '" + piece + "' is not AXIS=FILE; expected a MODEL.json, or one "
+                                  "per axis of a two-axis plant as x=MODEL_X.json,y=MODEL_Y.json");
+    const std::string name = piece.substr(0, eq);
+    for (const auto& [seen, file] : out)
+      if (seen == name) throw std::invalid_argument("MODEL '" + arg + "': axis '" + name + "' is given twice");
+    out.emplace_back(name, piece.substr(eq + 1));
+    start = end + 1;
+  }
+  return out;
+}
+
+// A drive-force column of a two-axis record: the option's column when given (it must exist),
+// else the default name when the file has it, else none (forces are then not compared).
+Eigen::VectorXd optional_force(const Dataset& d, const std::string& name, const CLI::Option* opt, const std::string& option) {
+  const bool given = opt && opt->count() > 0;
+  if (!given && !d.has_column(name)) return {};
+  return finite_column(d, name, option);
+}
+
+// "12.3 um" (3 significant digits: a circular test holds no more).
+std::string um(double m) { return format_number(m * 1e6, 3) + " um"; }
+
+std::string contour_text(const ContourValidation& cv) {
+  std::ostringstream s;
+  const ContourResult &m = *cv.measured, &sim = *cv.simulated;
+  s << "contour: circle R " << format_number(m.radius * 1e3, 4) << " mm, " << format_number(m.turns, 3)
+    << " turns (radial error r - R about the reference's centre)\n"
+    << "  " << std::left << std::setw(26) << "" << std::right << std::setw(12) << "measured" << std::setw(12) << "simulated\n";
+  auto row = [&](const std::string& name, double a, double b) {
+    s << "  " << std::left << std::setw(26) << name << std::right << std::setw(12) << um(a) << std::setw(12) << um(b) << "\n";
+  };
+  row("largest quadrant glitch", max_quadrant_glitch(m), max_quadrant_glitch(sim));
+  for (std::size_t i = 0; i < 4; ++i)
+    row("  glitch at " + format_number(m.glitches[i].reversal_deg) + " deg", m.glitches[i].peak_m, sim.glitches[i].peak_m);
+  row("roundness (max - min)", m.roundness_m, sim.roundness_m);
+  row("largest |r - R|", m.max_radial_error_m, sim.max_radial_error_m);
+  s << "  radial error trace: relative error "
+    << format_number(cv.result.diagnostics.numbers.at("radial_error_relative_error_percent"), 4) << " %\n";
+  return s.str();
+}
+
 std::string text_of(const Result& r, const std::string& scenario) {
   std::ostringstream s;
   s << "frictionlab validate: " << r.model << " model in " << scenario << "\n";
@@ -87,23 +152,68 @@ std::string text_of(const Result& r, const std::string& scenario) {
   const auto& v = *r.validation;
   const auto& full = r.diagnostics.groups.at("relative_error_percent_full_rate");
   s << "data " << v.file << ": relative error % (IDIM grid, " << v.samples << " samples; every sample)\n";
-  for (const char* name : {"position", "velocity", "acceleration", "force"})
-    s << "  " << std::left << std::setw(13) << name << std::right << std::setw(10)
+  // One axis: position, velocity, acceleration, force; several: AXIS.SIGNAL, axis by axis.
+  const bool one_axis = v.signal_errors_percent.count("position") > 0;
+  std::vector<std::string> names;
+  if (one_axis) names = {"position", "velocity", "acceleration", "force"};
+  if (!one_axis)
+    for (const std::string axis : {"x", "y"})
+      for (const char* sig : {"position", "velocity", "acceleration", "force"})
+        if (v.signal_errors_percent.count(axis + "." + sig)) names.push_back(axis + "." + sig);
+  for (const std::string& name : names)
+    s << "  " << std::left << std::setw(15) << name << std::right << std::setw(10)
       << format_number(v.signal_errors_percent.at(name), 4) << std::setw(10) << format_number(full.at(name), 4) << "\n";
   for (const auto& w : r.diagnostics.warnings) s << "warning: " << w << "\n";
   return s.str();
 }
 
+// A two-axis plant (xy-table): the models by axis, the x and y records, and the circular test's
+// figures (the measured and simulated contour, the polar error plots, the axes' signals).
+int run_two_axis(const ValidateArgs& a, const std::map<std::string, IdentifiedModel>& models, const Scenario& sc,
+                 const std::shared_ptr<const Dataset>& data, const std::string& data_file, const std::string& data_sha256) {
+  MultiAxisValidationData v;
+  v.time = time_column(*data, a.columns);
+  v.axes.push_back({"x", finite_column(*data, a.x, "--x"), optional_force(*data, a.x_force, a.x_force_opt, "--x-force")});
+  v.axes.push_back({"y", finite_column(*data, a.y, "--y"), optional_force(*data, a.y_force, a.y_force_opt, "--y-force")});
+  v.file = data->file;
+  v.sha256 = data->sha256;
+  ValidateOptions vo;
+  vo.processing.axis = a.columns.parsed_axis();
+  ContourValidation cv = validate_contour(sc, v, models, vo);
+  Result& r = cv.result;
+  r.data_file = data_file;
+  r.data_sha256 = data_sha256;
+  note_data(r, *data);
+  std::string text = text_of(r, a.scenario);
+  if (cv.measured) text += contour_text(cv);
+  std::vector<ReportFigure> figures;
+  if (!a.output.plot.empty() || !a.output.report.empty()) figures = xy_validation_figures(r, cv.measured, cv.simulated, file_name(v.file));
+  return emit(r, a.output, text, &figures);
+}
+
 int run(const ValidateArgs& a) {
   check_outputs(a.output);
-  const ModelFile mf = read_model(a.model);
-  auto data = std::make_shared<const Dataset>(load_data(a.data, a.columns));
+  const auto named = axis_models(a.model);
   ScenarioOptions so;
+  std::map<std::string, IdentifiedModel> models;
+  ModelFile mf;
+  if (named.empty()) {
+    mf = read_model(a.model);
+    so.law = mf.model.law;
+    so.axis = mf.model.axis;
+  } else {
+    for (const auto& [axis, file] : named) {
+      ModelFile m = read_model(file);
+      so.axis_models[axis] = AxisModel{m.model.law, m.model.axis};
+      models.emplace(axis, m.model);
+      if (mf.data_file.empty()) mf = m;  // the first model's identification data, for the result
+    }
+  }
+  auto data = std::make_shared<const Dataset>(load_data(a.data, a.columns));
   so.data = data;
-  so.law = mf.model.law;
-  so.axis = mf.model.axis;
-  so.model_source = a.model;
+  so.model_source = named.size() == 1 ? named.front().second : a.model;
   const Scenario sc = load_scenario(a.scenario, so);
+  if (sc.plant->num_contacts() > 1) return run_two_axis(a, models, sc, data, mf.data_file, mf.data_sha256);
   ValidationData v;
   v.time = time_column(*data, a.columns);
   v.position = position_column(*data, a.columns);
@@ -126,14 +236,30 @@ Handler register_validate(CLI::App& app) {
   auto* cmd = app.add_subcommand("validate",
                                  "Simulate an identified model (MODEL.json of identify --json) in a scenario's plant and "
                                  "controller, driven by a measured run, and report the relative errors of position, "
-                                 "velocity, acceleration and force");
-  cmd->add_option("MODEL", a->model, "MODEL.json written by frictionlab identify ... --json")->required();
+                                 "velocity, acceleration and force; on a two-axis plant (xy-table) per axis, with the circular "
+                                 "test's quadrant glitches and roundness of the measured and the simulated path");
+  cmd->add_option("MODEL", a->model,
+                  "MODEL.json written by frictionlab identify ... --json; on a two-axis plant (xy-table) a model "
+                  "per axis it replaces, AXIS=FILE separated by commas (x=model_x.json,y=model_y.json; an axis not "
+                  "named keeps the scenario's law and mass)")
+      ->required();
   cmd->add_option("DATA", a->data, "Measured run: a CSV file (with a header row, or without one: see --names), or a MATLAB .mat file")->required();
   cmd->add_option("--scenario", a->scenario,
                   "Scenario YAML: plant (axis), controller and input (e.g. examples/emps_closed_loop.yaml); its data "
                   "inputs read DATA, its M, offset and friction come from MODEL")
       ->required();
   add_data_options(cmd, a->columns, "linear");
+  const char* group = "Two-axis plant (xy-table)";
+  cmd->add_option("--x", a->x, "xy-table: measured x position column (m)")->capture_default_str()->group(group);
+  cmd->add_option("--y", a->y, "xy-table: measured y position column (m)")->capture_default_str()->group(group);
+  a->x_force_opt = cmd->add_option("--x-force", a->x_force,
+                                   "xy-table: x drive force column (N; --scale NAME=N_PER_UNIT converts a command); "
+                                   "compared when present")
+                       ->capture_default_str()
+                       ->group(group);
+  a->y_force_opt = cmd->add_option("--y-force", a->y_force, "xy-table: y drive force column (N); compared when present")
+                       ->capture_default_str()
+                       ->group(group);
   add_output_options(cmd, a->output);
   return [a]() -> int { return run(*a); };
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 #include <vector>
 
 #include "figure_kit.hpp"
@@ -47,6 +48,53 @@ FigurePanel axis_error_panel(std::span<const double> t, const std::vector<double
   return p;
 }
 
+// The polar panel's frame: nominal circle of radius R (mm) and the dashed rings at +-ring_m
+// magnified by the scale's factor, with the scale in the title.
+FigurePanel polar_panel(double R, const PolarScale& scale) {
+  FigurePanel polar;
+  polar.title = "radial error x" + format_number(scale.factor) + " about R = " + format_number(R) +
+                " mm; dashed rings: +-" + format_number(scale.ring_m * kUm) + " um";
+  polar.x_label = "x - centre (mm)";
+  polar.y_label = "y - centre (mm)";
+  polar.equal_axes = true;
+  polar.key = "outside right top";  // the path fills the square: the legend beside it
+  polar.zero_line = polar.zero_x_line = true;
+  polar.series.push_back(ring("nominal circle", R, "#606060"));
+  if (scale.ring_m > 0) {
+    const double d = scale.factor * scale.ring_m * kMm;
+    polar.series.push_back(ring("+-" + format_number(scale.ring_m * kUm) + " um", R + d, "#b0b0b0"));
+    polar.series.push_back(ring("", R - d, "#b0b0b0"));
+  }
+  return polar;
+}
+
+// A path's radial error drawn about the nominal circle of radius R (mm), magnified.
+FigureSeries magnified(const std::string& name, const ContourResult& r, double R, const PolarScale& scale,
+                       const std::string& color) {
+  std::vector<double> px, py;
+  for (std::size_t i = 0; i < r.radial_error.size(); ++i) {
+    const double a = r.angle_deg[i] * std::numbers::pi / 180, rad = R + scale.factor * r.radial_error[i] * kMm;
+    px.push_back(rad * std::cos(a));
+    py.push_back(rad * std::sin(a));
+  }
+  return series(name, px, py, SeriesStyle::lines, color);
+}
+
+FigurePanel radial_error_panel() {
+  FigurePanel angle;
+  angle.x_label = "angle (deg)";
+  angle.y_label = "radial error r - R (um)";
+  angle.zero_line = true;
+  angle.tight_x = true;
+  return angle;
+}
+
+FigureSeries radial_error_points(const std::string& name, const ContourResult& r, const std::string& color) {
+  FigureSeries s = series(name, r.angle_deg, scaled(r.radial_error, kUm), SeriesStyle::points, color);
+  s.point_size = 0.25;
+  return s;
+}
+
 }  // namespace
 
 PolarScale polar_scale(double radius_m, double max_error_m) {
@@ -64,27 +112,8 @@ Figure contour_figure(std::span<const double> t, const ContourResult& r, const s
   const PolarScale scale = polar_scale(r.radius, r.max_radial_error_m);
   const double R = r.radius * kMm;
 
-  FigurePanel polar;
-  polar.title = "radial error x" + format_number(scale.factor) + " about R = " + format_number(R) +
-                " mm; dashed rings: +-" + format_number(scale.ring_m * kUm) + " um";
-  polar.x_label = "x - centre (mm)";
-  polar.y_label = "y - centre (mm)";
-  polar.equal_axes = true;
-  polar.key = "outside right top";  // the path fills the square: the legend beside it
-  polar.zero_line = polar.zero_x_line = true;
-  polar.series.push_back(ring("nominal circle", R, "#606060"));
-  if (scale.ring_m > 0) {
-    const double d = scale.factor * scale.ring_m * kMm;
-    polar.series.push_back(ring("+-" + format_number(scale.ring_m * kUm) + " um", R + d, "#b0b0b0"));
-    polar.series.push_back(ring("", R - d, "#b0b0b0"));
-  }
-  std::vector<double> px, py;
-  for (std::size_t i = 0; i < r.radial_error.size(); ++i) {
-    const double a = r.angle_deg[i] * std::numbers::pi / 180, rad = R + scale.factor * r.radial_error[i] * kMm;
-    px.push_back(rad * std::cos(a));
-    py.push_back(rad * std::sin(a));
-  }
-  polar.series.push_back(series("measured", px, py, SeriesStyle::lines, "#0072b2"));
+  FigurePanel polar = polar_panel(R, scale);
+  polar.series.push_back(magnified("measured", r, R, scale, "#0072b2"));
   std::vector<double> gx, gy;
   for (const QuadrantGlitch& g : r.glitches) {
     const double a = g.angle_deg * std::numbers::pi / 180;
@@ -96,13 +125,8 @@ Figure contour_figure(std::span<const double> t, const ContourResult& r, const s
   polar.series.push_back(series("quadrant glitch peaks", gx, gy, SeriesStyle::points, "#d55e00"));
   f.panels.push_back(polar);
 
-  FigurePanel angle;
-  angle.x_label = "angle (deg)";
-  angle.y_label = "radial error r - R (um)";
-  angle.zero_line = true;
-  angle.tight_x = true;
-  angle.series.push_back(series("radial error", r.angle_deg, scaled(r.radial_error, kUm), SeriesStyle::points, "#0072b2"));
-  angle.series.back().point_size = 0.25;
+  FigurePanel angle = radial_error_panel();
+  angle.series.push_back(radial_error_points("radial error", r, "#0072b2"));
   f.panels.push_back(angle);
 
   if (!r.x_error.empty()) f.panels.push_back(axis_error_panel(t, r.x_error, r.y_error));
@@ -136,6 +160,96 @@ std::optional<Figure> xy_figure(const Trajectory& tr, const std::string& title) 
   for (std::size_t i = 0; i < x.size(); ++i) ex[i] = x[i] - xr[i], ey[i] = y[i] - yr[i];
   f.panels.push_back(axis_error_panel(tr.time, ex, ey));
   return f;
+}
+
+std::vector<ReportFigure> xy_validation_figures(const Result& r, const std::optional<ContourResult>& measured,
+                                                const std::optional<ContourResult>& simulated, const std::string& title) {
+  std::vector<ReportFigure> out;
+  const std::vector<double>* t = find(r, "time");
+  if (!t) return out;
+  constexpr const char* kMeasured = "#0072b2";
+  constexpr const char* kSimulated = "#d55e00";
+  Figure contour;
+  contour.panel_height = 520;
+  if (measured && simulated) {
+    contour.title = "Circular test, measured and simulated - " + title;
+    // One magnification for both, from the larger error: the two traces are read against each other.
+    const PolarScale scale =
+        polar_scale(measured->radius, std::max(measured->max_radial_error_m, simulated->max_radial_error_m));
+    const double R = measured->radius * kMm;
+    FigurePanel polar = polar_panel(R, scale);
+    polar.series.push_back(magnified("measured", *measured, R, scale, kMeasured));
+    polar.series.push_back(magnified("simulated", *simulated, R, scale, kSimulated));
+    contour.panels.push_back(polar);
+    FigurePanel angle = radial_error_panel();
+    angle.series.push_back(radial_error_points("measured", *measured, kMeasured));
+    angle.series.push_back(radial_error_points("simulated", *simulated, kSimulated));
+    contour.panels.push_back(angle);
+    out.push_back({"contour",
+                   "The circular test: the measured and the simulated radial error about the nominal circle at one "
+                   "magnification (polar), and against angle; the quadrant glitches sit at the axis reversals.",
+                   std::move(contour)});
+  } else {
+    contour.title = "Two-axis path, measured and simulated - " + title;
+    FigurePanel plane;
+    plane.x_label = "x (mm)";
+    plane.y_label = "y (mm)";
+    plane.equal_axes = true;
+    const auto* xr = find(r, "x.reference");
+    const auto* yr = find(r, "y.reference");
+    if (xr && yr) plane.series.push_back(series("reference", scaled(*xr, kMm), scaled(*yr, kMm), SeriesStyle::lines, "#606060"));
+    for (const auto& [name, suffix, color] : {std::tuple{"measured", "", kMeasured}, std::tuple{"simulated", "_sim", kSimulated}}) {
+      const auto* x = find(r, std::string("x.position") + suffix);
+      const auto* y = find(r, std::string("y.position") + suffix);
+      if (x && y) plane.series.push_back(series(name, scaled(*x, kMm), scaled(*y, kMm), SeriesStyle::lines, color));
+    }
+    contour.panels.push_back(plane);
+    out.push_back({"contour", "The measured and the simulated path with the reference, in the plane.", std::move(contour)});
+  }
+
+  Figure axes;
+  axes.title = "Axes, measured and simulated - " + title;
+  axes.panel_height = 260;
+  for (const char* a : {"x", "y"}) {
+    const std::string p = std::string(a) + ".";
+    const auto* ref = find(r, p + "reference");
+    FigurePanel err = time_panel(std::string(a) + " - " + a + " reference (um)");
+    for (const auto& [name, suffix, color] : {std::tuple{"measured", "", kMeasured}, std::tuple{"simulated", "_sim", kSimulated}}) {
+      const auto* q = find(r, p + "position" + suffix);
+      if (!q || !ref) continue;
+      std::vector<double> e(q->size());
+      for (std::size_t i = 0; i < q->size() && i < ref->size(); ++i) e[i] = ((*q)[i] - (*ref)[i]) * kUm;
+      err.series.push_back(series(name, *t, e, SeriesStyle::lines, color));
+    }
+    axes.panels.push_back(err);
+    struct Signal {
+      const char* name;
+      std::string label;
+    };
+    for (const Signal& sig : {Signal{"velocity", std::string(a) + " " + label("velocity", Quantity::velocity, r.axis)},
+                              Signal{"force", std::string(a) + " " + label("drive force", Quantity::force, r.axis)}}) {
+      const auto* meas = find(r, p + sig.name);
+      const auto* sim = find(r, p + sig.name + "_sim");
+      FigurePanel panel = time_panel(sig.label);
+      if (meas) panel.series.push_back(series("measured", *t, *meas, SeriesStyle::lines, kMeasured));
+      if (sim) panel.series.push_back(series("simulated", *t, *sim, SeriesStyle::lines, kSimulated));
+      axes.panels.push_back(panel);
+    }
+  }
+  out.push_back({"axes",
+                 "Each axis over time, measured and simulated: the tracking error against the reference, the "
+                 "velocity (from the low-passed position) and the drive force (the simulated command; measured when "
+                 "the record has it).",
+                 std::move(axes)});
+  if (measured && simulated) {
+    out.push_back({"measured-contour",
+                   "The measured circular test: polar error plot with the quadrant glitch peaks marked, radial "
+                   "error against angle, and each axis's tracking error.",
+                   contour_figure(*t, *measured, "measured - " + title)});
+    out.push_back({"simulated-contour", "The same for the simulation of the models.",
+                   contour_figure(*t, *simulated, "simulated - " + title)});
+  }
+  return out;
 }
 
 }  // namespace frictionlab::cli

@@ -5,9 +5,12 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "frictionlab/analysis/contour.hpp"
+#include "frictionlab/identify/result.hpp"
 #include "frictionlab/io/figure.hpp"
+#include "frictionlab/io/report.hpp"
 #include "frictionlab/simulate/trajectory.hpp"
 
 namespace frictionlab::cli {
@@ -28,6 +31,16 @@ PolarScale polar_scale(double radius_m, double max_error_m);
 /// axes), the radial error against angle (um), and with a reference x - xr and y - yr against time
 /// `t` (s, um). `t` has the length of r's per-sample vectors. `title` names the data file.
 Figure contour_figure(std::span<const double> t, const ContourResult& r, const std::string& title);
+
+/// validate on a two-axis table: the figures of the report, in order. "contour": with both
+/// contours, the measured and the simulated radial error in one polar plot at one magnification,
+/// and against angle; without (the reference is not a circle) the measured and simulated paths
+/// and the reference in the plane (mm). "axes": per axis, the tracking error (position less the
+/// simulated reference, um), velocity and (when measured) drive force, measured and simulated
+/// over time. "measured-contour" and "simulated-contour": contour_figure of each (with both).
+/// `r` is validate_axes's result (its series), `title` names the data file.
+std::vector<ReportFigure> xy_validation_figures(const Result& r, const std::optional<ContourResult>& measured,
+                                                const std::optional<ContourResult>& simulated, const std::string& title);
 
 /// simulate --plot on a two-axis table (contacts "x" and "y"): when the reference runs a circle
 /// of at least one turn, contour_figure of the run; else the path and its reference in the plane

@@ -401,7 +401,8 @@ int emit(const Result& r, const OutputOptions& o, const std::string& text_overri
     // then never says ok for a run that failed (the error JSON replaces it, see fail()).
     // The method's figures (app/methods/), or the ones the command drew itself.
     const std::vector<ReportFigure> figs = figures ? *figures : result_figures(r);
-    const bool has_fit = !figs.empty() && figs.front().name == "fit";
+    // --plot draws the method's "fit" figure, or the first of the command's own.
+    const bool has_fit = !figs.empty() && (figures != nullptr || figs.front().name == "fit");
     if (!o.plot.empty()) {
       if (!has_fit) throw std::runtime_error("--plot: the " + r.method + " result carries no signals to draw");
       progress_stage("drawing " + o.plot);

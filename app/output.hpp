@@ -82,7 +82,8 @@ std::string result_text(const Result& r);
 /// answer: one error line on stderr as fail() prints it; the JSON and the report still say why;
 /// no figure is drawn).
 /// The figures are the method's (result_figures of figures.hpp: the first, "fit", is what --plot
-/// draws), or `figures` when given (analyze draws its own from the analysis result).
+/// draws), or `figures` when given (analyze draws its own from the analysis result, validate on a
+/// two-axis plant the circular test's; --plot draws the first of them).
 /// This is the one output path of identify, validate and analyze.
 int emit(const Result& r, const OutputOptions& o, const std::string& text_override = "",
          const std::vector<ReportFigure>* figures = nullptr);

@@ -95,7 +95,14 @@ void init_result(py::module_& m) {
       .def_readonly("rmse", &ValidationFigures::rmse, "Root mean square error, unit of y (N or N m).")
       .def_readonly("samples", &ValidationFigures::samples, "Samples compared.")
       .def_readonly("signal_errors_percent", &ValidationFigures::signal_errors_percent,
-                    "validate(): relative error (percent) of each signal: position, velocity, acceleration, force.")
+                    "validate(): relative error (percent) of each signal: position, velocity, acceleration, force "
+                    "(validate_xy: 'x.position', ..., 'y.force').")
+      .def_property_readonly("sections", [](const ValidationFigures& f) {
+        py::dict d;
+        for (const auto& [key, text] : f.json_sections) d[py::str(key)] = json_loads(text);
+        return d;
+      }, "Further figures by name as in the JSON's validation block: validate_xy's 'contour' ({'measured': {...}, "
+         "'simulated': {...}, 'difference': {...}, 'relative_error_percent': {...}}; m), when the reference is a circle.")
       .def("__repr__", [](const ValidationFigures& f) {
         return "ValidationFigures(file='" + f.file + "', relative_error_percent=" + num(f.relative_error_percent) +
                ", rmse=" + num(f.rmse) + ", samples=" + std::to_string(f.samples) + ")";

@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -216,6 +217,32 @@ ContourResult analyze_contour(std::span<const double> t, std::span<const double>
   r.roundness_m = *emax - *emin;
   r.max_radial_error_m = std::max(std::abs(*emin), std::abs(*emax));
   return r;
+}
+
+double max_quadrant_glitch(const ContourResult& r) {
+  double m = 0.0;
+  for (const QuadrantGlitch& g : r.glitches) m = std::max(m, std::abs(g.peak_m));
+  return m;
+}
+
+std::string contour_json(const ContourResult& r) {
+  const auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  nlohmann::json glitches = nlohmann::json::array(), peaks = nlohmann::json::array();
+  for (const auto& g : r.glitches) {
+    glitches.push_back({{"reversal_deg", g.reversal_deg}, {"peak_m", num(g.peak_m)}, {"angle_deg", num(g.angle_deg)},
+                        {"extent_deg", num(g.extent_deg)}, {"time", num(g.time)}});
+    peaks.push_back(num(g.peak_m));
+  }
+  const nlohmann::json j = {{"centre_m", {num(r.centre_x), num(r.centre_y)}},
+                            {"radius_m", num(r.radius)},
+                            {"centre_from", r.centre_source},
+                            {"turns", num(r.turns)},
+                            {"roundness_m", num(r.roundness_m)},
+                            {"max_radial_error_m", num(r.max_radial_error_m)},
+                            {"max_quadrant_glitch_m", num(max_quadrant_glitch(r))},
+                            {"quadrant_glitch_m", peaks},
+                            {"quadrant_glitches", glitches}};
+  return j.dump();
 }
 
 }  // namespace frictionlab

@@ -54,6 +54,13 @@ std::string to_json(const Result& r, int indent) {
       for (const auto& [name, value] : v.signal_errors_percent) e[name] = number(value);
       j["validation"]["relative_error_percent"] = e;
     }
+    for (const auto& [key, text] : v.json_sections) {
+      try {
+        j["validation"][key] = nlohmann::json::parse(text);
+      } catch (const nlohmann::json::parse_error& e) {
+        throw std::invalid_argument("to_json: validation." + key + " is not valid JSON: " + e.what());
+      }
+    }
   }
   nlohmann::json d = nlohmann::json::object();
   for (const auto& [key, value] : r.diagnostics.numbers) d[key] = number(value);

@@ -16,6 +16,8 @@
 
 #include <sys/stat.h>
 
+#include <nlohmann/json.hpp>
+
 #include "frictionlab/format.hpp"
 #include "frictionlab/identify/method.hpp"
 #include "frictionlab/io/atomic_write.hpp"
@@ -92,6 +94,42 @@ void table_head(std::ostringstream& h, std::initializer_list<const char*> cols) 
   h << "<table><thead><tr>";
   for (const char* c : cols) h << "<th>" << c << "</th>";
   h << "</tr></thead><tbody>\n";
+}
+
+// A validation's further figures (ValidationFigures::json_sections), one table each: an object of
+// objects (validate's "contour": measured, simulated, difference, ...) as rows of the inner keys
+// whose values are numbers or lists of numbers, one column per outer key.
+void validation_sections_html(std::ostringstream& h, const ValidationFigures& v) {
+  for (const auto& [key, text] : v.json_sections) {
+    const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+    if (!j.is_object()) continue;
+    std::vector<std::string> columns, rows;
+    for (const auto& [outer, inner] : j.items()) {
+      if (!inner.is_object()) continue;
+      columns.push_back(outer);
+      for (const auto& [name, value] : inner.items()) {
+        const bool numbers = value.is_number() || (value.is_array() && !value.empty() && value.front().is_number());
+        if (numbers && std::find(rows.begin(), rows.end(), name) == rows.end()) rows.push_back(name);
+      }
+    }
+    if (columns.empty() || rows.empty()) continue;
+    h << "<h3>" << esc(key) << "</h3>\n<table><thead><tr><th>figure</th>";
+    for (const auto& c : columns) h << "<th>" << esc(c) << "</th>";
+    h << "</tr></thead><tbody>\n";
+    for (const auto& row : rows) {
+      h << "<tr><td>" << esc(row) << "</td>";
+      for (const auto& c : columns) {
+        const nlohmann::json& x = j[c].contains(row) ? j[c][row] : nlohmann::json();
+        std::string cell;
+        if (x.is_number()) cell = general(x.get<double>(), 4);
+        if (x.is_array())
+          for (const auto& e : x) cell += (cell.empty() ? "" : ", ") + (e.is_number() ? general(e.get<double>(), 4) : std::string("n/a"));
+        h << "<td class=\"num\">" << cell << "</td>";
+      }
+      h << "</tr>\n";
+    }
+    h << "</tbody></table>\n";
+  }
 }
 
 void diagnostics_html(std::ostringstream& h, const Diagnostics& d) {
@@ -230,6 +268,15 @@ std::string report_html(const Result& r, const std::vector<std::pair<std::string
   h << "</tbody></table>\n<p class=\"note\">Relative error = 100 &middot; ||y &minus; &#375;|| / ||y||; rmse in the "
        "unit of the fitted signal"
     << (fit_signal.empty() ? "" : " (" + esc(fit_signal) + ")") << ".</p>\n";
+  if (r.validation && !r.validation->signal_errors_percent.empty()) {
+    // validate: each simulated signal against the measured one.
+    h << "<h2 id=\"validation\">Validation</h2>\n";
+    table_head(h, {"signal", "relative error"});
+    for (const auto& [name, e] : r.validation->signal_errors_percent)
+      h << "<tr><td>" << esc(name) << "</td><td class=\"num\">" << general(e, 4) << " %</td></tr>\n";
+    h << "</tbody></table>\n";
+    validation_sections_html(h, *r.validation);
+  }
 
   // Warnings.
   h << "<h2 id=\"warnings\">Warnings</h2>\n";

@@ -202,6 +202,7 @@ struct PlantContext {
   bool fallback_law = false;
   std::function<FrictionLaw()> fallback;
   std::string base_dir;
+  const ScenarioOptions* options = nullptr;  // the caller's: its per-axis models (axis_models)
 };
 
 // What a `compensation:` block falls back on: the directory its model file is resolved from, the
@@ -376,9 +377,17 @@ void read_xy_gains(const Section& s, ControllerParams& c) {
 }
 
 // `shared`: the plant's `compensation` block (null when none), which the axis's own replaces.
-XyAxis read_xy_axis(const Section& s, const ControllerParams& common, const PlantContext& ctx, const Section* shared) {
-  s.allow({"mass", "inertia", "lead", "friction", "drive", "compensation"});
+// An identified model of the axis (ScenarioOptions::axis_models) replaces its law, mass and
+// offset; its inertia and lead go (the model's M is the equivalent mass).
+XyAxis read_xy_axis(const Section& s, const std::string& name, const ControllerParams& common, const PlantContext& ctx,
+                    const Section* shared) {
+  s.allow({"mass", "inertia", "lead", "offset", "friction", "drive", "compensation"});
   XyAxis a;
+  const AxisModel* model = nullptr;
+  if (ctx.options) {
+    const auto it = ctx.options->axis_models.find(name);
+    if (it != ctx.options->axis_models.end()) model = &it->second;
+  }
   if (!s.has("mass") && !s.has("inertia"))
     throw std::invalid_argument(s.path() + ": missing 'mass' (kg) or 'inertia' (kg m^2) with 'lead' (m/rev)");
   a.mass = s.number("mass", a.mass);
@@ -389,7 +398,13 @@ XyAxis read_xy_axis(const Section& s, const ControllerParams& common, const Plan
   } else if (s.has("lead")) {
     throw std::invalid_argument(s.at("lead") + ": a lead without 'inertia' (kg m^2) has nothing to reflect; give both or neither");
   }
-  if (s.has("friction")) {
+  a.offset = s.number("offset", a.offset);
+  if (model) {
+    a.law = model->law;
+    a.mass = model->axis.M;
+    a.inertia = a.lead = 0.0;
+    a.offset = model->axis.offset;
+  } else if (s.has("friction")) {
     a.law = law_from_yaml(s.node("friction"), s.at("friction"));
   } else if (!ctx.fallback_law) {
     throw std::invalid_argument(s.path() + ": missing 'friction' (the axis's law), and there is no top-level 'friction' for it");
@@ -434,9 +449,12 @@ PlantPtr read_xy_table(const Section& s, const PlantContext& ctx) {
   std::optional<Section> shared;
   if (s.has("compensation")) shared.emplace(s.node("compensation"), s.at("compensation"));
   const Section* sh = shared ? &*shared : nullptr;
-  XyAxis x = read_xy_axis(Section(axes.node("x"), axes.at("x")), common, ctx, sh);
-  XyAxis y = read_xy_axis(Section(axes.node("y"), axes.at("y")), common, ctx, sh);
-  return with_context(s.path(), [&] { return std::make_shared<const XyTable>(std::move(x), std::move(y), timing); });
+  XyAxis x = read_xy_axis(Section(axes.node("x"), axes.at("x")), "x", common, ctx, sh);
+  XyAxis y = read_xy_axis(Section(axes.node("y"), axes.at("y")), "y", common, ctx, sh);
+  // A bad identified mass or offset is the model file's (the caller checks it; this names the axis).
+  const bool modelled = ctx.options && !ctx.options->axis_models.empty();
+  const std::string source = modelled && !ctx.options->model_source.empty() ? ctx.options->model_source : s.path();
+  return with_context(source, [&] { return std::make_shared<const XyTable>(std::move(x), std::move(y), timing); });
 }
 
 constexpr std::pair<const char*, PlantPtr (*)(const Section&, const PlantContext&)> kPlantReaders[] = {
@@ -449,8 +467,23 @@ constexpr std::pair<const char*, PlantPtr (*)(const Section&, const PlantContext
 };
 
 PlantPtr read_plant(const Section& s, const ScenarioOptions& o, const PlantContext& ctx) {
+  if (!o.axis_models.empty()) {
+    const std::string type = s.text("type", "");
+    if (type != "xy-table")
+      throw std::invalid_argument(s.at("type") + ": plant type '" + type + "' has one axis; models named by axis (" +
+                                  o.axis_models.begin()->first + ") need a two-axis plant (xy-table)");
+    if (o.law || o.axis)
+      throw std::invalid_argument(s.at("type") + ": give the xy-table models by axis name only, not also a one-axis model");
+    for (const auto& [name, m] : o.axis_models)
+      if (name != "x" && name != "y")
+        throw std::invalid_argument(s.at("type") + ": the xy-table has no axis '" + name + "'; expected x or y");
+  }
   if (o.axis) {
     const std::string type = s.text("type", "axis");
+    if (type == "xy-table")
+      throw std::invalid_argument(s.at("type") + ": the xy-table has two axes (x, y): a one-axis model (inertia, offset, "
+                                  "law) must name the axis it replaces (frictionlab validate: x=MODEL.json, or "
+                                  "x=MODEL_X.json,y=MODEL_Y.json)");
     if (type != "axis")
       throw std::invalid_argument(s.at("type") + ": plant type '" + type +
                                   "' cannot take an identified inertia and offset; expected axis");
@@ -780,6 +813,7 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
   ctx.fallback_law = options.law.has_value() || top.has("friction");
   ctx.fallback = [&] { return options.law ? *options.law : law_from_yaml(root["friction"], where + ": friction"); };
   ctx.base_dir = options.base_dir;
+  ctx.options = &options;
   sc.plant = read_plant(section("plant"), options, ctx);
   const bool two_axis = sc.plant->num_inputs() == 2;  // an xy-table: its axes carry their laws
   if (options.law) {

@@ -27,6 +27,7 @@ void check_axis(const XyAxis& a, int i) {
   require(std::isfinite(a.mass) && a.mass >= 0, i, "mass", a.mass, ">= 0 (kg)");
   require(std::isfinite(a.inertia) && a.inertia >= 0, i, "inertia", a.inertia, ">= 0 (kg m^2)");
   require(std::isfinite(a.lead) && a.lead >= 0, i, "lead", a.lead, ">= 0 (m/rev)");
+  require(std::isfinite(a.offset), i, "offset", a.offset, "finite (N)");
   require(a.inertia == 0 || a.lead > 0, i, "lead", a.lead, "> 0 (m/rev) when an inertia is given");
   const double M = a.equivalent_mass();
   require(std::isfinite(M) && M > 0, i, "equivalent mass", M, "> 0 (kg): give mass, or inertia and lead");
@@ -129,7 +130,8 @@ void XyTable::initial_extras(std::span<double> x) const {
 }
 
 void XyTable::applied(double t, std::span<const double> x, Inputs u, std::span<double> force) const {
-  for (int i = 0; i < 2; ++i) force[static_cast<std::size_t>(i)] = command(i, t, x, u[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < 2; ++i)
+    force[static_cast<std::size_t>(i)] = command(i, t, x, u[static_cast<std::size_t>(i)]) + axes_[i].offset;
 }
 
 void XyTable::derivatives(double t, std::span<const double> x, Inputs u, std::span<const double> friction,
@@ -156,7 +158,7 @@ void XyTable::derivatives(double t, std::span<const double> x, Inputs u, std::sp
       dx[b + kIntegral] = r.value - x[p];
     }
     dx[p] = x[p + 1];
-    dx[p + 1] = (drive - friction[static_cast<std::size_t>(i)]) / mass_[i];
+    dx[p + 1] = (drive + axes_[i].offset - friction[static_cast<std::size_t>(i)]) / mass_[i];
   }
 }
 

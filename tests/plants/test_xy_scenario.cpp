@@ -115,7 +115,7 @@ TEST(XyScenario, BadFilesNameTheKeyAndWhatIsExpected) {
        "s.yaml: input.type: input type 'circle' gives two references and needs a two-axis plant (xy-table); plant axis takes one input: "
        "constant, step, ramp, trapezoid, sine, table, data"},
       {"plant: {type: xy-table, axes: {x: {mass: 1, friction: {law: coulomb, Fc: 1}}, y: {mass: 1, weight: 2}}}\n" + circle,
-       "s.yaml: plant.axes.y.weight: unknown field 'weight'; valid fields: mass, inertia, lead, friction, drive, compensation"},
+       "s.yaml: plant.axes.y.weight: unknown field 'weight'; valid fields: mass, inertia, lead, offset, friction, drive, compensation"},
       {"plant: {type: xy-table, axes: {x: {mass: 1, friction: {law: coulomb, Fc: 1}}, y: {mass: 1}}}\n" + circle,
        "s.yaml: plant.axes.y: missing 'friction' (the axis's law), and there is no top-level 'friction' for it"},
       {"plant: {type: xy-table, axes: {x: {mass: 1, friction: {law: coulomb, Fc: 1}}}}\n" + circle,

@@ -54,6 +54,8 @@ def array_calls(idim_ok, emps, source_dir):
                                                  "xr": np.cos(2 * np.pi * 5 * T), "yr": WAVE.copy()}, {"xr", "yr"}),
         "validate": (lambda **a: fl.validate(idim_ok, data, scenario, **a),
                      {"time": T, "position": WAVE, "force": WAVE}, set()),
+        "validate_xy": (lambda **a: fl.validate_xy({"x": idim_ok}, source_dir / "examples" / "xy_circle.yaml", **a),
+                        {"time": T, "x": WAVE, "y": WAVE, "x_force": WAVE, "y_force": WAVE}, {"x_force", "y_force"}),
         "FrictionLaw.sliding": (lambda **a: fl.FrictionLaw({"law": "coulomb", "Fc": 1.0}).sliding(**a),
                                 {"v": WAVE}, set()),
         "FrictionLaw.force": (lambda **a: fl.FrictionLaw({"law": "coulomb", "Fc": 1.0}).force(**a),
@@ -75,7 +77,7 @@ NO_ARRAYS = {"ArgumentTypeError", "BreakawayOptions", "ContourResult", "DecayOpt
              "Scenario", "FrictionLaw"}
 ARRAY_FUNCTIONS = {"identify_idim", "idim_regression", "cross_test", "idim_reconstruction", "identify_breakaway",
                    "identify_sweep", "sweep_points", "identify_decay", "identify_lugre", "fit_static_law",
-                   "decay_envelope", "detect_stick_slip", "validate", "analyze_contour"}
+                   "decay_envelope", "detect_stick_slip", "validate", "validate_xy", "analyze_contour"}
 
 
 def test_every_public_name_is_covered():

@@ -66,6 +66,16 @@ ContourResult analyze_contour(std::span<const double> t, std::span<const double>
                               std::span<const double> xr = {}, std::span<const double> yr = {},
                               const ContourOptions& options = {});
 
+/// The largest |peak| of the four quadrant glitches (m).
+double max_quadrant_glitch(const ContourResult& r);
+
+/// The figures of a circular test as JSON text (one line; non-finite numbers are null):
+/// {"centre_m": [x, y], "radius_m", "centre_from", "turns", "roundness_m", "max_radial_error_m",
+///  "max_quadrant_glitch_m", "quadrant_glitch_m": [four peaks at 0, 90, 180, 270 deg],
+///  "quadrant_glitches": [{"reversal_deg", "peak_m", "angle_deg", "extent_deg", "time"} x 4]}
+/// (m, deg, s). The per-sample vectors are not written.
+std::string contour_json(const ContourResult& r);
+
 /// Least-squares circle through points (x_i, y_i) (algebraic fit: minimises the sum of
 /// (x^2 + y^2 + D x + E y + F)^2): {centre x, centre y, radius} (m).
 /// \throws std::invalid_argument with fewer than 3 points, lengths that differ, or collinear points.

@@ -39,6 +39,9 @@ struct ValidationFigures {
   /// Signals behind the cross-test figure, in SI units (not written to JSON): idim's cross_test
   /// gives "time", "force" (measured) and "force_model" (predicted), of one length.
   std::map<std::string, std::vector<double>> series;
+  /// Further figures as JSON text by key, each written under its key inside JSON "validation"
+  /// (validate on an xy-table: "contour", the circular-test figures of measured and simulated).
+  std::map<std::string, std::string> json_sections;
 };
 
 /// Correlation of the parameter estimates: matrix[i][j] = cov_ij / sqrt(cov_ii cov_jj) of the

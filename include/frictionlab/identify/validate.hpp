@@ -9,7 +9,9 @@
 // `decimation`), as the published EMPS figures were; the full-rate figures are reported too.
 
 #include <Eigen/Core>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/result.hpp"
@@ -67,5 +69,45 @@ struct ValidateOptions {
 ///         without a plant; std::runtime_error when the simulation fails.
 Result validate_model(const IdentifiedModel& model, const Scenario& scenario, const ValidationData& data,
                       const ValidateOptions& options = {});
+
+/// One axis of a multi-axis validation run: the contact it is (Contact::name, e.g. "x") and its
+/// measured signals (SI units, each of the time column's length).
+struct AxisRecord {
+  std::string name;          ///< contact name of the scenario's plant ("x", "y" on an xy-table)
+  Eigen::VectorXd position;  ///< m or rad
+  Eigen::VectorXd force;     ///< the drive's force (N or N m); empty: not compared
+};
+
+/// Measured signals of a run of a plant with several named contacts (an xy-table).
+struct MultiAxisValidationData {
+  Eigen::VectorXd time;         ///< s, length N >= 2, regular; sample k is compared with the simulation at k dt
+  std::vector<AxisRecord> axes;  ///< one per contact compared (at least one)
+  std::string file;             ///< source file, for results and messages
+  std::string sha256;           ///< its digest
+};
+
+/// validate_model for a plant with several named contacts (an xy-table): the scenario (its axes
+/// already carrying the identified models, see io/scenario.hpp ScenarioOptions::axis_models) is
+/// simulated over the record (duration (N - 1) dt, output rate 1/dt, initial state: each axis at
+/// its measured position and derived velocity of sample 0 when options.initial_state_from_data,
+/// else the scenario's) and each axis's position, velocity, acceleration (derived as in
+/// validate_model) and, when measured, drive force are compared with the simulation.
+/// `models` names the axes whose law and inertia came from an identified model (for the report).
+/// \returns method "validate", model "x: LAW, y: LAW" (every contact's), parameters "AXIS.M" (kg,
+///          the equivalent mass), "AXIS.offset" (N; axes in `models`) and "AXIS.PARAM" of each
+///          contact's law (units on options.processing.axis); rmse of the measured drive forces
+///          (N, every sample; NaN when none was measured);
+///          `validation` with errors (%) keyed "AXIS.position", "AXIS.velocity",
+///          "AXIS.acceleration", "AXIS.force" on the IDIM grid; diagnostics group
+///          "relative_error_percent_full_rate" (same keys, every sample); texts "AXIS.model" (the
+///          model file, or "scenario"); series "time" and per axis "AXIS.position",
+///          "AXIS.position_sim", "AXIS.velocity", "AXIS.velocity_sim", "AXIS.acceleration",
+///          "AXIS.acceleration_sim", "AXIS.reference" (the simulated reference), "AXIS.force_sim",
+///          and "AXIS.force" when measured.
+/// \throws std::invalid_argument as validate_model, naming the axis and signal; for an axis name
+///         the plant has no contact of (listing its contacts), an axis given twice, or no axes;
+///         std::runtime_error when the simulation fails.
+Result validate_axes(const Scenario& scenario, const MultiAxisValidationData& data,
+                     const std::map<std::string, IdentifiedModel>& models, const ValidateOptions& options = {});
 
 }  // namespace frictionlab

@@ -46,7 +46,7 @@
 //   input: {type: path, file: path.csv, time: time, x: x, y: y, scale: 1}   # columns; scale m per unit
 //   initial: {position: [x, y], velocity: [vx, vy]}   # optional; default: at rest on the contour's start
 // Per axis: mass (kg) and/or inertia (kg m^2) with lead (m/rev), equivalent mass mass + inertia
-// (2 pi / lead)^2; friction (required unless a top-level `friction` stands in for it); drive: the
+// (2 pi / lead)^2; offset (N, default 0: a constant force on the carriage); friction (required unless a top-level `friction` stands in for it); drive: the
 // force limit (N) and any gain overriding the plant's controller (gains in N/m, N/(m s), N/(m/s),
 // N/(m/s), N/(m/s^2)). The top-level `friction` and `controller` belong to 1-input plants; the
 // xy-table refuses a top-level controller. `duration` defaults to the circle's turns 2 pi R / F, or
@@ -79,6 +79,7 @@
 // 1 / (Ka Kt)). A type that does not fit the law (lugre-observer without a LuGre law), a parameter
 // of another type, or an unknown key is refused naming the key.
 
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -94,6 +95,12 @@ class Node;
 
 namespace frictionlab {
 
+/// An identified model of one axis: its friction law, inertia M (kg or kg m^2) and offset (N or N m).
+struct AxisModel {
+  FrictionLaw law;
+  AxisParams axis;
+};
+
 /// What the caller supplies or replaces when reading a scenario (frictionlab validate: the
 /// measured data set, and the identified law, inertia and offset).
 struct ScenarioOptions {
@@ -105,9 +112,14 @@ struct ScenarioOptions {
   /// Replaces M (kg or kg m^2) and offset (N or N m) of the plant, which must then be an axis
   /// (`M` may then be absent in the file).
   std::optional<AxisParams> axis;
+  /// Identified models of a two-axis plant's axes (xy-table), by axis name ("x", "y"): each
+  /// replaces that axis's friction law, its mass by the model's M (kg: the equivalent mass, so
+  /// the axis's inertia and lead are dropped) and its offset (N); an axis not named keeps the
+  /// scenario's. The plant must then be an xy-table, and `law` and `axis` must be empty.
+  std::map<std::string, AxisModel> axis_models;
   /// Directory relative file names are resolved from; empty = the working directory.
   std::string base_dir;
-  /// Where `law` and `axis` came from (MODEL.json): an invalid inertia or offset is blamed on
+  /// Where `law` and `axis` (or `axis_models`) came from (MODEL.json): an invalid inertia or offset is blamed on
   /// this file, not on the scenario. Empty: on the scenario's plant section.
   std::string model_source;
 };

@@ -5,7 +5,7 @@
 // while the other moves on, and the contour shows a glitch at each of the four quadrant crossings.
 //
 // Axis k (k = x, y), force-driven (the drive's force on the carriage, N):
-//   M_k a_k = u_k - F_k(v_k)                                 (M_k: equivalent mass, F_k: its own law)
+//   M_k a_k = u_k + offset_k - F_k(v_k)          (M_k: equivalent mass, F_k: its own law, offset_k a constant force)
 //   u_k = sat_k(Kp e + Ki int(e) - Kd v + Kvff dr/dt + Kaff d2r/dt2 + c_k),  e = r_k - x_k
 // with c_k an optional friction compensator's force (control/compensator.hpp), added before the
 // saturation |u_k| <= limit_k. Continuous (Ts = 0): exactly ClosedLoop's position loop per axis.
@@ -39,6 +39,9 @@ struct XyAxis {
   /// (N/(m/s^2)) and the drive's force limit `limit` (N, 0 = none): the saturation. `loop` must be
   /// position and compensation_gain 1 (the drive takes a force). Defaults: all 0.
   ControllerParams gains;
+  /// Constant force on the carriage (N), added to the drive's: a cable chain's pull, gravity on
+  /// an inclined axis, or an identified model's offset. Default 0.
+  double offset = 0.0;
   /// Friction compensator (N) added to the command before the saturation; null = none (default).
   std::shared_ptr<const Compensator> compensator;
 
@@ -60,7 +63,8 @@ struct XyTiming {
 /// acceleration feed the feedforward terms. Then each axis's own states, x's block before y's:
 /// the integral of the position error (m s), then, when sampled, the applied and the last computed
 /// command (N), then its compensator's states. Signals of axis k: reference = r_k (m), drive = the
-/// force the drive applies to the carriage (N: the held command when sampled), current = voltage = 0.
+/// force the drive applies to the carriage (N: the held command when sampled; without the axis's
+/// offset, which `applied` includes), current = voltage = 0.
 ///
 /// Compensation (continuous, as ClosedLoop): the compensator's states are plant states following
 /// Compensator::derivatives, its event functions are the plant's (x's first, then y's), its drive
@@ -71,7 +75,7 @@ struct XyTiming {
 class XyTable : public Plant {
  public:
   /// \throws std::invalid_argument naming the axis, the parameter, its value and unit when a mass,
-  ///         inertia, lead or gain is negative or not finite, the equivalent mass is not > 0, an
+  ///         inertia, lead or gain is negative or not finite, an offset is not finite, the equivalent mass is not > 0, an
   ///         inertia is given without a lead, a gain set is not a position loop with
   ///         compensation_gain 1, Ts is negative or not finite, or delay is not 0 or 1 (1 only
   ///         when sampled).
