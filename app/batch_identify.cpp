@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -12,6 +11,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "frictionlab/format.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/io/figure.hpp"
 #include "output.hpp"
@@ -29,10 +29,7 @@ bool ends_with_json(const std::string& path) {
 
 // A number as the shortest text that reads back to the same double; "" for NaN (CSV's "none").
 std::string number_text(double v) {
-  if (!std::isfinite(v)) return "";
-  char buf[32];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return ec == std::errc() ? std::string(buf, end) : std::to_string(v);
+  return std::isfinite(v) ? format_exact(v) : "";
 }
 
 std::string csv_cell(const std::string& s) {

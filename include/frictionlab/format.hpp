@@ -3,6 +3,7 @@
 // Python reprs): one header. JSON numbers are nlohmann_json's (shortest round-trip text).
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -18,6 +19,14 @@ inline std::string format_number(double value, int digits = 6) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.*g", digits < 1 ? 1 : (digits > 17 ? 17 : digits), value);
   return buf;
+}
+
+/// A number exactly: the shortest text that reads back to the same double (std::to_chars: 0.1,
+/// 95.1089, 1e-05, -inf, nan). For text that must round-trip: tables, part files, grid values.
+inline std::string format_exact(double value) {
+  char buf[32];  // the longest shortest form of a double has 24 characters
+  const auto r = std::to_chars(buf, buf + sizeof buf, value);
+  return std::string(buf, r.ptr);
 }
 
 /// A value to the precision its standard deviation supports (never more digits than the data

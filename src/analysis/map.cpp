@@ -1,7 +1,6 @@
 #include "frictionlab/analysis/map.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -17,12 +16,6 @@
 
 namespace frictionlab {
 namespace {
-
-std::string exact(double x) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
 
 bool parse_double(const std::string& s, double& out) {
   if (s.empty()) return false;
@@ -49,7 +42,7 @@ std::vector<double> MapAxis::values() const {
 }
 
 std::string MapAxis::text() const {
-  return key + "=" + (log ? "log:" : "") + exact(start) + ":" + exact(stop) + ":" + std::to_string(count);
+  return key + "=" + (log ? "log:" : "") + format_exact(start) + ":" + format_exact(stop) + ":" + std::to_string(count);
 }
 
 MapAxis parse_map_axis(const std::string& text, const std::string& option) {

@@ -1,13 +1,14 @@
 #include "frictionlab/io/scenario_grid.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
 #include <yaml-cpp/yaml.h>
 
+
+#include "frictionlab/format.hpp"
 
 namespace frictionlab {
 namespace {
@@ -25,12 +26,6 @@ std::vector<std::string> split_key(const std::string& key) {
 
 bool is_index(const std::string& s) {
   return !s.empty() && s.size() < 9 && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
-
-std::string shortest(double x) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
 }
 
 std::string keys_of(const YAML::Node& map) {
@@ -130,8 +125,8 @@ Scenario ScenarioGrid::at(const std::vector<double>& values) const {
   YAML::Node copy = YAML::Clone(impl_->root);
   std::string where = impl_->path + " with";
   for (std::size_t i = 0; i < values.size(); ++i) {
-    set_key(copy, impl_->keys[i], shortest(values[i]));
-    where += (i ? ", " : " ") + impl_->keys[i] + "=" + shortest(values[i]);
+    set_key(copy, impl_->keys[i], format_exact(values[i]));
+    where += (i ? ", " : " ") + impl_->keys[i] + "=" + format_exact(values[i]);
   }
   return scenario_from_yaml(copy, where, impl_->options);
 }

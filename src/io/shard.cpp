@@ -1,7 +1,6 @@
 #include "frictionlab/io/shard.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "frictionlab/io/atomic_write.hpp"
+
+#include "frictionlab/format.hpp"
 
 namespace frictionlab {
 namespace {
@@ -38,9 +39,7 @@ Cell json_cell(const nlohmann::ordered_json& j, const std::string& where) {
 
 std::string number_text(double x) {
   if (!std::isfinite(x)) return "";
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);  // shortest form that reads back exactly
-  return std::string(buf, r.ptr);
+  return format_exact(x);  // the shortest form that reads back exactly
 }
 
 std::string csv_text(const std::string& s) {

@@ -1,18 +1,12 @@
 #include "frictionlab/analysis/plan/profile.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <stdexcept>
 
+#include "frictionlab/format.hpp"
+
 namespace frictionlab {
 
-namespace {
-std::string shortest(double x) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
-}  // namespace
 
 double ExperimentProfile::figure(const std::string& name) const {
   std::string names;
@@ -46,7 +40,7 @@ std::string ExperimentProfile::to_csv() const {
   const auto names = column_names();
   std::string out = names[0] + "," + names[1] + "\n";
   out.reserve(out.size() + t.size() * 24);
-  for (std::size_t k = 0; k < t.size(); ++k) out += shortest(t[k]) + "," + shortest(u[k]) + "\n";
+  for (std::size_t k = 0; k < t.size(); ++k) out += format_exact(t[k]) + "," + format_exact(u[k]) + "\n";
   return out;
 }
 
