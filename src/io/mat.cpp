@@ -18,6 +18,7 @@
 #include "frictionlab/format.hpp"
 #include "frictionlab/io/sha256.hpp"
 #include "matio_library.hpp"
+#include "../simulate/column_pool.hpp"
 
 namespace frictionlab {
 namespace {
@@ -48,7 +49,7 @@ using VarPtr = std::unique_ptr<matvar_t, VarFreer>;
 template <typename T>
 Eigen::VectorXd convert(const void* data, std::size_t n) {
   const T* p = static_cast<const T*>(data);
-  Eigen::VectorXd out(static_cast<Eigen::Index>(n));
+  Eigen::VectorXd out = detail::take_vector(static_cast<Eigen::Index>(n));  // a recycled column when one fits
   for (std::size_t i = 0; i < n; ++i) out(static_cast<Eigen::Index>(i)) = static_cast<double>(p[i]);
   return out;
 }

@@ -21,6 +21,24 @@ thread_local bool g_pool_gone = false;
 Pool::Pool() = default;
 Pool::~Pool() { g_pool_gone = true; }
 
+// Data set columns: Eigen vectors, sorted by size, smallest first.
+struct VectorPool {
+  std::vector<Eigen::VectorXd> vectors;
+  std::size_t doubles = 0;
+  VectorPool();
+  ~VectorPool();
+};
+
+thread_local bool g_vector_pool_gone = false;
+
+VectorPool::VectorPool() = default;
+VectorPool::~VectorPool() { g_vector_pool_gone = true; }
+
+VectorPool& vector_pool() {
+  thread_local VectorPool p;
+  return p;
+}
+
 Pool& pool(Shelf shelf) {
   thread_local Pool p[2];
   return p[static_cast<int>(shelf)];
@@ -64,6 +82,42 @@ void recycle_column(std::vector<double>&& column, Shelf shelf) noexcept {
     // Out of memory for the pool's own list: the column is simply freed.
   }
 }
+
+Eigen::VectorXd take_vector(Eigen::Index rows) {
+  const auto n = static_cast<std::size_t>(std::max<Eigen::Index>(rows, 0));
+  if (n >= kColumnPoolMinDoubles && !g_vector_pool_gone) {
+    VectorPool& p = vector_pool();
+    auto it = std::lower_bound(p.vectors.begin(), p.vectors.end(), rows,
+                               [](const Eigen::VectorXd& v, Eigen::Index k) { return v.size() < k; });
+    if (it != p.vectors.end() && it->size() == rows) {  // an Eigen vector cannot shrink in place
+      Eigen::VectorXd v = std::move(*it);
+      p.vectors.erase(it);
+      p.doubles -= n;
+      return v;
+    }
+  }
+  return Eigen::VectorXd(rows);
+}
+
+void recycle_vector(Eigen::VectorXd&& v) noexcept {
+  const auto n = static_cast<std::size_t>(v.size());
+  if (g_vector_pool_gone || n < kColumnPoolMinDoubles || n > kColumnPoolKeepDoubles) return;
+  VectorPool& p = vector_pool();
+  try {
+    auto it = std::lower_bound(p.vectors.begin(), p.vectors.end(), v.size(),
+                               [](const Eigen::VectorXd& w, Eigen::Index k) { return w.size() < k; });
+    p.vectors.insert(it, std::move(v));
+    p.doubles += n;
+    while (p.doubles > kColumnPoolKeepDoubles) {
+      p.doubles -= static_cast<std::size_t>(p.vectors.front().size());
+      p.vectors.erase(p.vectors.begin());
+    }
+  } catch (...) {
+    // Out of memory for the pool's own list: the vector is simply freed.
+  }
+}
+
+std::size_t pooled_vector_doubles() noexcept { return g_vector_pool_gone ? 0 : vector_pool().doubles; }
 
 std::size_t pooled_doubles(Shelf shelf) noexcept { return g_pool_gone ? 0 : pool(shelf).doubles; }
 

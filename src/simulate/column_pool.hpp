@@ -8,6 +8,7 @@
 // Trajectory's destructor gives its columns back here, and the engine takes them again, so a
 // loop of simulations (a parameter study, a fit, a benchmark) maps no new memory.
 
+#include <Eigen/Core>
 #include <cstddef>
 #include <vector>
 
@@ -34,7 +35,22 @@ std::vector<double> take_column(std::size_t rows, Shelf shelf = Shelf::main);
 /// enough and fits in the pool; otherwise frees it. Safe during thread exit (then it just frees).
 void recycle_column(std::vector<double>&& column, Shelf shelf = Shelf::main) noexcept;
 
+/// The same for a data set's columns (io/dataset.hpp), which are Eigen vectors: reading a file
+/// again (a loop over logs, a benchmark) would otherwise first-touch fresh pages for every column,
+/// as the allocator returns a freed data set's columns to the system. A vector of exactly `rows`
+/// values (contents unspecified): a recycled one of this thread's, or a new one.
+/// \throws std::bad_alloc.
+Eigen::VectorXd take_vector(Eigen::Index rows);
+
+/// Keeps `v`'s storage for this thread's next take_vector of its size (within the same limits as
+/// the columns: at least kColumnPoolMinDoubles, at most kColumnPoolKeepDoubles in all, the
+/// smallest first out); otherwise frees it. Safe during thread exit.
+void recycle_vector(Eigen::VectorXd&& v) noexcept;
+
 /// Doubles of capacity kept on this thread's `shelf` now (for tests).
 std::size_t pooled_doubles(Shelf shelf = Shelf::main) noexcept;
+
+/// Doubles kept for take_vector on this thread now (for tests).
+std::size_t pooled_vector_doubles() noexcept;
 
 }  // namespace frictionlab::detail
