@@ -7,13 +7,14 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <stdexcept>
 #include <thread>
 
 #include "frictionlab/format.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/io/figure.hpp"
+#include "frictionlab/io/sha256.hpp"
+#include "frictionlab/io/shard.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {
@@ -27,108 +28,71 @@ bool ends_with_json(const std::string& path) {
   return ext == ".json";
 }
 
-// A number as the shortest text that reads back to the same double; "" for NaN (CSV's "none").
-std::string number_text(double v) {
-  return std::isfinite(v) ? format_exact(v) : "";
-}
+std::string number_text(double v) { return std::isfinite(v) ? format_exact(v) : ""; }
 
-std::string csv_cell(const std::string& s) {
-  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
+Cell integer_cell(std::size_t n) { return static_cast<std::int64_t>(n); }
 
-nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-// One row's cells by column name: numbers as json numbers (null when none), text as strings.
-std::map<std::string, nlohmann::json> row_cells(const BatchRow& row, bool with_date) {
-  std::map<std::string, nlohmann::json> c;
-  const Result& r = row.result;
-  c["index"] = row.job.index;
-  c["file"] = row.job.file;
-  if (with_date) c["date"] = row.date.iso;
-  c["status"] = r.ok() ? "ok" : "error";
-  c["message"] = r.message;
-  c["method"] = r.method;
-  c["model"] = r.model;
-  c["axis"] = r.method.empty() && r.parameters.empty() ? "" : (r.axis == Axis::rotary ? "rotary" : "linear");
-  for (const Parameter& p : r.parameters) {
-    c[p.name] = json_number(p.value);
-    c[p.name + "_std"] = json_number(p.std);
-    c[p.name + "_unit"] = p.unit;
-  }
-  if (r.ok() || !r.parameters.empty()) {
-    c["relative_error_percent"] = json_number(r.fit.relative_error_percent);
-    c["rmse"] = json_number(r.fit.rmse);
-    c["rmse_unit"] = r.fit.unit;
-    c["samples"] = r.fit.samples;
-  }
-  c["sha256"] = r.data_sha256;
+// The fixed columns before the parameters and after them.
+std::vector<std::string> head_columns(bool with_date) {
+  std::vector<std::string> c = {"index", "file"};
+  if (with_date) c.push_back("date");
+  for (const char* s : {"status", "message", "method", "model", "axis"}) c.push_back(s);
   return c;
 }
+const std::vector<std::string> kTailColumns = {"relative_error_percent", "rmse", "rmse_unit", "samples", "sha256"};
 
-std::string cell_text(const nlohmann::json& v) {
-  if (v.is_null()) return "";
-  if (v.is_string()) return csv_cell(v.get<std::string>());
-  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
-  if (v.is_number_unsigned()) return std::to_string(v.get<std::size_t>());
-  if (v.is_number_integer()) return std::to_string(v.get<long long>());
-  return number_text(v.get<double>());
+// A table as a whole run's Part (command "identify") whose JSON is {"schema": 1, "kind": KIND,
+// "columns": [...], "rows": [{...}]} (python frictionlab.batch.Table's form).
+Part table_part(const std::string& kind, RowTable table) {
+  Part p;
+  p.command = "identify";
+  p.envelope = nlohmann::ordered_json{{"schema", 1},
+                                      {"kind", kind},
+                                      {"columns", nlohmann::ordered_json::array()},
+                                      {"rows", nlohmann::ordered_json::array()}}
+                   .dump();
+  p.rows_at = "/rows";
+  p.columns_at = "/columns";
+  p.total = table.rows.size();
+  p.table = std::move(table);
+  return p;
 }
 
-std::string table_csv(const std::vector<std::string>& columns, const std::vector<std::map<std::string, nlohmann::json>>& rows) {
-  std::string out;
-  for (std::size_t i = 0; i < columns.size(); ++i) {
-    if (i) out += ',';
-    out += csv_cell(columns[i]);
-  }
-  out += '\n';
-  for (const auto& row : rows) {
-    for (std::size_t i = 0; i < columns.size(); ++i) {
-      if (i) out += ',';
-      if (const auto it = row.find(columns[i]); it != row.end()) out += cell_text(it->second);
-    }
-    out += '\n';
-  }
-  return out;
-}
-
-std::string table_json(const std::string& kind, const std::vector<std::string>& columns,
-                       const std::vector<std::map<std::string, nlohmann::json>>& rows) {
-  nlohmann::ordered_json j;
-  j["schema"] = 1;
-  j["kind"] = kind;
-  j["columns"] = columns;
-  j["rows"] = nlohmann::ordered_json::array();
-  for (const auto& row : rows) {
-    nlohmann::ordered_json o;
-    for (const auto& c : columns) {
-      const auto it = row.find(c);
-      o[c] = it == row.end() ? nlohmann::json(nullptr) : it->second;
-    }
-    j["rows"].push_back(o);
-  }
-  return j.dump(1) + "\n";
+// The table's text for FILE: JSON for .json, else CSV (also for '-' and no file).
+std::string table_text(const Part& p, const std::string& file) {
+  return !file.empty() && file != "-" && ends_with_json(file) ? table_json(p) : table_csv(p.table);
 }
 
 const std::vector<std::string> kDriftColumns = {"file", "date", "parameter", "value", "std", "unit",
                                                 "change", "combined_std", "flagged"};
 
-std::vector<std::map<std::string, nlohmann::json>> drift_cells(const std::vector<DriftRow>& rows) {
-  std::vector<std::map<std::string, nlohmann::json>> out;
-  for (const DriftRow& r : rows)
-    out.push_back({{"file", r.sample.file},
-                   {"date", r.sample.date.iso},
-                   {"parameter", r.sample.parameter},
-                   {"value", json_number(r.sample.value)},
-                   {"std", json_number(r.sample.std)},
-                   {"unit", r.sample.unit},
-                   {"change", json_number(r.change)},
-                   {"combined_std", json_number(r.combined_std)},
-                   {"flagged", r.flagged}});
+Part drift_part(const std::vector<DriftRow>& rows) {
+  RowTable t;
+  t.columns = kDriftColumns;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const DriftRow& r = rows[i];
+    t.index.push_back(i);
+    t.rows.push_back({r.sample.file, r.sample.date.iso, r.sample.parameter, r.sample.value, r.sample.std, r.sample.unit,
+                      r.change, r.combined_std, r.flagged});
+  }
+  return table_part("drift", std::move(t));
+}
+
+// What decides the rows besides the files: the subcommand's options given on the command line
+// (name and values, in CLI11's order), without the output and batch options (where the rows go,
+// threads, the shard, the drift) and DATA.
+nlohmann::ordered_json row_options(const CLI::App* cmd, const std::string& batch_group) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  if (!cmd) return out;
+  for (const CLI::Option* opt : cmd->get_options()) {
+    if (opt == cmd->get_help_ptr() || !opt->nonpositional() || opt->count() == 0) continue;
+    if (opt->get_group() == "Output" || opt->get_group() == batch_group) continue;
+    out.push_back({opt->get_name(), opt->results()});
+  }
   return out;
 }
+
+const std::string kBatchGroup = "Batch (several files or a folder)";
 
 // The drift figure: one panel per parameter, value +- std against days since the first log,
 // flagged logs marked. Dates on the x axis as days keep the figure kit's numeric axes.
@@ -179,16 +143,25 @@ Figure drift_figure(const std::vector<DriftRow>& rows, double threshold) {
 }  // namespace
 
 void add_batch_options(CLI::App* cmd, BatchOptions& o) {
-  const std::string g = "Batch (several files or a folder)";
+  const std::string& g = kBatchGroup;
+  o.command = cmd;
   o.table_opt = cmd->add_option("--table", o.table,
                                 "Write one row per file (index, file, status, message, parameters with std and unit, "
                                 "fit figures): CSV, or JSON when FILE ends in .json; '-' for stdout (CSV). "
                                 "Several files or a folder write the table to stdout without it. A file that fails is "
-                                "its row's status and message; exit status 2 only when every file failed")
+                                "its row's status and message; exit status 2 only when every file failed. With "
+                                "--shard: the part file, PART.json")
                     ->group(g);
   cmd->add_option("--jobs", o.jobs, "Files identified at once (threads)")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str()
+      ->group(g);
+  cmd->add_option("--shard", o.shard,
+                  "Identify only shard K of N of the files (file i, from 0 in the expanded DATA list, with "
+                  "i % N == K - 1) and write a part file to --table PART.json; `frictionlab merge PART... -o "
+                  "OUT.csv|OUT.json` joins the parts into the table the unsharded run writes. Give every shard the "
+                  "same DATA and options; --drift and --plot are refused (they need every file: run them on the "
+                  "merged table, see the README)")
       ->group(g);
   cmd->add_option("--date-from", o.date_from,
                   "The log's date per row: 'name' (from the file name, e.g. axis3_2026-11-02.csv or "
@@ -233,7 +206,7 @@ std::vector<BatchJob> batch_jobs(const std::vector<std::string>& data) {
 
 bool is_batch(const std::vector<std::string>& data, const BatchOptions& o) {
   std::error_code ec;
-  return data.size() != 1 || fs::is_directory(data.front(), ec) || !o.table.empty();
+  return data.size() != 1 || fs::is_directory(data.front(), ec) || !o.table.empty() || !o.shard.empty();
 }
 
 std::vector<BatchRow> run_batch(const std::vector<BatchJob>& jobs, int threads,
@@ -279,28 +252,57 @@ std::vector<BatchRow> run_batch(const std::vector<BatchJob>& jobs, int threads,
   return rows;
 }
 
-std::vector<std::string> batch_columns(const std::vector<BatchRow>& rows, bool with_date) {
-  std::vector<std::string> c = {"index", "file"};
-  if (with_date) c.push_back("date");
-  for (const char* s : {"status", "message", "method", "model", "axis"}) c.push_back(s);
-  for (const auto& row : rows)
-    for (const Parameter& p : row.result.parameters)
-      if (std::find(c.begin(), c.end(), p.name) == c.end())
-        for (const std::string& s : {p.name, p.name + "_std", p.name + "_unit"}) c.push_back(s);
-  for (const char* s : {"relative_error_percent", "rmse", "rmse_unit", "samples", "sha256"}) c.push_back(s);
-  return c;
+RowTable batch_table(const std::vector<BatchRow>& rows, bool with_date) {
+  RowTable t;
+  t.columns = head_columns(with_date);
+  t.grown = GrownColumns{t.columns.size(), t.columns.size(), {}};
+  t.columns.insert(t.columns.end(), kTailColumns.begin(), kTailColumns.end());
+  const double none = std::nan("");
+  for (const BatchRow& row : rows) {
+    const Result& r = row.result;
+    t.index.push_back(row.job.index);
+    std::vector<Cell> head = {integer_cell(row.job.index), row.job.file};
+    if (with_date) head.emplace_back(row.date.iso);
+    const std::string axis = r.method.empty() && r.parameters.empty() ? "" : (r.axis == Axis::rotary ? "rotary" : "linear");
+    for (const std::string& s : {std::string(r.ok() ? "ok" : "error"), r.message, r.method, r.model, axis})
+      head.emplace_back(s);
+    t.rows.emplace_back(t.columns.size(), Cell{none});
+    std::copy(head.begin(), head.end(), t.rows.back().begin());
+    for (const Parameter& p : r.parameters) {
+      // Each grow_column may insert a column (NaN in the rows before): look the row up afterwards.
+      const std::size_t v = grow_column(t, p.name, row.job.index);
+      const std::size_t sd = grow_column(t, p.name + "_std", row.job.index);
+      const std::size_t u = grow_column(t, p.name + "_unit", row.job.index);
+      auto& cells = t.rows.back();
+      cells[v] = p.value;
+      cells[sd] = p.std;
+      cells[u] = p.unit;
+    }
+    auto tail = t.rows.back().end() - static_cast<std::ptrdiff_t>(kTailColumns.size());
+    if (r.ok() || !r.parameters.empty()) {
+      tail[0] = r.fit.relative_error_percent;
+      tail[1] = r.fit.rmse;
+      tail[2] = r.fit.unit;
+      tail[3] = integer_cell(r.fit.samples);
+    }
+    tail[4] = r.data_sha256;
+  }
+  return t;
 }
 
-std::string batch_csv(const std::vector<BatchRow>& rows, bool with_date) {
-  std::vector<std::map<std::string, nlohmann::json>> cells;
-  for (const auto& r : rows) cells.push_back(row_cells(r, with_date));
-  return table_csv(batch_columns(rows, with_date), cells);
-}
-
-std::string batch_json(const std::vector<BatchRow>& rows, bool with_date) {
-  std::vector<std::map<std::string, nlohmann::json>> cells;
-  for (const auto& r : rows) cells.push_back(row_cells(r, with_date));
-  return table_json("identify", batch_columns(rows, with_date), cells);
+std::string batch_key(const std::vector<BatchJob>& jobs, const BatchOptions& o) {
+  nlohmann::ordered_json files = nlohmann::ordered_json::array();
+  for (const BatchJob& j : jobs) {
+    std::error_code ec;
+    const auto size = fs::file_size(j.file, ec);
+    files.push_back({j.file, ec ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(size)});
+  }
+  const nlohmann::ordered_json id = {{"command", "identify"},
+                                     {"method", o.method},
+                                     {"options", row_options(o.command, kBatchGroup)},
+                                     {"date_from", o.date_from},
+                                     {"files", files}};
+  return sha256_hex(id.dump());
 }
 
 std::vector<DriftRow> batch_drift(const std::vector<BatchRow>& rows, double threshold) {
@@ -313,20 +315,29 @@ std::vector<DriftRow> batch_drift(const std::vector<BatchRow>& rows, double thre
   return drift_table(samples, threshold);
 }
 
-std::string drift_csv(const std::vector<DriftRow>& rows) { return table_csv(kDriftColumns, drift_cells(rows)); }
-std::string drift_json(const std::vector<DriftRow>& rows) { return table_json("drift", kDriftColumns, drift_cells(rows)); }
 
 int run_identify_batch(const std::vector<std::string>& data, const BatchOptions& o, const std::string& json,
                        const std::string& report, const std::string& plot, bool overwrite,
                        const std::function<Result(const std::string& file)>& identify,
                        const std::function<double(const std::string&, const std::string&)>& date_of_column) {
-  const std::vector<BatchJob> jobs = batch_jobs(data);  // first: a folder without data names itself
+  const std::vector<BatchJob> all = batch_jobs(data);  // first: a folder without data names itself
   if (!json.empty())
     throw std::invalid_argument("--json writes one file's result; with several files or a folder use --table OUT.json");
   if (!report.empty())
     throw std::invalid_argument("--report is for one file; with several files or a folder use --table");
   if (!o.date_from.empty() && o.date_from != "name" && !(o.date_from.rfind("column:", 0) == 0 && o.date_from.size() > 7))
     throw std::invalid_argument("--date-from '" + o.date_from + "': expected name or column:NAME");
+  const bool sharded = !o.shard.empty();
+  const ShardSpec shard = sharded ? parse_shard(o.shard) : ShardSpec{};
+  if (sharded) {
+    if (o.table.empty() || o.table == "-" || !ends_with_json(o.table))
+      throw std::invalid_argument("--shard " + o.shard + " writes a part file: give --table PART.json (then "
+                                  "frictionlab merge PART... -o OUT.csv|OUT.json)");
+    if (!o.drift.empty() || !plot.empty())
+      throw std::invalid_argument(std::string(o.drift.empty() ? "--plot" : "--drift") + " with --shard " + o.shard +
+                                  ": the drift compares consecutive logs, so it needs every file's row; merge the "
+                                  "parts, then run the drift on the whole table (see the README)");
+  }
   const bool dated = !o.date_from.empty();
   if (!dated && !o.drift.empty()) throw std::invalid_argument("--drift needs --date-from (the logs' dates)");
   if (!dated && !plot.empty())
@@ -344,7 +355,12 @@ int run_identify_batch(const std::vector<std::string>& data, const BatchOptions&
                 outputs.end());
   check_distinct_outputs(outputs);
 
-  progress_start("frictionlab identify (" + std::to_string(jobs.size()) + " files)");
+  std::vector<BatchJob> jobs;
+  for (std::size_t i : shard_jobs(all.size(), shard)) jobs.push_back(all[i]);
+  const std::string what = sharded ? "shard " + shard.text() + ": " + std::to_string(jobs.size()) + " of " +
+                                         std::to_string(all.size()) + " files"
+                                   : std::to_string(jobs.size()) + " files";
+  progress_start("frictionlab identify (" + what + ")");
   std::vector<BatchRow> rows = run_batch(jobs, o.jobs, identify, o.date_from, date_of_column);
   std::size_t ok = 0;
   for (auto& r : rows) {
@@ -356,37 +372,41 @@ int run_identify_batch(const std::vector<std::string>& data, const BatchOptions&
   // the others leaves none of them half-written, and no table that claims a finished run).
   std::vector<DriftRow> drift;
   if (dated && ok > 0) drift = batch_drift(rows, o.drift_threshold);
-  if (!o.drift.empty())
-    write_file_atomic(o.drift, ends_with_json(o.drift) ? drift_json(drift) : drift_csv(drift), {overwrite});
+  if (!o.drift.empty()) write_file_atomic(o.drift, table_text(drift_part(drift), o.drift), {overwrite});
   if (!plot.empty() && !drift.empty()) {
     progress_stage("drawing " + plot);
     write_figure(drift_figure(drift, o.drift_threshold), plot, overwrite);
   }
-  const std::string text = !o.table.empty() && o.table != "-" && ends_with_json(o.table) ? batch_json(rows, dated)
-                                                                                          : batch_csv(rows, dated);
-  if (o.table.empty() || o.table == "-") {
+  Part part = table_part("identify", batch_table(rows, dated));
+  if (sharded) {
+    part.key = batch_key(all, o);
+    part.shard = shard;
+    part.total = all.size();
+    write_file_atomic(o.table, part_to_json(part), {overwrite});
+  } else if (o.table.empty() || o.table == "-") {
     progress_stop();
-    std::cout << text << std::flush;
+    std::cout << table_text(part, o.table) << std::flush;
   } else {
-    write_file_atomic(o.table, text, {overwrite});
+    write_file_atomic(o.table, table_text(part, o.table), {overwrite});
   }
   progress_stop();
-  if (ok == 0) {
+  const std::string written = o.table.empty() || o.table == "-" ? "" : (sharded ? "; part " : "; table ") + o.table;
+  if (ok == 0 && !rows.empty()) {
     const std::string& first = rows.front().result.message;
     // Exit 2 with the one error line of every failed run; the table holds each file's reason.
-    print_error("every file failed (" + std::to_string(rows.size()) + " files" +
-                (o.table.empty() || o.table == "-" ? "" : "; table " + o.table) + "); the first: " +
+    print_error("every file failed (" + what + written + "); the first: " +
                 (first.find(rows.front().job.file) == std::string::npos ? rows.front().job.file + ": " + first : first));
     return 2;
   }
-  std::cerr << "frictionlab identify: " << rows.size() << " files: " << ok << " ok, " << rows.size() - ok << " failed";
-  if (!o.table.empty() && o.table != "-") std::cerr << "; table " << o.table;
+  std::cerr << "frictionlab identify: " << what << ": " << ok << " ok, " << rows.size() - ok << " failed" << written;
   if (!o.drift.empty()) std::cerr << "; drift " << o.drift;
   if (!plot.empty() && !drift.empty()) std::cerr << "; figure " << plot;
   std::cerr << "\n";
+  if (sharded) std::cerr << "join the parts: frictionlab merge PART... -o OUT.csv|OUT.json\n";
   std::size_t flagged = 0;
   for (const auto& d : drift) flagged += d.flagged;
-  if (dated) std::cerr << "drift: " << flagged << " flagged (a change beyond " << o.drift_threshold << " combined std)\n";
+  if (dated && !sharded)
+    std::cerr << "drift: " << flagged << " flagged (a change beyond " << o.drift_threshold << " combined std)\n";
   for (const auto& r : rows) {
     if (r.result.ok()) continue;
     const std::string& m = r.result.message;

@@ -17,6 +17,7 @@
 
 #include "frictionlab/analysis/drift.hpp"
 #include "frictionlab/identify/result.hpp"
+#include "frictionlab/io/shard.hpp"
 
 namespace frictionlab::cli {
 
@@ -27,13 +28,15 @@ struct BatchOptions {
   std::string date_from;    ///< --date-from name|column:NAME; "" = no dates
   std::string drift;        ///< --drift FILE: the drift table (CSV, or JSON by .json), needs dates
   double drift_threshold = 1.0;  ///< --drift-threshold K: flag |change| > K combined std
+  std::string shard;        ///< --shard K/N: only these files, a part file to --table PART.json; "" = all
   CLI::Option* table_opt = nullptr;  ///< set by add_batch_options
+  const CLI::App* command = nullptr;  ///< the method subcommand (set by add_batch_options): its options key a part
   /// The method's name (set with the subcommand): the `method` of the rows of files that failed
   /// before the method ran (a file that cannot be read).
   std::string method;
 };
 
-/// Adds --table, --jobs, --date-from, --drift and --drift-threshold to `cmd` (group "Batch").
+/// Adds --table, --jobs, --shard, --date-from, --drift and --drift-threshold to `cmd` (group "Batch").
 void add_batch_options(CLI::App* cmd, BatchOptions& o);
 
 /// One file of a batch and its global index (0-based place in the expanded DATA list).
@@ -47,8 +50,8 @@ struct BatchJob {
 /// \throws std::invalid_argument for a folder without data files, or no DATA.
 std::vector<BatchJob> batch_jobs(const std::vector<std::string>& data);
 
-/// True when the DATA arguments and options ask for a batch: more than one DATA, a folder, or
-/// --table given. One file without --table is the single-file command, unchanged.
+/// True when the DATA arguments and options ask for a batch: more than one DATA, a folder,
+/// --table or --shard given. One file without --table is the single-file command, unchanged.
 bool is_batch(const std::vector<std::string>& data, const BatchOptions& o);
 
 /// One row: the job, the log's date (empty without --date-from) and the result (a Result with
@@ -69,29 +72,30 @@ std::vector<BatchRow> run_batch(const std::vector<BatchJob>& jobs, int threads,
                                 const std::string& date_from,
                                 const std::function<double(const std::string& file, const std::string& column)>& date_of_column);
 
-/// The table's columns: index, file, [date,] status, message, method, model, axis, then each
-/// parameter P as P, P_std, P_unit (in order of first appearance), then relative_error_percent,
-/// rmse, rmse_unit, samples, sha256.
-std::vector<std::string> batch_columns(const std::vector<BatchRow>& rows, bool with_date);
+/// The table: columns index, file, [date,] status, message, method, model, axis, then each
+/// parameter P as P, P_std, P_unit (grown columns of io/shard.hpp: in order of first appearance by
+/// job index), then relative_error_percent, rmse, rmse_unit, samples, sha256; one row per BatchRow
+/// (index and samples as integers, NaN where a row has no value, e.g. a failed file's parameters).
+RowTable batch_table(const std::vector<BatchRow>& rows, bool with_date);
 
-/// The rows as CSV text (header row; numbers shortest round-trip; empty cell for none or NaN;
-/// cells with a comma, quote or line break quoted) or as JSON text
-/// {"schema": 1, "kind": "identify", "columns": [...], "rows": [{...}]} (NaN as null).
-std::string batch_csv(const std::vector<BatchRow>& rows, bool with_date);
-std::string batch_json(const std::vector<BatchRow>& rows, bool with_date);
+/// The key of a batch's part files: SHA-256 (hex) of what decides the rows: the method, the
+/// subcommand's options given (o.command; not the output and batch options, the threads or the
+/// shard), --date-from and every job's file name with its size in bytes (null when missing), in
+/// order. The files' contents are not read (each shard would read the whole fleet); each row's
+/// sha256 column names the bytes it read.
+std::string batch_key(const std::vector<BatchJob>& jobs, const BatchOptions& o);
 
 /// The drift table (analysis/drift.hpp) of the ok rows' parameters, by date.
 std::vector<DriftRow> batch_drift(const std::vector<BatchRow>& rows, double threshold);
-/// The drift table as CSV (file, date, parameter, value, std, unit, change, combined_std,
-/// flagged) or JSON {"schema": 1, "kind": "drift", "columns": [...], "rows": [...]}.
-std::string drift_csv(const std::vector<DriftRow>& rows);
-std::string drift_json(const std::vector<DriftRow>& rows);
 
 /// Runs a batch for a parsed method subcommand: checks the outputs first (--table, --drift,
 /// --plot; --json and --report are one file's outputs and are refused with a batch), identifies
 /// every job, writes the table (stdout when --table is not given), the drift table and figure,
-/// and prints "N files: K ok, F failed" on stderr, one line per failure.
-/// \returns 0 when at least one file gave a result, 2 when every file failed.
+/// and prints "N files: K ok, F failed" on stderr, one line per failure. With --shard K/N: the
+/// shard's jobs only, written as a part file (io/shard.hpp, command "identify", key batch_key) to
+/// --table PART.json; --drift and --plot are refused (the drift needs every file).
+/// \returns 0 when at least one file gave a result (or the shard has no files), 2 when every
+/// file failed (the table or part is still written).
 int run_identify_batch(const std::vector<std::string>& data, const BatchOptions& o, const std::string& json,
                        const std::string& report, const std::string& plot, bool overwrite,
                        const std::function<Result(const std::string& file)>& identify,

@@ -19,10 +19,10 @@ Handler register_merge(CLI::App& app) {
   };
   auto a = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
-      "merge", "Join the part files of a --shard K/N run (analyze map) into its whole output, as the unsharded run "
+      "merge", "Join the part files of a --shard K/N run (analyze map, identify METHOD) into its whole output, as the unsharded run "
                "writes it; checks that the parts come from one run and that every shard is there once.");
   cmd->add_option("parts", a->parts, "part files (any order), one per shard 1..N")->required();
-  cmd->add_option("-o,--output", a->out, "the whole output: OUT.csv (the table) or OUT.json (the JSON result)")
+  cmd->add_option("-o,--output", a->out, "the whole output: OUT.csv (the table) or OUT.json (the JSON result or table)")
       ->required();
   cmd->add_flag("--overwrite", a->overwrite, "replace an existing OUT");
   return [a]() -> int {

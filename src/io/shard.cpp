@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <tuple>
 #include <sstream>
 #include <stdexcept>
 
@@ -27,14 +29,38 @@ bool parse_count(const std::string& s, std::size_t& out) {
 
 nlohmann::ordered_json cell_json(const Cell& c) {
   if (const double* x = std::get_if<double>(&c)) return std::isfinite(*x) ? nlohmann::ordered_json(*x) : nlohmann::ordered_json(nullptr);
+  if (const std::int64_t* i = std::get_if<std::int64_t>(&c)) return *i;
+  if (const bool* b = std::get_if<bool>(&c)) return *b;
   return std::get<std::string>(c);
 }
 
+// The inverse of cell_json: JSON keeps "1.0" (a double) apart from "1" (an integer).
 Cell json_cell(const nlohmann::ordered_json& j, const std::string& where) {
   if (j.is_null()) return std::nan("");
+  if (j.is_boolean()) return j.get<bool>();
+  if (j.is_number_integer()) return j.get<std::int64_t>();
   if (j.is_number()) return j.get<double>();
   if (j.is_string()) return j.get<std::string>();
-  throw std::invalid_argument(where + ": a cell must be a number, a text or null");
+  throw std::invalid_argument(where + ": a cell must be a number, a text, true/false or null");
+}
+
+// The JSON pointer `text` (the part's field `field`) to a place that `env` has.
+nlohmann::ordered_json::json_pointer place_in(const nlohmann::ordered_json& env, const std::string& field,
+                                              const std::string& text, const std::string& hint) {
+  try {
+    nlohmann::ordered_json::json_pointer at(text);
+    if (env.contains(at)) return at;
+  } catch (const nlohmann::ordered_json::exception&) {
+  }
+  throw std::invalid_argument("table_json: " + field + " '" + text + "' is not a place in the envelope" + hint);
+}
+
+// The columns that do not come from the rows: all but the grown ones.
+std::vector<std::string> fixed_columns(const RowTable& t) {
+  if (!t.grown) return t.columns;
+  std::vector<std::string> out(t.columns.begin(), t.columns.begin() + static_cast<std::ptrdiff_t>(t.grown->begin));
+  out.insert(out.end(), t.columns.begin() + static_cast<std::ptrdiff_t>(t.grown->end), t.columns.end());
+  return out;
 }
 
 std::string number_text(double x) {
@@ -87,9 +113,11 @@ std::string part_to_json(const Part& part) {
                       {"shard", part.shard.text()},
                       {"total", part.total},
                       {"columns", part.table.columns},
-                      {"rows_at", part.rows_at},
-                      {"envelope", nlohmann::ordered_json::parse(part.envelope)},
-                      {"rows", std::move(rows)}};
+                      {"rows_at", part.rows_at}};
+  if (!part.columns_at.empty()) j["columns_at"] = part.columns_at;
+  if (const auto& g = part.table.grown) j["grown"] = {{"begin", g->begin}, {"end", g->end}, {"first", g->first}};
+  j["envelope"] = nlohmann::ordered_json::parse(part.envelope);
+  j["rows"] = std::move(rows);
   return j.dump() + "\n";
 }
 
@@ -132,6 +160,22 @@ Part read_part(const std::string& path) {
     p.table.columns.push_back(c.get<std::string>());
   }
   p.rows_at = field("rows_at", j.contains("rows_at") && j["rows_at"].is_string()).get<std::string>();
+  if (j.contains("columns_at"))
+    p.columns_at = field("columns_at", j["columns_at"].is_string()).get<std::string>();
+  if (j.contains("grown")) {
+    const auto& g = j["grown"];
+    const auto count = [&](const char* name) {
+      return g.is_object() && g.contains(name) && g[name].is_number_unsigned();
+    };
+    const bool ok = count("begin") && count("end") && g.contains("first") && g["first"].is_array() &&
+                    g["begin"].get<std::size_t>() <= g["end"].get<std::size_t>() &&
+                    g["end"].get<std::size_t>() <= p.table.columns.size() &&
+                    g["first"].size() == g["end"].get<std::size_t>() - g["begin"].get<std::size_t>() &&
+                    std::all_of(g["first"].begin(), g["first"].end(), [](const auto& f) { return f.is_number_unsigned(); });
+    field("grown", ok);
+    p.table.grown = GrownColumns{g["begin"].get<std::size_t>(), g["end"].get<std::size_t>(),
+                                 g["first"].get<std::vector<std::size_t>>()};
+  }
   p.envelope = field("envelope", j.contains("envelope") && j["envelope"].is_object()).dump();
   const nlohmann::ordered_json& rows = field("rows", j.contains("rows") && j["rows"].is_array());
   for (std::size_t r = 0; r < rows.size(); ++r) {
@@ -164,8 +208,11 @@ Part merge_parts(const std::vector<Part>& parts, const std::vector<std::string>&
     if (p.shard.count != first.shard.count)
       foreign("shard count (" + p.shard.text() + " against " + first.shard.text() + ")");
     if (p.total != first.total) foreign("total");
-    if (p.table.columns != first.table.columns) foreign("columns");
-    if (p.envelope != first.envelope || p.rows_at != first.rows_at) foreign("header (envelope)");
+    if (fixed_columns(p.table) != fixed_columns(first.table) || p.table.grown.has_value() != first.table.grown.has_value() ||
+        (p.table.grown && p.table.grown->begin != first.table.grown->begin))
+      foreign("columns");
+    if (p.envelope != first.envelope || p.rows_at != first.rows_at || p.columns_at != first.columns_at)
+      foreign("header (envelope)");
     std::string& slot = seen[p.shard.index - 1];
     if (!slot.empty())
       throw std::invalid_argument(names[i] + ": duplicated part: shard " + p.shard.text() + " is also " + slot);
@@ -184,13 +231,64 @@ Part merge_parts(const std::vector<Part>& parts, const std::vector<std::string>&
   out.shard = ShardSpec{};
   out.table.index.clear();
   out.table.rows.clear();
-  std::vector<std::pair<std::size_t, const std::vector<Cell>*>> all;
-  for (const Part& p : parts)
-    for (std::size_t r = 0; r < p.table.rows.size(); ++r) all.emplace_back(p.table.index[r], &p.table.rows[r]);
-  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (const auto& [i, row] : all) {
-    out.table.index.push_back(i);
-    out.table.rows.push_back(*row);
+  // Each part's columns in the merged table: the grown columns in order of first appearance by
+  // job index, as the unsharded run lays them out (two first seen in one row come from one part,
+  // in that row's order).
+  std::vector<std::vector<std::size_t>> place(parts.size());
+  if (first.table.grown) {
+    struct Seen {
+      std::size_t first, part, column;
+    };
+    std::map<std::string, Seen> seen_columns;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      const GrownColumns& g = *parts[i].table.grown;
+      for (std::size_t c = g.begin; c < g.end; ++c) {
+        const Seen s{g.first[c - g.begin], i, c};
+        auto [it, added] = seen_columns.emplace(parts[i].table.columns[c], s);
+        if (!added && std::tie(s.first, s.column) < std::tie(it->second.first, it->second.column)) it->second = s;
+      }
+    }
+    std::vector<std::pair<std::string, Seen>> order(seen_columns.begin(), seen_columns.end());
+    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+      return std::tie(a.second.first, a.second.column) < std::tie(b.second.first, b.second.column);
+    });
+    const GrownColumns& g0 = *first.table.grown;
+    std::vector<std::string> columns(first.table.columns.begin(), first.table.columns.begin() + g0.begin);
+    GrownColumns grown{g0.begin, g0.begin + order.size(), {}};
+    for (const auto& [name, s] : order) {
+      columns.push_back(name);
+      grown.first.push_back(s.first);
+    }
+    columns.insert(columns.end(), first.table.columns.begin() + g0.end, first.table.columns.end());
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      const RowTable& t = parts[i].table;
+      for (std::size_t c = 0; c < t.columns.size(); ++c) {
+        const GrownColumns& g = *t.grown;
+        if (c < g.begin)
+          place[i].push_back(c);
+        else if (c >= g.end)
+          place[i].push_back(c - g.end + grown.end);
+        else
+          place[i].push_back(static_cast<std::size_t>(
+              std::find(columns.begin() + grown.begin, columns.begin() + grown.end, t.columns[c]) - columns.begin()));
+      }
+    }
+    out.table.columns = std::move(columns);
+    out.table.grown = std::move(grown);
+  } else {
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      for (std::size_t c = 0; c < first.table.columns.size(); ++c) place[i].push_back(c);
+  }
+  std::vector<std::tuple<std::size_t, std::size_t, const std::vector<Cell>*>> all;  // job, part, row
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    for (std::size_t r = 0; r < parts[i].table.rows.size(); ++r)
+      all.emplace_back(parts[i].table.index[r], i, &parts[i].table.rows[r]);
+  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return std::get<0>(a) < std::get<0>(b); });
+  for (const auto& [job, i, row] : all) {
+    std::vector<Cell> cells(out.table.columns.size(), Cell{std::nan("")});
+    for (std::size_t c = 0; c < row->size(); ++c) cells[place[i][c]] = (*row)[c];
+    out.table.index.push_back(job);
+    out.table.rows.push_back(std::move(cells));
   }
   return out;
 }
@@ -204,6 +302,10 @@ std::string table_csv(const RowTable& table) {
       if (c) out += ",";
       if (const double* x = std::get_if<double>(&row[c]))
         out += number_text(*x);
+      else if (const std::int64_t* i = std::get_if<std::int64_t>(&row[c]))
+        out += std::to_string(*i);
+      else if (const bool* b = std::get_if<bool>(&row[c]))
+        out += *b ? "true" : "false";
       else
         out += csv_text(std::get<std::string>(row[c]));
     }
@@ -226,18 +328,23 @@ std::string table_json(const Part& part, int indent) {
     for (std::size_t c = 0; c < row.size(); ++c) o[part.table.columns.at(c)] = cell_json(row[c]);
     rows.push_back(std::move(o));
   }
-  bool there = false;
-  nlohmann::ordered_json::json_pointer at;
-  try {
-    at = nlohmann::ordered_json::json_pointer(part.rows_at);
-    there = env.contains(at);
-  } catch (const nlohmann::ordered_json::exception&) {
-  }
-  if (!there)
-    throw std::invalid_argument("table_json: rows_at '" + part.rows_at +
-                                "' is not a place in the envelope (it must hold an empty array there)");
-  env[at] = std::move(rows);
+  env[place_in(env, "rows_at", part.rows_at, " (it must hold an empty array there)")] = std::move(rows);
+  if (!part.columns_at.empty()) env[place_in(env, "columns_at", part.columns_at, "")] = part.table.columns;
   return env.dump(indent) + "\n";
+}
+
+std::size_t grow_column(RowTable& table, const std::string& name, std::size_t job) {
+  if (!table.grown) throw std::logic_error("grow_column: the table has no grown columns");
+  GrownColumns& g = *table.grown;
+  const auto begin = table.columns.begin() + static_cast<std::ptrdiff_t>(g.begin);
+  const auto end = table.columns.begin() + static_cast<std::ptrdiff_t>(g.end);
+  if (const auto it = std::find(begin, end, name); it != end) return static_cast<std::size_t>(it - table.columns.begin());
+  const std::size_t at = g.end;
+  table.columns.insert(end, name);
+  for (auto& row : table.rows) row.insert(row.begin() + static_cast<std::ptrdiff_t>(at), Cell{std::nan("")});
+  g.first.push_back(job);
+  ++g.end;
+  return at;
 }
 
 void write_table(const std::string& path, const Part& part, bool overwrite) {

@@ -129,6 +129,102 @@ TEST(Shard, MergeNamesTheMissingDuplicatedOrForeignPart) {
               HasSubstr("cut.json: shard 3/3 holds 2 rows, not its 3 jobs"));
 }
 
+// A table whose middle columns come from the rows (parameters that depend on the data): job i
+// brings the columns named in `brings[i]`; cells are the job index as an integer, a flag, a text.
+// Appends job i's row: the fixed cells, NaN in the grown columns, then the columns it brings.
+void push_grown_row(RowTable& t, std::size_t i, const std::vector<std::string>& brings) {
+  t.index.push_back(i);
+  t.rows.emplace_back(t.columns.size(), Cell{std::nan("")});
+  auto& row = t.rows.back();
+  row[0] = static_cast<std::int64_t>(i);
+  row[1] = std::string(brings.empty() ? "error" : "ok");
+  row[row.size() - 2] = static_cast<std::int64_t>(10 * i);
+  row[row.size() - 1] = !brings.empty();
+  for (const std::string& name : brings) t.rows.back()[grow_column(t, name, i)] = 0.5 + static_cast<double>(i);
+}
+
+Part grown_run(const std::vector<std::vector<std::string>>& brings) {
+  Part p;
+  p.command = "identify";
+  p.key = std::string(64, 'c');
+  p.total = brings.size();
+  p.envelope = R"({"schema":1,"kind":"identify","columns":[],"rows":[]})";
+  p.rows_at = "/rows";
+  p.columns_at = "/columns";
+  p.table.columns = {"index", "status", "samples", "ok"};
+  p.table.grown = GrownColumns{2, 2, {}};
+  for (std::size_t i = 0; i < brings.size(); ++i) push_grown_row(p.table, i, brings[i]);
+  return p;
+}
+
+TEST(Shard, GrownColumnsFollowFirstAppearanceAndFillNaN) {
+  const Part p = grown_run({{}, {"Fc", "Fv"}, {"Fs", "Fc"}});
+  EXPECT_EQ(p.table.columns, (std::vector<std::string>{"index", "status", "Fc", "Fv", "Fs", "samples", "ok"}));
+  EXPECT_EQ(p.table.grown->first, (std::vector<std::size_t>{1, 1, 2}));
+  EXPECT_EQ(table_csv(p.table), "index,status,Fc,Fv,Fs,samples,ok\n0,error,,,,0,false\n1,ok,1.5,1.5,,10,true\n"
+                                "2,ok,2.5,,2.5,20,true\n");
+  EXPECT_EQ(table_json(p, -1),
+            R"({"schema":1,"kind":"identify","columns":["index","status","Fc","Fv","Fs","samples","ok"],"rows":[)"
+            R"({"index":0,"status":"error","Fc":null,"Fv":null,"Fs":null,"samples":0,"ok":false},)"
+            R"({"index":1,"status":"ok","Fc":1.5,"Fv":1.5,"Fs":null,"samples":10,"ok":true},)"
+            R"({"index":2,"status":"ok","Fc":2.5,"Fv":null,"Fs":2.5,"samples":20,"ok":true}]})"
+            "\n");
+}
+
+// Shards that see different columns (one with none: every job failed) merge to the whole run's.
+TEST(Shard, MergeJoinsGrownColumnsInTheWholeRunsOrder) {
+  const std::vector<std::vector<std::string>> brings = {{}, {}, {"b"}, {"a", "b"}, {}, {"c"}, {"a"}, {}};
+  const Part whole = grown_run(brings);
+  for (std::size_t n : {2u, 3u, 4u, 9u}) {
+    std::vector<Part> parts;
+    std::vector<std::string> names;
+    for (std::size_t k = n; k >= 1; --k) {  // in reverse order
+      Part p = grown_run({});
+      p.total = brings.size();
+      p.shard = {k, n};
+      // A shard grows its columns from its own rows only.
+      for (std::size_t i : shard_jobs(brings.size(), p.shard)) push_grown_row(p.table, i, brings[i]);
+      parts.push_back(p);
+      names.push_back("part" + std::to_string(k) + ".json");
+    }
+    const Part merged = merge_parts(parts, names);
+    EXPECT_EQ(merged.table.columns, whole.table.columns) << n << " shards";
+    EXPECT_EQ(table_csv(merged.table), table_csv(whole.table)) << n << " shards";
+    EXPECT_EQ(table_json(merged), table_json(whole)) << n << " shards";
+    // Through the part files too: integers, flags and the grown columns read back.
+    const auto path = std::filesystem::temp_directory_path() / "frictionlab_test_grown_part.json";
+    std::vector<Part> back;
+    for (const Part& p : parts) {
+      std::ofstream(path) << part_to_json(p);
+      back.push_back(read_part(path.string()));
+    }
+    std::filesystem::remove(path);
+    EXPECT_EQ(table_json(merge_parts(back, names)), table_json(whole)) << n << " shards, read back";
+  }
+  // The fixed columns must agree.
+  Part a = grown_run({{"a"}, {}}), b = a;
+  a.shard = {1, 2};
+  b.shard = {2, 2};
+  a.table.index = {0};
+  a.table.rows.pop_back();
+  b.table.index = {1};
+  b.table.rows.erase(b.table.rows.begin());
+  b.table.columns.back() = "flag";
+  EXPECT_THAT(error_of([&] { merge_parts({a, b}, {"a.json", "b.json"}); }), HasSubstr("b.json: foreign part: its columns differ"));
+}
+
+TEST(Shard, ReadPartRefusesABadGrownField) {
+  Part p = grown_run({{"a"}});
+  std::string text = part_to_json(p);
+  const std::string good = R"("grown":{"begin":2,"end":3,"first":[0]})";
+  ASSERT_NE(text.find(good), std::string::npos) << text;
+  text.replace(text.find(good), good.size(), R"("grown":{"begin":2,"end":9,"first":[0]})");
+  const auto path = std::filesystem::temp_directory_path() / "frictionlab_test_bad_grown.json";
+  std::ofstream(path) << text;
+  EXPECT_THAT(error_of([&] { read_part(path.string()); }), HasSubstr("(field \"grown\" missing or malformed)"));
+  std::filesystem::remove(path);
+}
+
 TEST(Shard, ReadPartRefusesOtherFiles) {
   const auto path = std::filesystem::temp_directory_path() / "frictionlab_test_not_part.json";
   {

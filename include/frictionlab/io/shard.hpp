@@ -13,14 +13,18 @@
 //   {"frictionlab_part": 1, "command": "analyze map", "key": "<64 hex>", "shard": "2/4",
 //    "total": 12, "columns": ["x", "class", ...], "rows_at": "/result/rows",
 //    "envelope": {...}, "rows": [[index, cell, ...], ...]}
+// and, for a table whose columns depend on its rows (see GrownColumns), "columns_at": "/columns"
+// and "grown": {"begin": 8, "end": 14, "first": [0, 0, 0, 3, 3, 3]}.
 // `key` identifies the run (the command's choice: a SHA-256 of everything that decides the
 // rows: input files, grid, options; never the shard or the thread count); `total` is the number of
 // jobs of the whole run; `envelope` is the whole run's JSON output without its rows, which go in at
 // the JSON pointer `rows_at` (an array of objects, column -> cell). A cell is a number, a string
-// or null (a number that is not finite). Merged output is written by the same functions as an
+// or null (a number that is not finite), an integer or true/false. Merged output is written by the same functions as an
 // unsharded run's, so the two are equal byte for byte.
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -45,14 +49,29 @@ bool in_shard(std::size_t i, const ShardSpec& shard);
 /// The jobs of the shard among `total`, in increasing order.
 std::vector<std::size_t> shard_jobs(std::size_t total, const ShardSpec& shard);
 
-/// One cell: a number (NaN and infinities are written as an empty CSV cell and JSON null) or a text.
-using Cell = std::variant<double, std::string>;
+/// One cell: a number (NaN and infinities are written as an empty CSV cell and JSON null), a text,
+/// an integer (a count or index: JSON writes it without ".0") or a flag (true / false).
+/// Construct from std::string, never from a string literal (it would become a flag).
+using Cell = std::variant<double, std::string, std::int64_t, bool>;
+
+/// Columns that the rows bring with them (an identification's parameters depend on the data and
+/// the model: a shard whose files all failed has none): columns[begin, end) of a RowTable are the
+/// union over its rows in order of first appearance by job index, and first[c - begin] is the job
+/// index of the first row that has column c. A row without one of them holds NaN there. merge_parts
+/// joins them over the parts in the same order, so the merged columns equal the unsharded run's
+/// whichever jobs each shard got; the columns before `begin` and from `end` are fixed.
+struct GrownColumns {
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  std::vector<std::size_t> first;  ///< size end - begin
+};
 
 /// Rows of named columns, each row with its job's global index.
 struct RowTable {
   std::vector<std::string> columns;
   std::vector<std::size_t> index;       ///< global job index of each row
   std::vector<std::vector<Cell>> rows;  ///< rows[r].size() == columns.size()
+  std::optional<GrownColumns> grown;    ///< set when some columns come from the rows
 };
 
 /// What a (sharded or whole) run writes: its rows and what identifies the run.
@@ -63,6 +82,7 @@ struct Part {
   std::size_t total = 0;    ///< jobs of the whole run
   std::string envelope;     ///< the whole run's JSON output without rows (a JSON object, as text)
   std::string rows_at;      ///< JSON pointer in `envelope` where the rows go, e.g. "/result/rows"
+  std::string columns_at;   ///< JSON pointer in `envelope` where table_json writes the column names; "" = none
   RowTable table;
 };
 
@@ -74,7 +94,8 @@ std::string part_to_json(const Part& part);
 Part read_part(const std::string& path);
 
 /// Joins parts into the whole run: checks that all have the same command, key, shard count,
-/// total, columns, envelope and rows_at (else the part is foreign, named with the field that
+/// total, columns (the fixed ones, for a table with GrownColumns, whose grown columns are joined),
+/// envelope, rows_at and columns_at (else the part is foreign, named with the field that
 /// differs), that every shard 1..N is there exactly once (naming the duplicated part and the
 /// missing shard), and that the rows cover every job 0..total-1 once; returns one Part (shard 1/1)
 /// with the rows sorted by job index. `names` label the parts in messages (file names).
@@ -86,10 +107,16 @@ Part merge_parts(const std::vector<Part>& parts, const std::vector<std::string>&
 /// it holds a comma, quote or line break.
 std::string table_csv(const RowTable& table);
 
-/// The envelope with the rows (objects column -> cell, in row order) put in at rows_at, indented
+/// The envelope with the rows (objects column -> cell, in row order) put in at rows_at (and the
+/// column names at columns_at, when set), indented
 /// by `indent` (< 0: one line), with a final newline. \throws std::invalid_argument when the envelope is not a JSON
 /// object or rows_at does not name a place in it.
 std::string table_json(const Part& part, int indent = 2);
+
+/// Appends a grown column (GrownColumns) to `table` if it has none of that name, first seen in the
+/// row of job `job`: inserted at table.grown->end, with NaN in the rows already there.
+/// \returns the column's place in table.columns. \throws std::logic_error when table.grown is unset.
+std::size_t grow_column(RowTable& table, const std::string& name, std::size_t job);
 
 /// Writes the whole run's output to `path` through write_file_atomic: CSV for a .csv file, the JSON
 /// of table_json for .json. \throws std::invalid_argument naming the path for another extension
