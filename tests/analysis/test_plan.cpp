@@ -234,17 +234,22 @@ TEST(PlanSweep, NoSpeedBelowVsLeavesVsAndDeltaUndetermined) {
   o.design.speeds = 6;
   o.runs = 3;
   const PlanResult r = plan_experiment(PlanMethod::sweep, virgala(), o);
-  EXPECT_THAT(r.undetermined, ::testing::UnorderedElementsAre("vs", "delta"));
+  // Fs too: with vs free and no speed below it, Fs - Fc trades against vs (singular information).
+  EXPECT_THAT(r.undetermined, ::testing::UnorderedElementsAre("vs", "delta", "Fs"));
+  EXPECT_THAT(::testing::Matches(HasSubstr("Fs is not determined by this plan: its Fisher information"))(
+                  [&] { std::string all; for (const auto& w : r.warnings) all += w + "\n"; return all; }()),
+              true);
   EXPECT_TRUE(std::isnan(r.prediction.parameter("vs").std_monte_carlo));
   EXPECT_TRUE(std::isfinite(r.prediction.parameter("Fc").std_monte_carlo));
   EXPECT_TRUE(std::isnan(r.prediction.parameter("vs").std_a_priori));
-  EXPECT_TRUE(std::isfinite(r.prediction.parameter("Fs").std_a_priori));  // vs and delta left out, as the fit does
+  EXPECT_TRUE(std::isnan(r.prediction.parameter("Fs").std_a_priori));
+  EXPECT_TRUE(std::isfinite(r.prediction.parameter("Fc").std_a_priori));
   const auto j = nlohmann::json::parse(plan_to_json(r, o));
   EXPECT_TRUE(j["prediction"]["parameters"]["vs"]["std"].is_null());
   EXPECT_TRUE(j["prediction"]["parameters"]["vs"]["std_fisher"].is_null());
   EXPECT_TRUE(j["prediction"]["parameters"]["vs"]["std_a_priori"].is_null());
   EXPECT_GT(j["prediction"]["parameters"]["Fc"]["std_a_priori"].get<double>(), 0);
-  EXPECT_EQ(j["undetermined"].size(), 2u);
+  EXPECT_EQ(j["undetermined"].size(), 3u);
   EXPECT_THAT(j["warnings"][0].get<std::string>(), HasSubstr("below the prior's vs = 5 rad/s"));
   EXPECT_THAT(error_of([&] {
                 PlanLimits l = parse_plan_limits({"speed=10,min_speed=6"});

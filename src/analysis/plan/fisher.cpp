@@ -46,7 +46,23 @@ void solve(const Eigen::MatrixXd& J, const Eigen::MatrixXd& SJ, const std::vecto
   const bool any = std::find(singular.begin(), singular.end(), true) != singular.end();
   for (Eigen::Index j = 0; j < p; ++j)
     if (singular[static_cast<std::size_t>(j)]) out.undetermined.push_back(names[static_cast<std::size_t>(j)]);
-  if (any) return;  // the others are confounded with them: no finite std for any either
+  if (any) {  // the others' std with the singular ones held
+    std::vector<Eigen::Index> keep;
+    std::vector<std::string> kept;
+    for (Eigen::Index j = 0; j < p; ++j)
+      if (!singular[static_cast<std::size_t>(j)]) keep.push_back(j), kept.push_back(names[static_cast<std::size_t>(j)]);
+    if (keep.empty()) return;
+    Eigen::MatrixXd Jk(J.rows(), static_cast<Eigen::Index>(keep.size())), SJk(J.rows(), Jk.cols());
+    for (std::size_t c = 0; c < keep.size(); ++c) {
+      Jk.col(static_cast<Eigen::Index>(c)) = J.col(keep[c]);
+      SJk.col(static_cast<Eigen::Index>(c)) = SJ.col(keep[c]);
+    }
+    AprioriSpread sub;
+    solve(Jk, SJk, kept, sub);
+    for (std::size_t c = 0; c < keep.size(); ++c) out.std[static_cast<std::size_t>(keep[c])] = sub.std[c];
+    for (const auto& u : sub.undetermined) out.undetermined.push_back(u);
+    return;
+  }
   // (J'J)^-1 through the normalised information: (J'J)^-1 = D^-1 (Jn'Jn)^-1 D^-1.
   const Eigen::MatrixXd inv_n = eig.eigenvectors() * lambda.cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
   const Eigen::MatrixXd inv = scale.cwiseInverse().asDiagonal() * inv_n * scale.cwiseInverse().asDiagonal();
@@ -87,10 +103,10 @@ AprioriSpread sweep_spread(const PlanMeasurement& m, const PlanRig& rig, const S
     return std::find(list.begin(), list.end(), name) != list.end();
   };
   for (const auto& p : fit.parameters) {
-    // Held (a given exponent), or left out by the method's own rule (static_fit.hpp: too few
-    // points below vs: vs and delta undetermined, the others' std as if they were held).
-    if (!spec.scalars.count(p.name) || (p.name == "delta" && o.fit.fixed_delta > 0) || listed(fit.undetermined, p.name))
-      continue;
+    // A held exponent is not estimated. Parameters the fit's own rule leaves undetermined (vs
+    // and delta with too few points below vs) stay in J: the fit still moves them, so the
+    // parameters confounded with them (Fs) show as singular too.
+    if (!spec.scalars.count(p.name) || (p.name == "delta" && o.fit.fixed_delta > 0)) continue;
     const double h = kStep * std::max(std::abs(p.value), 1e-12);
     const FrictionLaw up = law_with(p.name, p.value + h), down = law_with(p.name, p.value - h);
     Eigen::VectorXd c(n);
@@ -114,7 +130,11 @@ AprioriSpread sweep_spread(const PlanMeasurement& m, const PlanRig& rig, const S
   }
   out.signal_noise_std = sum / static_cast<double>(n);
   solve(J, var.asDiagonal() * J, names, out);
-  for (const auto& u : fit.undetermined) out.undetermined.push_back(u);
+  for (const auto& u : fit.undetermined) {
+    const auto it = std::find(out.names.begin(), out.names.end(), u);
+    if (it != out.names.end()) out.std[static_cast<std::size_t>(it - out.names.begin())] = kNaN;
+    if (!listed(out.undetermined, u)) out.undetermined.push_back(u);
+  }
   return out;
 }
 

@@ -27,7 +27,8 @@ namespace frictionlab {
 /// A-priori std of a method's parameters, in the method's parameter order.
 struct AprioriSpread {
   std::vector<std::string> names;
-  /// Std per name, in the parameter's unit (N or N m, m/s or rad/s, ...); NaN when undetermined.
+  /// Std per name, in the parameter's unit (N or N m, m/s or rad/s, ...); NaN when undetermined
+  /// (the others' std is then the one with the undetermined parameters held).
   std::vector<double> std;
   /// Parameters whose information is (near) singular: a direction of the column-normalised
   /// J'J with eigenvalue below kSingularInformation times the largest that the parameter takes part in.
