@@ -24,6 +24,17 @@ const std::string kExamples = std::string(FRICTIONLAB_SOURCE_DIR) + "/examples/"
 
 PlanRig craig() { return load_plan_rig(kExamples + "plan/craig_motor_prior.json", kExamples + "craig_motor_trapezoid.yaml"); }
 PlanRig virgala() { return load_plan_rig(kExamples + "plan/virgala_motor_prior.json", kExamples + "virgala_motor_sweep.yaml"); }
+PlanRig canudas() { return load_plan_rig(kExamples + "plan/canudas_prior.json", kExamples + "canudas_presliding.yaml"); }
+
+// The LuGre plan of the README: 5 cm of travel, 0.1 um of position noise, a 1 kHz record.
+PlanOptions lugre_options(int runs) {
+  PlanOptions o;
+  o.limits = parse_plan_limits({"travel=0.05"});
+  o.noise = parse_sensor_noise({"position=1e-7"});
+  o.design.sample_rate = 1000;
+  o.runs = runs;
+  return o;
+}
 PlanRig emps_axis() { return load_plan_rig(kExamples + "plan/emps_prior.json", kExamples + "plan/axis_position_loop.yaml"); }
 
 // Design formulas are closed-form: equal to rounding.
@@ -309,7 +320,8 @@ TEST(PlanIdim, APrioriStdAgreesWithTheSpreadUnderForceNoise) {
   EXPECT_EQ(a.names, (std::vector<std::string>{"M", "Fv", "Fc", "offset"}));
   EXPECT_TRUE(a.undetermined.empty());
   ASSERT_EQ(a.std_white.size(), 4u);
-  for (std::size_t k = 0; k < 4; ++k) std::cout << "  " << a.names[k] << ": a priori " << a.std[k] << ", white-noise formula " << a.std_white[k] << "\n";
+  for (std::size_t k = 0; k < 4; ++k)
+    std::cout << "  " << a.names[k] << ": a priori " << a.std[k] << ", white-noise formula " << a.std_white[k] << "\n";
   // No noise: a std of zero, not NaN.
   const AprioriSpread none = a_priori_spread(PlanMethod::idim, r.profile, rig, simulate_profile(r.profile, rig, rig.law), {});
   for (double x : none.std) EXPECT_EQ(x, 0.0);
@@ -317,15 +329,11 @@ TEST(PlanIdim, APrioriStdAgreesWithTheSpreadUnderForceNoise) {
 }
 
 // The LuGre self-check with few runs: each output-error fit takes about 0.3 s here, so 24 runs
-// predict and 24 check (about 15 s). The ratio of two sample stds of 24 runs each lies within
+// predict and 24 check (about 12 s). The ratio of two sample stds of 24 runs each lies within
 // 1.5 with about 95 % probability (F(23, 23)), so the factor is also the statistical limit.
 TEST(PlanLugre, PredictedStdAgreesWithTheSpreadOnASimulatedRig) {
-  const PlanRig rig = load_plan_rig(kExamples + "plan/canudas_prior.json", kExamples + "canudas_presliding.yaml");
-  PlanOptions o;
-  o.limits = parse_plan_limits({"travel=0.05"});
-  o.noise = parse_sensor_noise({"position=1e-7"});
-  o.design.sample_rate = 1000;
-  o.runs = 24;
+  const PlanRig rig = canudas();
+  const PlanOptions o = lugre_options(24);
   const PlanResult r = plan_experiment(PlanMethod::lugre, rig, o);
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_EQ(r.prediction.failed, 0);
@@ -335,12 +343,8 @@ TEST(PlanLugre, PredictedStdAgreesWithTheSpreadOnASimulatedRig) {
 }
 
 TEST(PlanLugre, PreslidingAndSlidingWithinTheTravel) {
-  const PlanRig rig = load_plan_rig(kExamples + "plan/canudas_prior.json", kExamples + "canudas_presliding.yaml");
-  PlanOptions o;
-  o.limits = parse_plan_limits({"travel=0.05"});
-  o.noise = parse_sensor_noise({"position=1e-7"});
-  o.design.sample_rate = 1000;
-  o.runs = 2;
+  const PlanRig rig = canudas();
+  const PlanOptions o = lugre_options(2);
   const PlanResult r = plan_experiment(PlanMethod::lugre, rig, o);
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_EQ(r.profile.column_names()[1], "force_N");
