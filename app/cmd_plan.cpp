@@ -40,13 +40,15 @@ std::string text_of(const PlanResult& r) {
   const auto& pr = r.prediction;
   s << "predicted std (" << pr.runs - pr.failed << " of " << pr.runs << " Monte Carlo runs, seed " << pr.seed << "):\n";
   s << "  " << std::left << std::setw(8) << "param" << std::right << std::setw(13) << "prior" << std::setw(13) << "bias"
-    << std::setw(13) << "std (MC)" << std::setw(13) << "std (Fisher)" << std::setw(9) << "std %" << "  unit\n";
+    << std::setw(13) << "std (MC)" << std::setw(13) << "std (Fisher)" << std::setw(13) << "(a priori)" << std::setw(9)
+    << "std %" << "  unit\n";
   auto row = [&](const ParameterSpread& x, const std::string& prefix) {
     const double ref = std::isfinite(x.prior) && x.prior != 0 ? x.prior : x.mean;
     s << "  " << std::left << std::setw(8) << (prefix + x.name) << std::right << std::setw(13) << format_number(x.prior, 5)
       << std::setw(13) << format_number(x.mean - x.prior, 3) << std::setw(13)
       << (x.undetermined ? std::string("null") : format_number(x.std_monte_carlo, 3)) << std::setw(13)
-      << (std::isfinite(x.std_fisher) ? format_number(x.std_fisher, 3) : std::string("-")) << std::setw(9)
+      << (std::isfinite(x.std_fisher) ? format_number(x.std_fisher, 3) : std::string("-")) << std::setw(13)
+      << (std::isfinite(x.std_a_priori) ? format_number(x.std_a_priori, 3) : std::string("-")) << std::setw(9)
       << (x.undetermined ? std::string("-") : format_number(100 * x.std_monte_carlo / std::abs(ref), 3)) << "  "
       << x.unit << "\n";
   };
@@ -110,7 +112,9 @@ Handler register_plan(CLI::App& app) {
       "scenario, and predict each parameter's std before it is run");
   cmd->footer(
       "The plan is simulated on the prior, the sensor noise added R times, the method's identification run on each\n"
-      "copy (Monte Carlo); sweep and idim also report the Fisher-information std of their least-squares fits.\n"
+      "copy (Monte Carlo); sweep and idim also report the std their noisy least-squares fits give (Fisher) and\n"
+      "the a-priori std: the Fisher information of the noise-free plan with the stated noise propagated through\n"
+      "the method's averaging (sweep) or filtering and decimation (idim; the filtered noise's correlation counted).\n"
       "Methods and what they need in the scenario:\n"
       "  breakaway  trapezoid of current (dc-motor, drive: current) or force (axis): ramp slow against M / Fv,\n"
       "             peak --margin x Fs (1.4), hold to steady state, ramp down.  Columns time_s,current_A\n"

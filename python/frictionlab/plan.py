@@ -58,7 +58,8 @@ def plan(method, prior, scenario, *, noise=None, limits=None, runs=0, seed=1, ma
     Returns the plan as a dict (the JSON of ``frictionlab plan --json``), with
     ``result["profile"]["time"]`` (s) and ``result["profile"]["command"]`` (command unit) as
     numpy arrays. Predicted std: ``result["prediction"]["parameters"][NAME]["std"]`` (None when
-    the plan cannot determine NAME, which is then listed in ``result["undetermined"]``).
+    the plan cannot determine NAME, which is then listed in ``result["undetermined"]``); for sweep
+    and idim also ``"std_a_priori"``, the Fisher-information std of the noise-free plan (README).
     Raises ValueError naming the limit that makes the plan impossible, or a bad key.
     """
     if not isinstance(method, str):

@@ -24,7 +24,7 @@ assert j["status"] == "ok" and j["method"] == "breakaway", j["method"]
 p = j["prediction"]["parameters"]
 for name in ("Fs", "Fc", "Fv"):
     assert p[name]["std"] > 0 and p[name]["std"] < 0.05 * p[name]["prior"], (name, p[name])
-    assert p[name]["std_fisher"] is None
+    assert p[name]["std_fisher"] is None and p[name]["std_a_priori"] is None
 assert set(j["prediction"]["readoff"]) == {"Fs", "Fc", "Fv"}
 d = j["profile"]["design"]
 assert abs(d["peak"]["value"] - 1.4 * 0.0015 / 0.0141) < 1e-12 and d["peak"]["unit"] == "A"
@@ -46,8 +46,11 @@ grep -q "frictionlab plan breakaway" "$tmp/err.txt" || fail "--json -: text not 
 /usr/bin/python3 - "$tmp/sweep.json" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
-assert sorted(j["undetermined"]) == ["delta", "vs"], j["undetermined"]
+assert sorted(j["undetermined"]) == ["Fs", "delta", "vs"], j["undetermined"]  # Fs: singular information
 assert j["prediction"]["parameters"]["vs"]["std"] is None
+assert j["prediction"]["parameters"]["vs"]["std_a_priori"] is None
+fc = j["prediction"]["parameters"]["Fc"]
+assert fc["std_a_priori"] > 0 and fc["std_a_priori"] < 0.05 * fc["prior"], fc
 assert any("below the prior's vs" in w for w in j["warnings"])
 PY
 

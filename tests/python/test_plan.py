@@ -31,9 +31,12 @@ def test_sweep_plan_names_undetermined_parameters(source_dir):
     r = fl.plan("sweep", source_dir / "examples/plan/virgala_motor_prior.json",
                 source_dir / "examples/virgala_motor_sweep.yaml",
                 limits={"speed": 300, "min_speed": 6}, noise={"current": 1e-3}, speeds=5, runs=2)
-    assert sorted(r["undetermined"]) == ["delta", "vs"]
+    # Fs with vs and delta: with vs free and no speed below it, its information is singular.
+    assert sorted(r["undetermined"]) == ["Fs", "delta", "vs"]
     assert r["prediction"]["parameters"]["vs"]["std"] is None
+    assert r["prediction"]["parameters"]["vs"]["std_a_priori"] is None
     assert math.isfinite(r["prediction"]["parameters"]["Fc"]["std"])
+    assert 0 < r["prediction"]["parameters"]["Fc"]["std_a_priori"] < 0.05 * 0.002
 
 
 def test_plan_bad_input(source_dir):

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 
+#include "frictionlab/analysis/plan/fisher.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
@@ -25,6 +27,7 @@ nlohmann::json spread_json(const ParameterSpread& s) {
   j["std"] = number(s.std_monte_carlo);
   j["std_monte_carlo"] = number(s.std_monte_carlo);
   j["std_fisher"] = number(s.std_fisher);
+  j["std_a_priori"] = number(s.std_a_priori);
   const double ref = std::isfinite(s.prior) && s.prior != 0 ? s.prior : s.mean;
   j["relative_std_percent"] = number(100 * s.std_monte_carlo / std::abs(ref));
   j["unit"] = s.unit;
@@ -86,6 +89,24 @@ PlanResult plan_experiment(PlanMethod method, const PlanRig& rig, const PlanOpti
 
   const int runs = options.runs > 0 ? options.runs : (method == PlanMethod::lugre ? kDefaultLugreRuns : kDefaultRuns);
   out.prediction = monte_carlo_spread(method, p, rig, clean, options.noise, runs, options.seed, options.progress);
+  // The a-priori (Fisher-information) std of the noise-free plan next to the Monte Carlo one.
+  const AprioriSpread apriori = a_priori_spread(method, p, rig, clean, options.noise);
+  for (std::size_t k = 0; k < apriori.names.size(); ++k) {
+    for (auto& s : out.prediction.parameters) {
+      if (s.name != apriori.names[k]) continue;
+      s.std_a_priori = s.undetermined ? std::numeric_limits<double>::quiet_NaN() : apriori.std[k];
+      const bool singular =
+          std::find(apriori.undetermined.begin(), apriori.undetermined.end(), s.name) != apriori.undetermined.end();
+      if (singular && !s.undetermined) {
+        out.prediction.undetermined.push_back(s.name);
+        out.prediction.warnings.push_back(s.name + " is not determined by this plan: its Fisher information on the "
+                                                   "prior is (near) singular, the Monte Carlo std " +
+                                          format_number(s.std_monte_carlo, 3) + " " + s.unit + " is not to be trusted");
+        s.undetermined = true;
+        s.std_monte_carlo = s.std_fisher = s.std_a_priori = std::numeric_limits<double>::quiet_NaN();
+      }
+    }
+  }
   out.warnings.insert(out.warnings.begin(), p.warnings.begin(), p.warnings.end());
   out.warnings.insert(out.warnings.end(), out.prediction.warnings.begin(), out.prediction.warnings.end());
   out.undetermined = out.prediction.undetermined;

@@ -8,9 +8,7 @@
 
 #include "frictionlab/format.hpp"
 #include "frictionlab/identify/breakaway.hpp"
-#include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/lugre.hpp"
-#include "frictionlab/identify/sweep.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 namespace frictionlab {
@@ -106,6 +104,22 @@ PlanMeasurement measure(const Trajectory& clean, const PlanRig& rig, const Exper
   return m;
 }
 
+SweepOptions plan_sweep_options(const PlanRig& rig, const Eigen::VectorXd& reference) {
+  SweepOptions o;
+  o.fit.model = std::isfinite(rig.prior("vs")) ? StaticFitModel::stribeck : StaticFitModel::coulomb_viscous;
+  o.fit.num_threads = 1;
+  o.reference = reference;
+  o.axis = rig.axis;
+  return o;
+}
+
+IdimOptions plan_idim_options(const PlanRig& rig) {
+  IdimOptions o;
+  o.auto_cutoff = o.auto_decimation = o.auto_skip = true;
+  o.axis = rig.axis;
+  return o;
+}
+
 Result identify_measurement(PlanMethod method, const PlanMeasurement& d, const PlanRig& rig,
                             const ExperimentProfile&) {
   switch (method) {
@@ -114,18 +128,10 @@ Result identify_measurement(PlanMethod method, const PlanMeasurement& d, const P
       o.axis = rig.axis;
       return identify_breakaway(BreakawayData{d.time, d.force, d.velocity}, o);
     }
-    case PlanMethod::sweep: {
-      SweepOptions o;
-      o.fit.model = std::isfinite(rig.prior("vs")) ? StaticFitModel::stribeck : StaticFitModel::coulomb_viscous;
-      o.fit.num_threads = 1;
-      o.reference = d.reference;
-      o.axis = rig.axis;
-      return identify_sweep(SweepData{d.time, d.force, d.velocity}, o);
-    }
+    case PlanMethod::sweep:
+      return identify_sweep(SweepData{d.time, d.force, d.velocity}, plan_sweep_options(rig, d.reference));
     case PlanMethod::idim: {
-      IdimOptions o;
-      o.auto_cutoff = o.auto_decimation = o.auto_skip = true;
-      o.axis = rig.axis;
+      const IdimOptions o = plan_idim_options(rig);
       IdimData data;
       data.time = d.time;
       data.position = d.position;

@@ -39,7 +39,8 @@ struct PlanResult {
 };
 
 /// Designs the profile, simulates it on the prior, checks the simulated speed, force and travel
-/// against the limits, and predicts the std by Monte Carlo (and Fisher where the method allows).
+/// against the limits, and predicts the std by Monte Carlo and, for sweep and idim, a priori
+/// (analysis/plan/fisher.hpp); a parameter whose a-priori information is singular is undetermined.
 /// \throws std::invalid_argument as design_experiment, and naming the limit when the simulated
 ///         run exceeds it; std::runtime_error when the simulation fails.
 PlanResult plan_experiment(PlanMethod method, const PlanRig& rig, const PlanOptions& options = {});
@@ -49,10 +50,11 @@ PlanResult plan_experiment(PlanMethod method, const PlanRig& rig, const PlanOpti
 /// "unit", "duration_s", "sample_rate_hz", "samples", "design": {NAME: {"value", "unit", "what"}},
 /// "windows": [{"kind", "t_begin_s", "t_end_s", "level"}]}, "simulated": {NAME: {"value",
 /// "unit"}}, "noise": {...}, "limits": {...} (null for none), "prediction": {"runs", "failed",
-/// "seed", "parameters": {NAME: {"prior", "mean", "bias" (mean - prior), "std", "std_monte_carlo", "std_fisher",
-/// "relative_std_percent", "unit", "runs"}}, "readoff": {...} (breakaway)}, "undetermined": [...],
+/// "seed", "parameters": {NAME: {"prior", "mean", "bias" (mean - prior), "std", "std_monte_carlo",
+/// "std_fisher" (RMS of the std the noisy fits report), "std_a_priori" (Fisher information of the
+/// noise-free plan, analysis/plan/fisher.hpp; sweep and idim), "relative_std_percent", "unit", "runs"}}, "readoff": {...} (breakaway)}, "undetermined": [...],
 /// "warnings": [...]}. "std" is the Monte Carlo std; null for an undetermined parameter (as are
-/// its Fisher std and other non-finite numbers).
+/// its Fisher and a-priori std and other non-finite numbers).
 std::string plan_to_json(const PlanResult& result, const PlanOptions& options, const std::string& profile_file = "",
                          int indent = 2);
 

@@ -8,12 +8,15 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "frictionlab/analysis/plan/design.hpp"
+#include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/result.hpp"
+#include "frictionlab/identify/sweep.hpp"
 #include "frictionlab/simulate/trajectory.hpp"
 
 namespace frictionlab {
@@ -37,6 +40,14 @@ Trajectory simulate_profile(const ExperimentProfile& profile, const PlanRig& rig
 PlanMeasurement measure(const Trajectory& clean, const PlanRig& rig, const ExperimentProfile& profile,
                         const SensorNoise& noise, std::mt19937_64& rng);
 
+/// The options the plan identifies a sweep record with: a Stribeck fit when the prior has vs,
+/// else coulomb-viscous; segments found on `reference` (the set points, m/s or rad/s, length N).
+SweepOptions plan_sweep_options(const PlanRig& rig, const Eigen::VectorXd& reference);
+
+/// The options the plan identifies an idim record with: the recipe's cut-off, decimation and
+/// skip from the sample rate (idim_rate_defaults), the default terms.
+IdimOptions plan_idim_options(const PlanRig& rig);
+
 /// The method's identification of a record as a user would run it on the rig's data:
 /// breakaway (identify_breakaway, inertia estimated), sweep (identify_sweep with the profile's
 /// set points as the reference, a Stribeck fit when the prior has vs, else coulomb-viscous),
@@ -52,9 +63,13 @@ struct ParameterSpread {
   double mean = 0.0;   ///< mean of the estimates, unit
   /// Sample standard deviation of the estimates (n - 1), unit; NaN when undetermined.
   double std_monte_carlo = 0.0;
-  /// Root mean square of the std each identification reported (s^2 (J'J)^-1, Fisher
-  /// information of the least-squares fit), unit; NaN for breakaway and lugre, and when undetermined.
+  /// Root mean square of the std each identification reported (s^2 (J'J)^-1 with the residual
+  /// variance s^2 of each noisy fit), unit; NaN for breakaway and lugre, and when undetermined.
   double std_fisher = 0.0;
+  /// The a-priori std (analysis/plan/fisher.hpp: the Fisher information of the noise-free plan
+  /// and the stated noise), unit; NaN for breakaway and lugre, and when undetermined. Filled by
+  /// plan_experiment, not by monte_carlo_spread.
+  double std_a_priori = std::numeric_limits<double>::quiet_NaN();
   int runs = 0;  ///< runs that gave a finite estimate
   bool undetermined = false;
 };
