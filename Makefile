@@ -43,7 +43,7 @@ sanitize: deps
 
 bench: deps
 	@$(call CONFIGURE,$(BUILD)-bench,-DCMAKE_BUILD_TYPE=Release -DFRICTIONLAB_BUILD_BENCHMARKS=ON -DFRICTIONLAB_BUILD_TESTS=OFF)
-	@cmake --build $(BUILD)-bench -j $(JOBS) --target frictionlab_bench frictionlab_compare frictionlab_cli
+	@cmake --build $(BUILD)-bench -j $(JOBS) --target frictionlab_bench frictionlab_compare frictionlab_cli frictionlab_python
 	@$(BUILD)-bench/bench/frictionlab_bench
 	@$(PYTHON) bench/compare --build $(BUILD)-bench --no-build --json bench/results.json
 

@@ -22,17 +22,34 @@ Where it runs (``client``):
   None               serially in this process; dask is not imported (and need not be installed).
 The rows do not depend on where they ran: each item is computed by the same function, alone.
 
+How the items are sent (``chunk``): Dask costs a few ms per task (scheduling, pickling, the
+round trip), more than one file's sweep fit (~2 ms), so the items go in chunks of consecutive
+items, one task each, run one after another on the worker:
+  None (default)     automatic: about CHUNKS_PER_THREAD (4) chunks per worker thread of the
+                     client (``sum(client.nthreads().values())`` when the call starts; a client
+                     with no worker yet counts as one thread), at least 1 item per chunk: 400
+                     files on 2 workers of one thread go as 8 chunks of 50.
+  an int N >= 1      N items per chunk (the last one may be shorter); 1 is one task per item.
+Chunks change neither the rows nor their order. An item's own failure stays its row; but a
+worker lost while running a chunk (a crash in native code, killed for memory; Dask retries the
+chunk on other workers and gives up when they die too) takes the whole chunk: each of its items
+gets an error row "worker lost while running this job's chunk ...". Use ``chunk=1`` to keep such
+a crash to its own item's row, or smaller chunks for items of very unequal cost (a chunk of
+slow items then holds up the end less).
+
 Every batch returns a :class:`Table`: one row per item in the order given, each a dict; a failed
 item (a file that cannot be read, data that give no answer, a scenario that does not simulate) is
 a row with ``status`` "error" and the ``message``, and never stops the others.
 """
 import csv
+import functools
 import glob
 import inspect
 import io
 import json
 import logging
 import math
+import numbers
 import os
 
 import numpy as np
@@ -48,6 +65,10 @@ IDENTIFY_HEAD = ("index", "file", "date", "status", "message", "method", "model"
 FIT_COLUMNS = ("relative_error_percent", "rmse", "rmse_unit", "samples", "sha256")
 
 _DATA_EXTENSIONS = (".csv", ".mat")
+#: Chunks per worker thread of the client when ``chunk`` is None: enough to keep every thread
+#: busy to the end when chunks take unequal times, few enough that Dask's cost per task (a few
+#: ms) is small against a chunk's work.
+CHUNKS_PER_THREAD = 4
 
 
 class Table:
@@ -167,10 +188,27 @@ def _json_value(v):
 # Where the items run
 
 
-def _run(function, jobs, client, workers, processes):
+def _check_chunk(chunk):
+    """ValueError naming ``chunk`` unless it is None (automatic) or a whole number >= 1."""
+    if chunk is None:
+        return
+    if isinstance(chunk, bool) or not isinstance(chunk, numbers.Integral) or chunk < 1:
+        raise ValueError(f"chunk = {chunk!r}: expected None (automatic: about {CHUNKS_PER_THREAD} chunks per "
+                         "worker thread) or a whole number >= 1 of jobs per chunk")
+
+
+def _chunk_size(chunk, n_jobs, n_threads):
+    """Jobs per chunk: ``chunk`` when given; else n_jobs split into about CHUNKS_PER_THREAD chunks
+    per worker thread (``n_threads``; a client with no worker yet counts as one), at least 1."""
+    if chunk is not None:
+        return int(chunk)
+    return max(1, math.ceil(n_jobs / (CHUNKS_PER_THREAD * max(1, n_threads))))
+
+
+def _run(function, jobs, client, workers, processes, chunk=None):
     """[function(job) for job in jobs], serially (client None), on a LocalCluster made here
-    ("local"), or on the given Client. ``function`` returns a row and never raises for an item's
-    own failure; a worker lost while running one (KilledWorker) gives an error row for it."""
+    ("local"), or on the given Client, in chunks of jobs (see _run_on). ``function`` returns a
+    row and never raises for an item's own failure. ``chunk`` is checked by the caller."""
     if client is None:
         return [function(job) for job in jobs]
     if isinstance(client, str):
@@ -184,22 +222,39 @@ def _run(function, jobs, client, workers, processes):
         # worker" while it closes) are noise here; an item's failure is its row's message.
         with LocalCluster(n_workers=workers, threads_per_worker=1, processes=processes, dashboard_address=None,
                           silence_logs=logging.CRITICAL) as cluster, Client(cluster) as c:
-            return _run_on(c, function, jobs)
-    return _run_on(client, function, jobs)
+            return _run_on(c, function, jobs, chunk)
+    return _run_on(client, function, jobs, chunk)
 
 
-def _run_on(client, function, jobs):
-    from distributed import wait
+def _run_chunk(function, jobs):
+    """The rows of a chunk of jobs, in order (one Dask task)."""
+    return [function(job) for job in jobs]
 
-    # pure=False: every job runs, even two equal ones (a Monte Carlo with a repeated seed).
-    futures = client.map(function, jobs, pure=False)
+
+def _run_on(client, function, jobs, chunk):
+    """The rows of ``jobs`` on ``client``: one Dask task per chunk of consecutive jobs (a task
+    costs a few ms of scheduling and transfer, more than one file's fit), the chunks' rows
+    joined in the jobs' order. A chunk whose worker is lost (KilledWorker: the worker died on it
+    every time it was tried) gives an error row for each of its jobs."""
+    from distributed import KilledWorker, wait
+
+    size = _chunk_size(chunk, len(jobs), sum(client.nthreads().values()))
+    chunks = [jobs[i:i + size] for i in range(0, len(jobs), size)]
+    # pure=False: every chunk runs, even two equal ones (a Monte Carlo with a repeated seed).
+    futures = client.map(functools.partial(_run_chunk, function), chunks, pure=False, key="frictionlab-batch")
     wait(futures)
     rows = []
-    for job, f in zip(jobs, futures):
+    for part, f in zip(chunks, futures):
         try:
-            rows.append(f.result())
-        except Exception as e:  # a worker lost while running the job: its row says so
-            rows.append(_failed_job_row(job, f"worker failed: {type(e).__name__}: {e}"))
+            rows.extend(f.result())
+        except Exception as e:  # the whole chunk is lost: each of its jobs' rows says so
+            what = (f"{len(part)} jobs, index {part[0]['head']['index']} to {part[-1]['head']['index']}"
+                    if len(part) > 1 else "1 job")
+            if isinstance(e, KilledWorker):
+                message = f"worker lost while running this job's chunk ({what}): KilledWorker: {e}"
+            else:
+                message = f"worker failed on this job's chunk ({what}): {type(e).__name__}: {e}"
+            rows.extend(_failed_job_row(job, message) for job in part)
     return rows
 
 
@@ -352,7 +407,7 @@ def _identify_job(job):
 
 
 def identify(data, method, *, columns=None, load=None, date_from=None, client="local", workers=2, processes=True,
-             **options):
+             chunk=None, **options):
     """One identification per data file, one row per file.
 
     ``data``: a folder, a glob pattern, a file, or a list of them (see data_files).
@@ -367,15 +422,17 @@ def identify(data, method, *, columns=None, load=None, date_from=None, client="l
     ``load``: options of frictionlab.load for every file (``{"resample": True}``, ``names``, ...).
     ``date_from``: None, "name" or "column:NAME": adds a ``date`` column (see log_date); a file
     without one is an error row.
-    ``client``, ``workers``, ``processes``: where it runs (see the module's doc).
+    ``client``, ``workers``, ``processes``: where it runs; ``chunk``: files per Dask task (None:
+    automatic, about 4 tasks per worker thread; see the module's doc).
 
     Returns a :class:`Table`: columns ``index`` (the file's place in data_files(data), from 0),
     ``file``, ``date`` (with date_from), ``status`` ("ok"/"error"), ``message``, ``method``,
     ``model``, ``axis``, then for each parameter P: ``P`` (value), ``P_std``, ``P_unit`` (SI:
     N, N s/m, ... or N m, N m s/rad, ...), then ``relative_error_percent`` (percent), ``rmse``
     (in ``rmse_unit``), ``samples`` and ``sha256`` (of the file). Parameters are in the order
-    the first ok row has them. ValueError for a bad method, data or client argument (before any work).
+    the first ok row has them. ValueError for a bad method, data, client or chunk argument (before any work).
     """
+    _check_chunk(chunk)
     files = data_files(data)
     function_name, _ = _method_function(method)
     if load is not None and not isinstance(load, dict):
@@ -389,7 +446,7 @@ def identify(data, method, *, columns=None, load=None, date_from=None, client="l
             head["date"] = ""
         jobs.append({"head": head, "method": method, "columns": columns, "load": dict(load or {}),
                      "options": options, "date_from": date_from})
-    rows = _run(_identify_job, jobs, client, workers, processes)
+    rows = _run(_identify_job, jobs, client, workers, processes, chunk)
     return Table(rows, _identify_columns(rows, date_from is not None), kind="identify")
 
 
@@ -435,7 +492,7 @@ def _simulate_job(job):
 
 
 def simulate(scenarios=None, *, make=None, seeds=None, summary=None, client="local", workers=2, processes=True,
-             **overrides):
+             chunk=None, **overrides):
     """Many simulations, one row each: a list of scenarios (files or dicts, as frictionlab.simulate
     takes them), or a Monte Carlo: ``make(seed) -> scenario`` for each seed of ``seeds`` (draw the
     perturbed parameters from ``numpy.random.default_rng(seed)`` inside ``make``: the rows then
@@ -443,9 +500,12 @@ def simulate(scenarios=None, *, make=None, seeds=None, summary=None, client="loc
     ``summary``: a function Trajectory -> dict of numbers for each row (default: final_time s,
     final_position m or rad, final_velocity and max_abs_velocity m/s or rad/s, breakaways,
     sticks, steps). ``**overrides``: frictionlab.simulate's law, duration, output_rate.
+    ``client``, ``workers``, ``processes``, ``chunk`` (simulations per Dask task): as for identify.
     Returns a :class:`Table`: ``index``, ``scenario`` (the file, or "#i" for a dict), ``seed``
-    (Monte Carlo), ``status``, ``message``, then the summary's keys.
+    (Monte Carlo), ``status``, ``message``, then the summary's keys. ValueError for bad
+    scenarios/make/seeds, client or chunk arguments (before any work).
     """
+    _check_chunk(chunk)
     if (scenarios is None) == (make is None):
         raise ValueError("batch simulate: give scenarios (a list) or make (a function of the seed) with seeds")
     jobs = []
@@ -464,7 +524,7 @@ def simulate(scenarios=None, *, make=None, seeds=None, summary=None, client="loc
                          "overrides": overrides})
     if not jobs:
         raise ValueError("batch simulate: no scenarios")
-    rows = _run(_simulate_job, jobs, client, workers, processes)
+    rows = _run(_simulate_job, jobs, client, workers, processes, chunk)
     return Table(rows, kind="simulate")
 
 

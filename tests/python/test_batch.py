@@ -5,8 +5,10 @@ import csv
 import json
 import math
 import os
+import re
 import subprocess
 import sys
+import time
 
 import numpy as np
 import pytest
@@ -86,19 +88,131 @@ def test_a_client_passed_in_is_used(fleet, serial):
 
 
 def _dies_on_day_2(d):
-    """Arrays of a sweep log; the worker process dies (as a crash in native code would) on day 2."""
+    """Arrays of a sweep log; the worker process dies (as a crash in native code would) on day 2,
+    half a second in: the worker has then told the scheduler of the task it finished before (a
+    death at once can come before that message, and Dask would count the death to that task too)."""
     if d.file.endswith("2026-11-02.csv"):
+        time.sleep(0.5)
         os._exit(3)
     return {"time": d["time"], "force": d["force"], "velocity": d["velocity"]}
 
 
-def test_a_worker_lost_is_its_row(fleet, serial):
+def test_a_worker_lost_is_its_row_or_its_chunks_rows(fleet, serial):
+    import dask
+    from distributed import Client, LocalCluster
+
     folder, _ = fleet
-    files = [folder + "/axis3_2026-11-01.csv", folder + "/axis3_2026-11-02.csv"]
-    t = fl.batch.identify(files, "sweep", columns=_dies_on_day_2, workers=2, model="coulomb-viscous",
-                          load={"resample": True})
-    assert t[0]["status"] == "ok" and t[0]["Fc"] == serial[0]["Fc"]
-    assert t[1]["status"] == "error" and t[1]["message"].startswith("worker failed: KilledWorker"), t[1]["message"]
+    # Day 2 (its worker dies) last: nothing waits behind it on the worker that dies (a task
+    # queued there would count the death too).
+    days = (3, 1, 4, 2)
+    files = [folder + f"/axis3_2026-11-0{k}.csv" for k in days]
+    # One retry instead of Dask's three: the chunk is lost after two worker deaths (quicker).
+    with dask.config.set({"distributed.scheduler.allowed-failures": 1}), \
+            LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+                         silence_logs=50) as cluster, Client(cluster) as client:
+        # Automatic chunks: 4 files on 2 threads are 4 chunks of 1; only day 2's row is lost.
+        alone = fl.batch.identify(files, "sweep", columns=_dies_on_day_2, client=client, model="coulomb-viscous",
+                                  load={"resample": True})
+        # Chunks of 2: days 4 and 2 run in one task; both rows are lost, days 3 and 1 are not.
+        paired = fl.batch.identify(files, "sweep", columns=_dies_on_day_2, client=client, chunk=2,
+                                   model="coulomb-viscous", load={"resample": True})
+    for t, lost in ((alone, [3]), (paired, [2, 3])):
+        assert [r["file"] for r in t] == files and list(t["index"]) == [0, 1, 2, 3]
+        for i, day in enumerate(days):
+            r = t[i]
+            if i not in lost:
+                assert r["status"] == "ok" and r["Fc"] == serial[day - 1]["Fc"], r
+                continue
+            assert r["status"] == "error" and r["method"] is None, r
+            what = "1 job" if len(lost) == 1 else "2 jobs, index 2 to 3"
+            assert r["message"].startswith(f"worker lost while running this job's chunk ({what}): KilledWorker"), \
+                r["message"]
+
+
+class _RecordingClient:
+    """A dask Client that records the chunk sizes of each map (how the jobs were sent)."""
+
+    def __init__(self, client):
+        self.client = client
+        self.sizes = []
+
+    def nthreads(self):
+        return self.client.nthreads()
+
+    def map(self, function, chunks, **kwargs):
+        self.sizes.append([len(c) for c in chunks])
+        return self.client.map(function, chunks, **kwargs)
+
+
+@pytest.fixture(scope="module")
+def two_workers():
+    from distributed import Client, LocalCluster
+
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+                      silence_logs=50) as cluster, Client(cluster) as client:
+        yield client
+
+
+def test_chunks_give_the_serial_rows_in_order(fleet, two_workers):
+    folder, truth = fleet
+    ok = [os.path.join(folder, n) for n in sorted(truth) if truth[n] is not None]
+    broken = [os.path.join(folder, n) for n in sorted(truth) if truth[n] is None]
+    # 11 files, a broken one in the middle of chunks of 3 (the first two) and at a chunk's end.
+    files = ok[:1] + broken[:1] + ok[1:3] + broken[1:2] + ok[3:6] + broken[2:] + ok[6:]
+    assert len(files) == 11
+    serial = fl.batch.identify(files, "sweep", client=None, **SWEEP)
+    assert [r["status"] for r in serial].count("error") == 3
+    for chunk, sizes in ((1, [1] * 11), (3, [3, 3, 3, 2]), (None, [2, 2, 2, 2, 2, 1]), (np.int64(20), [11])):
+        client = _RecordingClient(two_workers)
+        t = fl.batch.identify(files, "sweep", client=client, chunk=chunk, **SWEEP)
+        # None on 2 worker threads: about 4 chunks per thread, ceil(11 / 8) = 2 files each.
+        assert client.sizes == [sizes], (chunk, client.sizes)
+        assert t.json_text() == serial.json_text(), chunk
+        assert t.csv_text() == serial.csv_text(), chunk
+    # The failing files kept their own rows and messages; their chunk neighbours are ok.
+    assert t[1]["status"] == "error" and "force" in t[1]["message"]
+    assert t[0]["status"] == "ok" and t[2]["status"] == "ok"
+
+
+def test_chunk_size_rule():
+    assert fl.batch.CHUNKS_PER_THREAD == 4
+    assert fl.batch._chunk_size(None, 400, 2) == 50
+    assert fl.batch._chunk_size(None, 401, 2) == 51
+    assert fl.batch._chunk_size(None, 3, 2) == 1  # at least one job per chunk
+    assert fl.batch._chunk_size(None, 10, 0) == 3  # no worker yet: counted as one thread
+    assert fl.batch._chunk_size(7, 3, 2) == 7
+
+
+@pytest.mark.parametrize("bad", [0, -3, 2.5, True, "4", [2]])
+def test_bad_chunk_values_are_refused_before_any_work(fleet, bad):
+    folder, _ = fleet
+    message = re.escape(f"chunk = {bad!r}: expected None") + ".* or a whole number >= 1 of jobs per chunk"
+    with pytest.raises(ValueError, match=message):
+        fl.batch.identify(folder, "sweep", client=None, chunk=bad)
+    # Before the cluster is started or the data looked at.
+    with pytest.raises(ValueError, match=message):
+        fl.batch.identify("no/such/folder/*.csv", "sweep", client="local", chunk=bad)
+    with pytest.raises(ValueError, match=message):
+        fl.batch.simulate(make=_monte_carlo_scenario, seeds=range(3), client=None, chunk=bad)
+
+
+def test_simulate_chunks_give_the_serial_rows(example, two_workers):
+    scenarios = [{"plant": {"type": "axis", "M": 1.0}, "friction": {"law": "coulomb", "Fc": 0.5 + 0.1 * k},
+                  "input": {"type": "ramp", "rate": 1.0}, "duration": 2.0, "output_rate": 50} for k in range(7)]
+    scenarios[4] = {"plant": {"type": "nope"}}  # fails in the middle of the second chunk of 3
+    serial = fl.batch.simulate(scenarios, client=None)
+    mc_serial = fl.batch.simulate(make=_monte_carlo_scenario, seeds=range(7), client=None)
+    for chunk, sizes in ((3, [3, 3, 1]), (None, [1] * 7)):
+        client = _RecordingClient(two_workers)
+        t = fl.batch.simulate(scenarios, client=client, chunk=chunk)
+        assert t.json_text() == serial.json_text(), chunk
+        mc = fl.batch.simulate(make=_monte_carlo_scenario, seeds=range(7), client=client, chunk=chunk)
+        assert mc.json_text() == mc_serial.json_text(), chunk
+        assert client.sizes == [sizes, sizes], (chunk, client.sizes)
+    assert [r["status"] for r in t] == ["ok"] * 4 + ["error"] + ["ok"] * 2
+    assert t[4]["scenario"] == "#4" and "nope" in t[4]["message"]
+    # A Coulomb level Fc under a 1 N/s ramp breaks away at t = Fc (< 2 s): once per run.
+    assert [r["breakaways"] for r in t if r["status"] == "ok"] == [1] * 6
 
 
 def test_table_files_and_structured_array(serial, tmp_path):
