@@ -24,7 +24,7 @@ The rows do not depend on where they ran: each item is computed by the same func
 
 How the items are sent (``chunk``): Dask costs a few ms per task (scheduling, pickling, the
 round trip), more than one file's sweep fit (~2 ms), so the items go in chunks of consecutive
-items, one task each, run one after another on the worker:
+items, one task each, run one after another on the worker (``client=None``: checked, then unused):
   None (default)     automatic: about CHUNKS_PER_THREAD (4) chunks per worker thread of the
                      client (``sum(client.nthreads().values())`` when the call starts; a client
                      with no worker yet counts as one thread), at least 1 item per chunk: 400
