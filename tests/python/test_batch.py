@@ -174,6 +174,24 @@ def test_chunks_give_the_serial_rows_in_order(fleet, two_workers):
     assert t[0]["status"] == "ok" and t[2]["status"] == "ok"
 
 
+def _fails_on_odd_index(job):
+    """A row function that raises (as an internal error would) for odd indices."""
+    if job["head"]["index"] % 2:
+        raise RuntimeError("boom")
+    return {**job["head"], "status": "ok", "message": ""}
+
+
+def test_a_chunk_that_raises_gives_each_of_its_jobs_an_error_row(two_workers):
+    jobs = [{"head": {"index": i, "file": f"f{i}.csv"}} for i in range(5)]
+    rows = fl.batch._run_on(two_workers, _fails_on_odd_index, jobs, 2)
+    assert [r["file"] for r in rows] == [f"f{i}.csv" for i in range(5)]
+    for r in rows[:4]:
+        lo = 2 * (r["index"] // 2)
+        assert r["status"] == "error", r
+        assert r["message"] == f"worker failed on this job's chunk (2 jobs, index {lo} to {lo + 1}): RuntimeError: boom"
+    assert rows[4] == {"index": 4, "file": "f4.csv", "status": "ok", "message": ""}
+
+
 def test_chunk_size_rule():
     assert fl.batch.CHUNKS_PER_THREAD == 4
     assert fl.batch._chunk_size(None, 400, 2) == 50
