@@ -14,6 +14,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "error_message.hpp"
@@ -493,4 +494,35 @@ TEST(Columns, FiniteColumnNamesRowAndColumn) {
   fl::Dataset bad = data;
   bad.column("v")(1) = std::nan("");
   EXPECT_TRUE(contains(error_of([&] { fl::finite_column(bad, "v"); }), "line 3, column 'v': value is not a finite number"));
+}
+
+// The structure walk and the stream check run outside matio's lock, each thread with its own
+// buffers: files read on several threads at once give what one thread gives, and a damaged file
+// read between them is still refused with its own message.
+TEST(MatThreads, ReadsOnSeveralThreadsAgreeWithOne) {
+  TempDir d;
+  const EmpsQm e = emps_qm();
+  const std::string cut = d.file("cut.mat", with_element_data(e.bytes, 4, e.stream.substr(0, e.stream.size() / 2)));
+  const std::string pulses = std::string(FRICTIONLAB_DATA_DIR) + "/emps/DATA_EMPS_PULSES.mat";
+  const fl::Dataset one = fl::read_mat(kEmps), other = fl::read_mat(pulses);
+  const std::string refused = error_of([&] { fl::read_mat(cut); });
+  constexpr int kThreads = 4, kReads = 3;
+  std::vector<std::string> problems(kThreads);
+  std::vector<std::thread> threads;
+  for (int k = 0; k < kThreads; ++k) {
+    threads.emplace_back([&, k] {
+      std::string& problem = problems[static_cast<std::size_t>(k)];
+      for (int r = 0; r < kReads && problem.empty(); ++r) {
+        const fl::Dataset a = fl::read_mat(k % 2 ? pulses : kEmps);
+        const fl::Dataset& expected = k % 2 ? other : one;
+        if (a.sha256 != expected.sha256 || a.column("qm") != expected.column("qm") || a.column("vir") != expected.column("vir"))
+          problem = "thread " + std::to_string(k) + " read other values";
+        if (const std::string msg = error_of([&] { fl::read_mat(cut); }); msg != refused)
+          problem = "thread " + std::to_string(k) + ": " + msg;
+      }
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  for (const std::string& problem : problems) EXPECT_EQ(problem, "");
+  EXPECT_TRUE(contains(refused, "(truncated)")) << refused;
 }
