@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libceres-dev libsundials-dev libcli11-dev nlohmann-json3-dev
-  libyaml-cpp-dev libmatio-dev zlib1g-dev libssl-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libyaml-cpp-dev libmatio-dev zlib1g-dev libdeflate-dev libssl-dev libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-scipy python3-pytest
   python3-distributed  # frictionlab.batch on Dask (a LocalCluster or any Client); optional at import
   python3-venv python3-pip python3-setuptools python3-wheel gnuplot-nox

@@ -1,5 +1,6 @@
 #include "frictionlab/io/mat.hpp"
 
+#include <libdeflate.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include "frictionlab/format.hpp"
 #include "frictionlab/io/sha256.hpp"
 #include "matio_library.hpp"
+#include "../signal/scratch.hpp"
 #include "../simulate/column_pool.hpp"
 
 namespace frictionlab {
@@ -125,6 +127,10 @@ Eigen::VectorXd numeric_values(const matvar_t& v) {
 
 using U32Reader = std::function<std::uint32_t(const unsigned char*)>;
 
+// Bytes a compressed variable's element may hold after its zlib stream's end (alignment padding);
+// more means the stream was cut short by damage.
+constexpr std::size_t kMaxStreamPadding = 7;
+
 // One subelement of a v5 variable's header as its tag declares it: data type, byte count, where
 // its data start, where the next tag starts.
 struct V5Subelement {
@@ -217,12 +223,12 @@ std::vector<unsigned char> inflate_head(const std::vector<unsigned char>& in, st
   return out;
 }
 
-// Inflates a compressed v5 variable to its end: the zlib stream must end where the element
-// does, with a matching adler32 checksum (matio 1.5.23 reads a stream with flipped bytes without
-// a word). Returns "" when it does, else what is wrong; `name` gets the variable's name when
-// the start of the stream can be read.
-std::string check_compressed(const std::vector<unsigned char>& in, const U32Reader& u32,
-                             std::string& name) {
+// Inflates a compressed v5 variable to its end with zlib: the zlib stream must end where the
+// element does, with a matching adler32 checksum (matio 1.5.23 reads a stream with flipped bytes
+// without a word). Returns "" when it does, else what is wrong; `name` gets the variable's name
+// when the start of the stream can be read. The slow path of check_compressed: it tells how a
+// stream is damaged (truncated, corrupt with zlib's own reason, trailing bytes).
+std::string diagnose_compressed(const std::vector<unsigned char>& in, const U32Reader& u32, std::string& name) {
   z_stream z{};
   if (inflateInit(&z) != Z_OK) return "zlib cannot start";
   std::vector<unsigned char> head;  // the first bytes inflated: the variable's header
@@ -243,49 +249,102 @@ std::string check_compressed(const std::vector<unsigned char>& in, const U32Read
   inflateEnd(&z);
   name = v5_variable_name(head.data(), head.size(), u32);
   // A stream that ends well short of its element (more than alignment padding) was cut by damage.
-  if (rc == Z_STREAM_END && z_left > 7) return "its zlib stream ends " + std::to_string(z_left) + " bytes before its data does (corrupt)";
+  if (rc == Z_STREAM_END && z_left > kMaxStreamPadding) return "its zlib stream ends " + std::to_string(z_left) + " bytes before its data does (corrupt)";
   if (rc == Z_STREAM_END) return "";
   if (rc == Z_DATA_ERROR) return "its compressed data is corrupt (zlib: " + (zmsg.empty() ? std::string("data error") : zmsg) + ")";
   if (rc == Z_BUF_ERROR || rc == Z_OK) return "its compressed data ends before the zlib stream does (truncated)";
   return "its compressed data cannot be inflated (zlib error " + std::to_string(rc) + (zmsg.empty() ? "" : ": " + zmsg) + ")";
 }
 
+struct DecompressorFreer {
+  void operator()(libdeflate_decompressor* d) const { libdeflate_free_decompressor(d); }
+};
+using Decompressor = std::unique_ptr<libdeflate_decompressor, DecompressorFreer>;
+
+// Checks a compressed v5 variable's zlib stream as diagnose_compressed does, and returns the
+// same. The common case, a sound stream, is decided by libdeflate in one whole-buffer call into
+// `out` (`out_bytes` long: the inflated size the variable's miMATRIX tag declares): it verifies
+// the adler32 checksum and reports how many input bytes the stream took, at about twice zlib's
+// speed. libdeflate tells only "bad data", not whether the stream is truncated or corrupt (nor
+// zlib's reason), so any stream it does not accept as sound (also one that inflates to more than
+// its tag declares, which zlib accepts) is handed to diagnose_compressed, whose verdict and
+// message are the reader's. A stream both accept is the same bytes to both (the checksum).
+std::string check_compressed(libdeflate_decompressor* decompressor, const std::vector<unsigned char>& in,
+                             unsigned char* out, std::size_t out_bytes, const U32Reader& u32, std::string& name) {
+  std::size_t in_used = 0, out_used = 0;
+  if (decompressor != nullptr &&
+      libdeflate_zlib_decompress_ex(decompressor, in.data(), in.size(), out, out_bytes, &in_used, &out_used) == LIBDEFLATE_SUCCESS &&
+      in.size() - in_used <= kMaxStreamPadding) {
+    name = v5_variable_name(out, out_used, u32);
+    return "";
+  }
+  return diagnose_compressed(in, u32, name);
+}
+
+// A compressed variable found by walk_v5: its number among the file's data elements, where its
+// element starts, its compressed bytes and the inflated size its miMATRIX tag declares (bounded
+// by zlib's largest ratio; 0 when the stream's first 8 bytes cannot be inflated).
+struct V5Compressed {
+  int variable = 0;
+  std::size_t at = 0, bytes = 0, inflated = 0;
+};
+
+// What walk_v5 found: a problem of the file's structure ("" when none), whether it is a
+// little-endian v5 file, and its compressed variables.
+struct V5Walk {
+  std::string problem;
+  bool little_endian = true;
+  std::vector<V5Compressed> compressed;
+};
+
+// A walk that found `problem` (and lists nothing).
+V5Walk refused(std::string problem) {
+  V5Walk walk;
+  walk.problem = std::move(problem);
+  return walk;
+}
+
+// A reader of the file's 4-byte unsigned integers in its byte order.
+U32Reader u32_reader(bool little_endian) {
+  return [little_endian](const unsigned char* p) {
+    return little_endian ? std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24
+                         : std::uint32_t(p[3]) | std::uint32_t(p[2]) << 8 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[0]) << 24;
+  };
+}
+
 // matio (1.5.23) inflates a truncated or corrupt compressed v5 variable without reporting it,
 // so the element structure of a v5 file is walked first: 128-byte header, then data elements
 // each with an 8-byte tag (type, byte count; small elements pack both into 8 bytes). An element
-// reaching past the end of the file means the file is truncated; each compressed element is
-// inflated to its end (check_compressed). v7.3 (HDF5) files are left to HDF5.
-// `inflate` false walks the tags only (cheap, before matio opens the file); true also inflates.
-std::string v5_structure_problem(const std::string& path, bool inflate) {
+// reaching past the end of the file means the file is truncated; each variable's header tags are
+// checked (v5_matrix_header_problem) before matio allocates by them, and the compressed ones are
+// listed for check_v5_streams. v7.3 (HDF5) files are left to HDF5 (nothing listed).
+V5Walk walk_v5(const std::string& path) {
+  V5Walk walk;
   // Only the header and the element tags are read (seeking past each element's data).
   std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return "cannot be opened for reading";
+  if (!in) return refused("cannot be opened for reading");
   const std::size_t size = static_cast<std::size_t>(in.tellg());
-  if (size < 128) return "shorter than the 128-byte MAT-file header";
+  if (size < 128) return refused("shorter than the 128-byte MAT-file header");
   unsigned char header[128];
   in.seekg(0);
   in.read(reinterpret_cast<char*>(header), 128);
   const unsigned char* b = header;
   const bool big_endian_file = b[126] == 'M' && b[127] == 'I';
   const bool little_endian_file = b[126] == 'I' && b[127] == 'M';
-  if (!big_endian_file && !little_endian_file) return "no MAT-file endian indicator";
-  const std::function<std::uint32_t(const unsigned char*)> u32 = [little_endian_file](const unsigned char* p) {
-    return little_endian_file ? std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
-                                    std::uint32_t(p[3]) << 24
-                              : std::uint32_t(p[3]) | std::uint32_t(p[2]) << 8 | std::uint32_t(p[1]) << 16 |
-                                    std::uint32_t(p[0]) << 24;
-  };
+  if (!big_endian_file && !little_endian_file) return refused("no MAT-file endian indicator");
+  walk.little_endian = little_endian_file;
+  const U32Reader u32 = u32_reader(little_endian_file);
   const std::uint32_t version = little_endian_file ? (std::uint32_t(b[125]) << 8 | b[124]) : (std::uint32_t(b[124]) << 8 | b[125]);
-  if (version != 0x0100) return "";  // v7.3: HDF5 checks its own structure
+  if (version != 0x0100) return walk;  // v7.3: HDF5 checks its own structure
   constexpr std::uint32_t kMiCompressed = 15, kMiMatrix = 14;
   std::size_t at = 128;
   unsigned char tag[8];
   int variable = 0;
   std::vector<unsigned char> element;
   while (at < size) {
-    if (at + 8 > size) return "truncated: a data element tag at byte " + std::to_string(at) + " is cut off";
+    if (at + 8 > size) return refused("truncated: a data element tag at byte " + std::to_string(at) + " is cut off");
     in.seekg(static_cast<std::streamoff>(at));
-    if (!in.read(reinterpret_cast<char*>(tag), 8)) return "read error at byte " + std::to_string(at);
+    if (!in.read(reinterpret_cast<char*>(tag), 8)) return refused("read error at byte " + std::to_string(at));
     const std::uint32_t type = u32(tag);
     if ((type >> 16) != 0) {  // small data element: 4 bytes of tag, up to 4 of data
       at += 8;
@@ -295,42 +354,62 @@ std::string v5_structure_problem(const std::string& path, bool inflate) {
     std::size_t n = bytes;
     if (type != kMiCompressed && n % 8 != 0) n += 8 - n % 8;
     if (at + 8 + bytes > size) {
-      return "truncated: the data element at byte " + std::to_string(at) + " needs " + std::to_string(bytes) +
-             " bytes but the file has " + std::to_string(size) + " in all";
+      return refused("truncated: the data element at byte " + std::to_string(at) + " needs " + std::to_string(bytes) +
+                    " bytes but the file has " + std::to_string(size) + " in all");
     }
     ++variable;
-    if (!inflate && (type == kMiMatrix || type == kMiCompressed)) {
+    if (type == kMiMatrix || type == kMiCompressed) {
       // The variable's header tags, before matio allocates by them (v5_matrix_header_problem).
       element.resize(std::min<std::size_t>(bytes, type == kMiCompressed ? bytes : 504));
       if (!in.read(reinterpret_cast<char*>(element.data()), static_cast<std::streamsize>(element.size())))
-        return "read error at byte " + std::to_string(at + 8);
+        return refused("read error at byte " + std::to_string(at + 8));
       std::vector<unsigned char> head;
       std::size_t declared = bytes;
       if (type == kMiCompressed) {
         head = inflate_head(element, 512);
         // zlib inflates at most 1032 to 1: a larger declared size is damage too.
         declared = head.size() >= 8 ? std::min<std::size_t>(u32(head.data() + 4), 1032 * std::size_t{bytes}) : 0;
+        walk.compressed.push_back({variable, at, bytes, head.size() >= 8 ? 8 + declared : 0});
       } else {
         head.resize(8 + element.size());
         std::copy(tag, tag + 8, head.begin());
         std::copy(element.begin(), element.end(), head.begin() + 8);
       }
       if (const std::string problem = v5_matrix_header_problem(head.data(), head.size(), declared, u32); !problem.empty())
-        return "variable " + std::to_string(variable) + " at byte " + std::to_string(at) + ": " + problem;
-    }
-    if (inflate && type == kMiCompressed) {
-      element.resize(bytes);
-      if (!in.read(reinterpret_cast<char*>(element.data()), static_cast<std::streamsize>(bytes)))
-        return "read error at byte " + std::to_string(at + 8);
-      std::string name;
-      if (const std::string problem = check_compressed(element, u32, name); !problem.empty()) {
-        const std::string which = name.empty() ? "variable " + std::to_string(variable) + " (its name is unreadable)"
-                                               : "variable '" + name + "'";
-        return which + ", compressed at byte " + std::to_string(at) + ": " + problem +
-               "; the file is damaged (refused rather than read with wrong values)";
-      }
+        return refused("variable " + std::to_string(variable) + " at byte " + std::to_string(at) + ": " + problem);
     }
     at += 8 + n;
+  }
+  return walk;
+}
+
+// Inflates each compressed variable walk_v5 listed to its end (check_compressed): the first
+// damaged one's problem, or "". The inflated bytes go to one buffer from the thread's scratch
+// (signal/scratch.hpp), as long as the largest variable's declared size, reused for each.
+std::string check_v5_streams(const std::string& path, const V5Walk& walk) {
+  if (walk.compressed.empty()) return "";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "cannot be opened for reading";
+  const U32Reader u32 = u32_reader(walk.little_endian);
+  std::size_t largest = 0;
+  for (const V5Compressed& c : walk.compressed) largest = std::max(largest, c.inflated);
+  detail::ScratchFrame frame;
+  const auto doubles = static_cast<Eigen::Index>((largest + sizeof(double) - 1) / sizeof(double));
+  unsigned char* const out = reinterpret_cast<unsigned char*>(frame.get(std::max<Eigen::Index>(doubles, 1)).data());
+  const Decompressor decompressor(libdeflate_alloc_decompressor());  // null when out of memory: zlib checks alone
+  std::vector<unsigned char> element;
+  for (const V5Compressed& c : walk.compressed) {
+    element.resize(c.bytes);
+    in.seekg(static_cast<std::streamoff>(c.at + 8));
+    if (!in.read(reinterpret_cast<char*>(element.data()), static_cast<std::streamsize>(c.bytes)))
+      return "read error at byte " + std::to_string(c.at + 8);
+    std::string name;
+    if (const std::string problem = check_compressed(decompressor.get(), element, out, c.inflated, u32, name); !problem.empty()) {
+      const std::string which = name.empty() ? "variable " + std::to_string(c.variable) + " (its name is unreadable)"
+                                             : "variable '" + name + "'";
+      return which + ", compressed at byte " + std::to_string(c.at) + ": " + problem +
+             "; the file is damaged (refused rather than read with wrong values)";
+    }
   }
   return "";
 }
@@ -347,12 +426,6 @@ Dataset read_mat(const std::string& path) {
   data.file = path;
   data.sha256 = sha256_file(path);
 
-  // matio and the HDF5 library under it (v7.3 files) are not thread-safe (Debian's HDF5 is built
-  // without its thread-safe option): one MAT reader at a time, so that batches (frictionlab
-  // identify DIR --jobs N) may read files from several threads.
-  static std::mutex matio_mutex;
-  const std::lock_guard matio_lock(matio_mutex);
-  detail::matio_library().LogInitFunc("frictionlab", &matio_log);
   g_matio_log.clear();
   const auto fail = [&](const std::string& what) {
     std::string msg = path + ": " + what;
@@ -361,9 +434,21 @@ Dataset read_mat(const std::string& path) {
     throw std::invalid_argument(msg);
   };
 
-  if (const std::string problem = v5_structure_problem(path, false); !problem.empty()) {
-    fail("not a valid MATLAB MAT file: " + problem);
-  }
+  // The v5 structure and every compressed variable's stream are checked before matio opens the
+  // file, without matio's lock (they do not call matio): batches reading on several threads
+  // inflate in parallel. A damaged stream is reported after matio's size check below, so that a
+  // header declaring more than the file holds is reported as that.
+  const V5Walk walk = walk_v5(path);
+  if (!walk.problem.empty()) fail("not a valid MATLAB MAT file: " + walk.problem);
+  const std::string stream_problem = check_v5_streams(path, walk);
+
+  // matio and the HDF5 library under it (v7.3 files) are not thread-safe (Debian's HDF5 is built
+  // without its thread-safe option): one MAT reader at a time, so that batches (frictionlab
+  // identify DIR --jobs N) may read files from several threads.
+  static std::mutex matio_mutex;
+  const std::lock_guard matio_lock(matio_mutex);
+  detail::matio_library().LogInitFunc("frictionlab", &matio_log);
+  g_matio_log.clear();
   MatPtr mat(detail::matio_library().Open(path.c_str(), MAT_ACC_RDONLY));
   if (!mat) fail("not a MATLAB MAT file (v5 or v7.3) or corrupt; expected a file saved by MATLAB's save");
 
@@ -394,11 +479,7 @@ Dataset read_mat(const std::string& path) {
   }
   detail::matio_library().Rewind(mat.get());
   g_matio_log.clear();
-  // Then every compressed variable's stream to its end: after the size check above, so that a
-  // header declaring more than the file holds is reported as that.
-  if (const std::string problem = v5_structure_problem(path, true); !problem.empty()) {
-    fail("not a valid MATLAB MAT file: " + problem);
-  }
+  if (!stream_problem.empty()) fail("not a valid MATLAB MAT file: " + stream_problem);
 
   // One pass over the variables, each read in full and checked by variable_problem.
   std::vector<std::string> names;

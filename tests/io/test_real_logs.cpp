@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 #include <matio.h>
+#include <zlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -12,9 +14,11 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "error_message.hpp"
+#include "property_cases.hpp"
 #include "temp_dir.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/io/csv.hpp"
@@ -292,6 +296,108 @@ TEST(MatDamage, FlippedBytesInACompressedVariableAreRefusedNamingIt) {
 
 namespace {
 
+// `bytes` (a little-endian v5 file) with element `k`'s data replaced by `data` and its tag's byte
+// count set to match.
+std::string with_element_data(const std::string& bytes, std::size_t k, const std::string& data) {
+  const auto [at, size] = v5_elements(bytes)[k];
+  std::string tag = bytes.substr(at, 8);
+  for (int i = 0; i < 4; ++i) tag[4 + static_cast<std::size_t>(i)] = static_cast<char>(data.size() >> (8 * i) & 0xff);
+  return bytes.substr(0, at) + tag + data + bytes.substr(at + 8 + size);
+}
+
+// The zlib stream of the EMPS file's compressed variable qm (element 4), and the file's bytes.
+struct EmpsQm {
+  std::string bytes, stream;
+  std::size_t at = 0;
+};
+
+EmpsQm emps_qm() {
+  EmpsQm e;
+  e.bytes = read_bytes(kEmps);
+  const auto elements = v5_elements(e.bytes);
+  EXPECT_EQ(elements.size(), 7u);  // gtau, kp, kv, qg, qm, t, vir, each compressed
+  e.at = elements.at(4).first;
+  e.stream = e.bytes.substr(e.at + 8, elements.at(4).second);
+  return e;
+}
+
+}  // namespace
+
+// The reader checks a sound stream with libdeflate and has zlib say how a damaged one is damaged:
+// a stream cut short, one followed by more than padding, and one whose data inflate to more than
+// the variable's tag declares are each told as zlib tells them.
+TEST(MatDamage, CutLongAndPaddedStreamsAreToldApart) {
+  TempDir d;
+  const EmpsQm e = emps_qm();
+  const Eigen::VectorXd qm = fl::read_mat(kEmps).column("qm");
+
+  // The element holds only the first half of the stream: truncated, not corrupt.
+  const std::string cut = d.file("cut.mat", with_element_data(e.bytes, 4, e.stream.substr(0, e.stream.size() / 2)));
+  const std::string msg = error_of([&] { fl::read_mat(cut); });
+  EXPECT_TRUE(contains(msg, cut + ": not a valid MATLAB MAT file: variable 'qm', compressed at byte " + std::to_string(e.at) +
+                                ": its compressed data ends before the zlib stream does (truncated); the file is damaged")) << msg;
+
+  // 16 bytes after the stream's end, inside the element: more than alignment padding.
+  const std::string tail = d.file("tail.mat", with_element_data(e.bytes, 4, e.stream + std::string(16, '\0')));
+  const std::string msg2 = error_of([&] { fl::read_mat(tail); });
+  EXPECT_TRUE(contains(msg2, "variable 'qm', compressed at byte " + std::to_string(e.at) +
+                                 ": its zlib stream ends 16 bytes before its data does (corrupt)")) << msg2;
+
+  // 7 bytes are padding: read, with the same values.
+  const fl::Dataset padded = fl::read_mat(d.file("padded.mat", with_element_data(e.bytes, 4, e.stream + std::string(7, '\0'))));
+  EXPECT_EQ(padded.column("qm"), qm);
+
+  // The stream inflates to 16 bytes more than qm's tag declares (its element is whole before
+  // them): zlib accepts that, and so does the reader, with the same values.
+  std::string inflated(8 + 200000, '\0');
+  uLongf inflated_size = static_cast<uLongf>(inflated.size());
+  ASSERT_EQ(uncompress(reinterpret_cast<Bytef*>(inflated.data()), &inflated_size,
+                       reinterpret_cast<const Bytef*>(e.stream.data()), static_cast<uLong>(e.stream.size())), Z_OK);
+  inflated.resize(inflated_size);
+  inflated += std::string(16, '\0');
+  std::string longer(compressBound(static_cast<uLong>(inflated.size())), '\0');
+  uLongf longer_size = static_cast<uLongf>(longer.size());
+  ASSERT_EQ(compress2(reinterpret_cast<Bytef*>(longer.data()), &longer_size, reinterpret_cast<const Bytef*>(inflated.data()),
+                      static_cast<uLong>(inflated.size()), Z_BEST_SPEED), Z_OK);
+  longer.resize(longer_size);
+  EXPECT_EQ(fl::read_mat(d.file("longer.mat", with_element_data(e.bytes, 4, longer))).column("qm"), qm);
+}
+
+// Seeded damage to one compressed variable's deflate data (1 to 3 bytes changed anywhere between
+// the zlib header and the last data byte, whose unused bits may not matter; or the stream cut at a
+// random length): every damaged file is refused, naming the variable's element, never read.
+TEST(MatDamage, RandomDamageToAStreamIsAlwaysRefused) {
+  TempDir d;
+  const EmpsQm e = emps_qm();
+  // A file of qm alone (the 128-byte header and qm's element): each case reads one variable.
+  const std::string alone = e.bytes.substr(0, 128) + e.bytes.substr(e.at, 8 + e.stream.size());
+  constexpr std::size_t kQmAt = 128;
+  ASSERT_EQ(fl::read_mat(d.file("alone.mat", alone)).rows(), 24841);
+  std::mt19937 rng(13);
+  std::uniform_int_distribution<std::size_t> where(2, e.stream.size() - 6), how_many(1, 3), length(0, e.stream.size() - 1);
+  std::uniform_int_distribution<int> change(1, 255);
+  const int cases = std::max(1, frictionlab::testing::property_cases() / 5);  // each case reads a file: a fifth
+  int truncated = 0;
+  for (int c = 0; c < cases; ++c) {
+    std::string stream = e.stream;
+    if (c % 4 == 3) {
+      stream.resize(length(rng));
+    } else {
+      for (std::size_t k = how_many(rng); k > 0; --k) stream[where(rng)] ^= static_cast<char>(change(rng));
+    }
+    const std::string path = d.file("damaged.mat", with_element_data(alone, 0, stream));
+    const std::string msg = error_of([&] { fl::read_mat(path); });
+    const bool named = contains(msg, "compressed at byte " + std::to_string(kQmAt) + ": ") ||  // the stream check
+                       contains(msg, "variable 1 at byte " + std::to_string(kQmAt) + ": ") ||  // its header tags
+                       contains(msg, "variable 'qm' declares");                                // its dimensions
+    ASSERT_TRUE(named && (contains(msg, "corrupt") || contains(msg, "truncated"))) << "case " << c << ": " << msg;
+    truncated += contains(msg, "(truncated)");
+  }
+  EXPECT_GT(truncated, 0);  // the cut streams are told apart from the corrupt ones
+}
+
+namespace {
+
 constexpr std::size_t kN = 20;
 
 // Writes a MAT v5 file (compressed) with good columns t, qm and one variable of each wrong
@@ -388,4 +494,35 @@ TEST(Columns, FiniteColumnNamesRowAndColumn) {
   fl::Dataset bad = data;
   bad.column("v")(1) = std::nan("");
   EXPECT_TRUE(contains(error_of([&] { fl::finite_column(bad, "v"); }), "line 3, column 'v': value is not a finite number"));
+}
+
+// The structure walk and the stream check run outside matio's lock, each thread with its own
+// buffers: files read on several threads at once give what one thread gives, and a damaged file
+// read between them is still refused with its own message.
+TEST(MatThreads, ReadsOnSeveralThreadsAgreeWithOne) {
+  TempDir d;
+  const EmpsQm e = emps_qm();
+  const std::string cut = d.file("cut.mat", with_element_data(e.bytes, 4, e.stream.substr(0, e.stream.size() / 2)));
+  const std::string pulses = std::string(FRICTIONLAB_DATA_DIR) + "/emps/DATA_EMPS_PULSES.mat";
+  const fl::Dataset one = fl::read_mat(kEmps), other = fl::read_mat(pulses);
+  const std::string refused = error_of([&] { fl::read_mat(cut); });
+  constexpr int kThreads = 4, kReads = 3;
+  std::vector<std::string> problems(kThreads);
+  std::vector<std::thread> threads;
+  for (int k = 0; k < kThreads; ++k) {
+    threads.emplace_back([&, k] {
+      std::string& problem = problems[static_cast<std::size_t>(k)];
+      for (int r = 0; r < kReads && problem.empty(); ++r) {
+        const fl::Dataset a = fl::read_mat(k % 2 ? pulses : kEmps);
+        const fl::Dataset& expected = k % 2 ? other : one;
+        if (a.sha256 != expected.sha256 || a.column("qm") != expected.column("qm") || a.column("vir") != expected.column("vir"))
+          problem = "thread " + std::to_string(k) + " read other values";
+        if (const std::string msg = error_of([&] { fl::read_mat(cut); }); msg != refused)
+          problem = "thread " + std::to_string(k) + ": " + msg;
+      }
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  for (const std::string& problem : problems) EXPECT_EQ(problem, "");
+  EXPECT_TRUE(contains(refused, "(truncated)")) << refused;
 }
