@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,7 @@
 #include "frictionlab/signal/decimate.hpp"
 #include "frictionlab/signal/differentiate.hpp"
 #include "frictionlab/signal/filtfilt.hpp"
+#include "signal/recursive_kernels.hpp"
 
 namespace fl = frictionlab;
 
@@ -41,6 +43,49 @@ Eigen::VectorXd vec(std::initializer_list<double> v) {
 }
 
 std::string ref_path(const std::string& name) { return std::string(FRICTIONLAB_SOURCE_DIR) + "/tests/signal/" + name; }
+
+// The textbook direct form II transposed (scipy's lfilter loop: one sample at a time, a multiply
+// and an add per term), what the library's kernels must equal up to rounding.
+Eigen::VectorXd textbook_lfilter(const fl::TransferFunction& tf, const Eigen::VectorXd& x, Eigen::VectorXd z) {
+  const Eigen::VectorXd b = tf.b / tf.a(0), a = tf.a / tf.a(0);
+  const Eigen::Index k = a.size() - 1;
+  Eigen::VectorXd y(x.size());
+  for (Eigen::Index n = 0; n < x.size(); ++n) {
+    y(n) = z(0) + b(0) * x(n);
+    for (Eigen::Index i = 0; i + 1 < k; ++i) z(i) = z(i + 1) + x(n) * b(i + 1) - y(n) * a(i + 1);
+    z(k - 1) = x(n) * b(k) - y(n) * a(k);
+  }
+  return y;
+}
+
+// scipy's filtfilt from the textbook loop: odd padding, forward from lfilter_zi times the first
+// sample, backward from lfilter_zi times the last output.
+Eigen::VectorXd textbook_filtfilt(const fl::TransferFunction& tf, const Eigen::VectorXd& x) {
+  const Eigen::Index pad = 3 * tf.a.size(), n = x.size();
+  Eigen::VectorXd e(n + 2 * pad);
+  for (Eigen::Index i = 0; i < pad; ++i) {
+    e(i) = 2 * x(0) - x(pad - i);
+    e(pad + n + i) = 2 * x(n - 1) - x(n - 2 - i);
+  }
+  e.segment(pad, n) = x;
+  const Eigen::VectorXd zi = fl::lfilter_zi(tf);
+  const Eigen::VectorXd f = textbook_lfilter(tf, e, zi * e(0));
+  const Eigen::VectorXd r = f.reverse();
+  return textbook_lfilter(tf, r, zi * r(0)).reverse().segment(pad, n);
+}
+
+// A record like a position log: a slow sine, a seeded random walk and noise.
+Eigen::VectorXd wandering(Eigen::Index n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> step(0.0, 0.01), noise(0.0, 0.002);
+  Eigen::VectorXd x(n);
+  double walk = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    walk += step(rng);
+    x(i) = std::sin(0.002 * static_cast<double>(i)) + walk + noise(rng);
+  }
+  return x;
+}
 
 }  // namespace
 
@@ -228,4 +273,46 @@ TEST(Gradient, ExactOnAQuadraticInside) {
   const Eigen::VectorXd d = fl::gradient(x, dt);
   constexpr double kTol = 1e-12;  // rounding of differences of values <= 1
   for (Eigen::Index i = 1; i < 19; ++i) EXPECT_NEAR(d(i), 6.0 * i * dt, kTol);
+}
+
+// Long records: on a CPU with AVX2 and FMA the recursion runs fused multiply-adds, and a single
+// channel runs as four blocks at once whose initial states are added back over the samples the
+// filter takes to forget a state (src/signal/recursive_kernels.hpp). Either way the result must
+// be the textbook recursion's up to rounding, at lengths around the blocks' threshold (4096),
+// with a tail of 1 to 3 samples past four whole blocks, forward and backward, and for a filter
+// whose memory is too long for blocks (order 2 at 0.002: it declines and runs serially). The
+// filters are ones a transfer function holds well: at higher orders and lower cut-offs the
+// direct form amplifies any change of rounding (order 6 at 0.05, or order 4 at 0.0005, differ by
+// 1e-10 between two correct loops), which is why the pipelines use order 4 at 0.2.
+TEST(Filtfilt, LongRecordsEqualTheTextbookRecursion) {
+  struct Case {
+    int order;
+    double wn;
+  };
+  for (const Case c : {Case{2, 0.3}, Case{4, 0.2}, Case{4, 0.05}, Case{3, 0.1}, Case{2, 0.002}}) {
+    const fl::TransferFunction tf = fl::butter(c.order, c.wn);
+    for (const Eigen::Index n : {Eigen::Index{4095}, Eigen::Index{4096}, Eigen::Index{4099}, Eigen::Index{30001}}) {
+      const Eigen::VectorXd x = wandering(n, static_cast<unsigned>(c.order * 100000 + n));
+      const Eigen::VectorXd zi = fl::lfilter_zi(tf) * x(0);
+      const std::string what = "order " + std::to_string(c.order) + ", wn " + std::to_string(c.wn) + ", n " + std::to_string(n);
+      expect_close(fl::lfilter(tf, x, zi), textbook_lfilter(tf, x, zi), kSeriesRelTol, "lfilter, " + what);
+      expect_close(fl::filtfilt(tf, x), textbook_filtfilt(tf, x), kSeriesRelTol, "filtfilt, " + what);
+    }
+  }
+}
+
+// The four-block kernel runs where it should (a record of 30001 samples through a filter that
+// forgets in a few hundred) and declines where it must (fewer than 4096 samples; a filter whose
+// memory exceeds an eighth of the record), so the test above covers both paths.
+TEST(Filtfilt, FourBlockKernelRunsOnLongRecordsOfShortMemoryFilters) {
+  if (!fl::detail::fma_filters_available()) GTEST_SKIP() << "this CPU lacks AVX2 or FMA: the portable loops run";
+  const auto attempt = [](const fl::TransferFunction& tf, Eigen::Index n) {
+    const Eigen::VectorXd b = tf.b / tf.a(0), a = tf.a / tf.a(0);
+    Eigen::VectorXd x = wandering(n, 7), z = Eigen::VectorXd::Zero(a.size() - 1);
+    return fl::detail::lfilter_blocks_fma(b.data(), a.data(), static_cast<int>(a.size() - 1), z.data(), x.data(), n, 1);
+  };
+  EXPECT_TRUE(attempt(fl::butter(4, 0.2), 30001));
+  EXPECT_TRUE(attempt(fl::butter(4, 0.2), 4096));
+  EXPECT_FALSE(attempt(fl::butter(4, 0.2), 4095));
+  EXPECT_FALSE(attempt(fl::butter(2, 0.002), 30001));
 }
