@@ -39,15 +39,18 @@ std::optional<double> kth_bracketed(double* x, Eigen::Index n, Eigen::Index k, d
     return *it;
   };
   const double lo = at(r - kMargin), hi = at(r + kMargin);
-  Eigen::Index below = 0, kept = 0;  // a NaN counts in neither: the value returned is then some step
+  // Counted first (a loop the compiler vectorises); the values between are gathered only when
+  // the pivots differ. A NaN counts in neither: the value returned is then some step.
+  const Eigen::Map<const Eigen::ArrayXd> a(x, n);
+  const Eigen::Index below = (a < lo).count(), between = (a >= lo && a <= hi).count();
+  if (k < below || k >= below + between) return std::nullopt;
+  if (lo == hi) return lo;
+  Eigen::Index kept = 0;
   for (Eigen::Index i = 0; i < n; ++i) {
     const double v = x[i];
-    below += v < lo;
     work[kept] = v;
     kept += (v >= lo) & (v <= hi);
   }
-  if (k < below || k >= below + kept) return std::nullopt;
-  if (lo == hi) return lo;
   std::nth_element(work, work + (k - below), work + kept);
   return work[k - below];
 }

@@ -316,3 +316,73 @@ TEST(Filtfilt, FourBlockKernelRunsOnLongRecordsOfShortMemoryFilters) {
   EXPECT_FALSE(attempt(fl::butter(4, 0.2), 4095));
   EXPECT_FALSE(attempt(fl::butter(2, 0.002), 30001));
 }
+
+namespace {
+
+// scipy's sosfiltfilt from textbook loops: each section a direct form II transposed, a multiply
+// and an add per term; odd padding; sosfilt_zi states times the first (last) sample.
+Eigen::VectorXd textbook_sosfiltfilt(const fl::SecondOrderSections& sos, const Eigen::VectorXd& x) {
+  const Eigen::Index ns = sos.rows(), n = x.size();
+  const Eigen::Index pad = 3 * (2 * ns + 1 - std::min((sos.col(2).array() == 0.0).count(), (sos.col(5).array() == 0.0).count()));
+  Eigen::VectorXd e(n + 2 * pad);
+  for (Eigen::Index i = 0; i < pad; ++i) {
+    e(i) = 2 * x(0) - x(pad - i);
+    e(pad + n + i) = 2 * x(n - 1) - x(n - 2 - i);
+  }
+  e.segment(pad, n) = x;
+  const Eigen::MatrixX2d zi = fl::sosfilt_zi(sos);
+  const auto run = [&](Eigen::VectorXd v) {
+    const Eigen::MatrixX2d z0 = zi * v(0);
+    for (Eigen::Index r = 0; r < ns; ++r) {
+      const Eigen::VectorXd b = sos.row(r).head<3>().transpose() / sos(r, 3), a = sos.row(r).tail<3>().transpose() / sos(r, 3);
+      double z1 = z0(r, 0), z2 = z0(r, 1);
+      for (Eigen::Index i = 0; i < v.size(); ++i) {
+        const double in = v(i), out = b(0) * in + z1;
+        z1 = b(1) * in - a(1) * out + z2;
+        z2 = b(2) * in - a(2) * out;
+        v(i) = out;
+      }
+    }
+    return v;
+  };
+  const Eigen::VectorXd forward = run(e);
+  return run(forward.reverse()).reverse().segment(pad, n);
+}
+
+}  // namespace
+
+// Long records: on a CPU with AVX-512 the decimation filter runs each half of a record in its own
+// four lanes and adds the second half's initial-state response back (recursive_kernels.hpp).
+// Columns must equal the textbook cascade up to rounding, with an even and an odd length, and
+// decimate must keep every q-th of them.
+TEST(Decimate, LongRecordsEqualTheTextbookCascade) {
+  const fl::SecondOrderSections sos = fl::cheby1_sos(8, 0.05, 0.08);
+  for (const Eigen::Index n : {Eigen::Index{20000}, Eigen::Index{20001}}) {
+    Eigen::MatrixXd m(n, 4);
+    for (Eigen::Index c = 0; c < 4; ++c) m.col(c) = wandering(n, static_cast<unsigned>(10 * n + c));
+    const Eigen::MatrixXd f = fl::sosfiltfilt_columns(sos, m);
+    const Eigen::MatrixXd d = fl::decimate_columns(m, 10);
+    for (Eigen::Index c = 0; c < 4; ++c) {
+      const Eigen::VectorXd want = textbook_sosfiltfilt(sos, m.col(c));
+      const std::string what = std::to_string(n) + " samples, column " + std::to_string(c);
+      expect_close(f.col(c), want, kSeriesRelTol, "sosfiltfilt, " + what);
+      Eigen::VectorXd kept(d.rows());
+      for (Eigen::Index i = 0; i < d.rows(); ++i) kept(i) = want(10 * i);
+      expect_close(d.col(c), kept, kSeriesRelTol, "decimate, " + what);
+    }
+  }
+}
+
+// The halves kernel runs on a long record (the test above covers it) and declines below 8192.
+TEST(Decimate, HalvesKernelRunsOnLongRecords) {
+  if (!fl::detail::avx512_filters_available()) GTEST_SKIP() << "this CPU lacks AVX-512: the AVX2 or portable loops run";
+  const fl::SecondOrderSections sos = fl::cheby1_sos(8, 0.05, 0.08);
+  Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> s = sos;
+  for (Eigen::Index r = 0; r < s.rows(); ++r) s.row(r) /= s(r, 3);
+  const auto attempt = [&](Eigen::Index n) {
+    std::vector<double> x(static_cast<std::size_t>(4 * n), 1.0), z(static_cast<std::size_t>(8 * s.rows()), 0.0);
+    return fl::detail::cascade4_halves_avx512(s.data(), static_cast<int>(s.rows()), z.data(), x.data(), n, 1);
+  };
+  EXPECT_TRUE(attempt(20000));
+  EXPECT_FALSE(attempt(8191));
+}
