@@ -38,6 +38,17 @@ void BM_EmpsIdimSolveOnly(benchmark::State& state) {
   state.SetLabel("one file; with the cross-test, target >= 10x faster than scipy (bench/compare)");
 }
 
+// What bench/compare's "EMPS compute" row times: both files in memory, identification and
+// cross-test (filter, differentiate, decimate, solve, on both).
+void BM_EmpsIdimCompute(benchmark::State& state) {
+  const fl::IdimData ident = emps("DATA_EMPS.mat"), pulses = emps("DATA_EMPS_PULSES.mat");
+  for (auto _ : state) {
+    const fl::Result r = fl::identify_idim(ident);
+    benchmark::DoNotOptimize(fl::cross_test(r, pulses).relative_error_percent);
+  }
+  state.SetLabel("target >= 10x faster than scipy (bench/compare)");
+}
+
 // Noisy Stribeck map with the truth of bench/peers/common.py (not the same random stream).
 void BM_StribeckFit(benchmark::State& state) {
   const auto n = static_cast<Eigen::Index>(state.range(0));
@@ -58,4 +69,5 @@ void BM_StribeckFit(benchmark::State& state) {
 
 BENCHMARK(BM_EmpsIdimPipeline)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EmpsIdimSolveOnly)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EmpsIdimCompute)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StribeckFit)->Arg(1000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -32,6 +32,9 @@ void check_signal(const IdimData& d, const Vec& v, const char* name, Eigen::Inde
     throw std::invalid_argument(where(d) + name + " has " + std::to_string(v.size()) + " samples; expected " +
                                 std::to_string(n) + " like time");
   }
+  // The common case in vector instructions (Eigen vectorises the sum; inf * 0 and NaN are
+  // NaN); else the loop finds the sample.
+  if (!std::isnan((v.array() * 0.0).sum())) return;
   for (Eigen::Index k = 0; k < n; ++k) {
     if (!std::isfinite(v(k))) {
       throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": " + name + " = " + detail::format_value(v(k), 6) +
@@ -260,8 +263,14 @@ Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt
   } else {
     views.emplace_back(data.force.data() + options.skip, used);
   }
+  const Eigen::Index builtin_terms = p - static_cast<Eigen::Index>(options.extra_terms.size());  // extras come last
   for (Eigen::Index j = 0; j < p; ++j) {
     const auto& term = reg.terms[static_cast<std::size_t>(j)];
+    // The built-in inertia and viscous columns are qdd and qd themselves: read in place.
+    if (j < builtin_terms && (term.parameter == "M" || term.parameter == "Fv")) {
+      views.emplace_back((term.parameter == "M" ? k.qdd : k.qd).data() + options.skip, used);
+      continue;
+    }
     if (term.fill) {
       auto column = frame.get(n);
       term.fill(k, column);
@@ -278,7 +287,6 @@ Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt
   // The velocity for the friction map: the built-in viscous column is qd itself; without one,
   // qd joins the decimation as one more column.
   Eigen::Index velocity_col = -1;
-  const Eigen::Index builtin_terms = p - static_cast<Eigen::Index>(options.extra_terms.size());
   if (want_velocity_column) {
     for (Eigen::Index j = 0; j < builtin_terms && velocity_col < 0; ++j)
       if (reg.terms[static_cast<std::size_t>(j)].parameter == "Fv") velocity_col = j + 1;
@@ -401,8 +409,9 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
     // terms bend), evaluated on the velocity itself, not on decimated columns.
     constexpr int kSide = 150;
     Vec grid(2 * kSide), zero = Vec::Zero(2 * kSide), curve = Vec::Zero(2 * kSide);
+    const double top = v.cwiseAbs().maxCoeff();
     for (int i = 0; i < kSide; ++i) {
-      const double a = v.cwiseAbs().maxCoeff() * std::pow((i + 1.0) / kSide, 2.0);
+      const double a = top * std::pow((i + 1.0) / kSide, 2.0);
       grid(kSide - 1 - i) = -a;
       grid(kSide + i) = a;
     }

@@ -26,7 +26,9 @@ void gradient(const Eigen::Ref<const Eigen::VectorXd>& x, double dt, Eigen::Ref<
                                 std::to_string(n) + " like the input");
   }
   // numpy.gradient(x, dt): (x[k+1] - x[k-1]) / (2 dt) inside, first differences at the ends.
-  if (n > 2) d.segment(1, n - 2) = (x.segment(2, n - 2) - x.segment(0, n - 2)) / (2.0 * dt);
+  // Times the reciprocal rather than divided (a division costs several multiplies; the two
+  // differ by a rounding, about 1e-16 relative).
+  if (n > 2) d.segment(1, n - 2) = (x.segment(2, n - 2) - x.segment(0, n - 2)) * (0.5 / dt);
   d(0) = (x(1) - x(0)) / dt;
   d(n - 1) = (x(n - 1) - x(n - 2)) / dt;
 }

@@ -1,5 +1,6 @@
 #include "frictionlab/signal/filtfilt.hpp"
 
+#include "recursive_kernels.hpp"
 #include "scratch.hpp"
 
 #include <Eigen/LU>
@@ -11,6 +12,27 @@
 #include <vector>
 
 namespace frictionlab {
+
+namespace detail {
+bool fma_filters_available() {
+#if defined(FRICTIONLAB_FMA_FILTERS)  // recursive_kernels_fma.cpp built with -mavx2 -mfma
+  static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return available;
+#else
+  return false;
+#endif
+}
+
+bool avx512_filters_available() {
+#if defined(FRICTIONLAB_AVX512_FILTERS)  // recursive_kernels_avx512.cpp built with -mavx512f
+  static const bool available = fma_filters_available() && __builtin_cpu_supports("avx512f");
+  return available;
+#else
+  return false;
+#endif
+}
+}  // namespace detail
+
 namespace {
 
 // b and a divided by a(0) and zero-padded to a common length (scipy's lfilter / lfilter_zi).
@@ -66,8 +88,13 @@ void lfilter_in_place(const TransferFunction& tf, double* z, double* x, Eigen::I
   }
 }
 
-// lfilter_in_place with the common orders' states in registers (see above).
+// lfilter_in_place with the common orders' states in registers (see above); on a CPU with AVX2
+// and FMA, the fused multiply-add kernel (recursive_kernels.hpp).
 void lfilter_dispatch(const TransferFunction& tf, double* z, double* x, Eigen::Index count, int step) {
+  const int order = static_cast<int>(tf.a.size() - 1);
+  if (detail::fma_filters_available() && (detail::lfilter_blocks_fma(tf.b.data(), tf.a.data(), order, z, x, count, step) ||
+                                          detail::lfilter_fma(tf.b.data(), tf.a.data(), order, z, x, count, step)))
+    return;
   switch (tf.a.size() - 1) {
     case 2: return lfilter_in_place<2>(tf, z, x, count, step);
     case 4: return lfilter_in_place<4>(tf, z, x, count, step);
@@ -157,6 +184,10 @@ void filtfilt_block(const SectionCoefficients& s, const Eigen::MatrixX2d& zi, co
                     Eigen::Index c0, Eigen::Index padlen, Eigen::Index q, Eigen::MatrixXd& out, double* const data) {
   const Eigen::Index n = x.front().size(), m = n + 2 * padlen, ns = s.rows();
   const int used = static_cast<int>(std::min<Eigen::Index>(W, static_cast<Eigen::Index>(x.size()) - c0));
+  // With AVX2 and FMA: the fused multiply-add kernels, and the forward pass reads the signal
+  // from its columns (`gather`; the padding must hold the first sample the states start from).
+  const bool fma = W == 4 && detail::fma_filters_available() && ns <= 8;
+  const bool gather = fma && used == W && padlen > 0;
   for (int c = used; c < W; ++c) {
     for (Eigen::Index i = 0; i < m; ++i) data[i * W + c] = 0.0;  // an idle lane
   }
@@ -167,7 +198,7 @@ void filtfilt_block(const SectionCoefficients& s, const Eigen::MatrixX2d& zi, co
       b[i * W] = 2.0 * col(0) - col(padlen - i);
       b[(padlen + n + i) * W] = 2.0 * col(n - 1) - col(n - 2 - i);
     }
-    for (Eigen::Index i = 0; i < n; ++i) b[(padlen + i) * W] = col(i);
+    if (!gather) for (Eigen::Index i = 0; i < n; ++i) b[(padlen + i) * W] = col(i);
   }
   std::vector<double> z(static_cast<std::size_t>(2 * ns * W));
   const auto start = [&](const double* sample) {
@@ -178,13 +209,30 @@ void filtfilt_block(const SectionCoefficients& s, const Eigen::MatrixX2d& zi, co
       }
     }
   };
-  const auto run = [&](double* from, int step) {
-    start(from);
-    if (ns == kDecimationSections) cascade<W, kDecimationSections>(s, z.data(), from, m, step);
-    else cascade<W>(s, z.data(), from, m, step);
+  // One pass over count samples from `from` (in place, interleaved).
+  const bool avx512 = fma && detail::avx512_filters_available();
+  const auto pass = [&](double* from, Eigen::Index count, int step) {
+    if (avx512 && detail::cascade4_halves_avx512(s.data(), static_cast<int>(ns), z.data(), from, count, step)) return;
+    if (fma) detail::cascade4_fma(s.data(), static_cast<int>(ns), z.data(), from, count, step);
+    else if (ns == kDecimationSections) cascade<W, kDecimationSections>(s, z.data(), from, count, step);
+    else cascade<W>(s, z.data(), from, count, step);
   };
-  run(data, 1);
-  run(data + (m - 1) * W, -1);
+  if (gather) {
+    // Forward: the padding in place, the signal itself read from its columns and written
+    // interleaved by the filter (one pass over the memory instead of a copy and a pass).
+    start(data);
+    pass(data, padlen, 1);
+    const double* in[4];
+    for (int c = 0; c < W; ++c) in[c] = x[static_cast<std::size_t>(c0 + c)].data();
+    if (!(avx512 && detail::cascade4_gather_halves_avx512(s.data(), static_cast<int>(ns), z.data(), in, n, data + padlen * W)))
+      detail::cascade4_gather_fma(s.data(), static_cast<int>(ns), z.data(), in, n, data + padlen * W);
+    pass(data + (padlen + n) * W, padlen, 1);
+  } else {
+    start(data);
+    pass(data, m, 1);
+  }
+  start(data + (m - 1) * W);
+  pass(data + (m - 1) * W, m, -1);
   for (int c = 0; c < used; ++c) {
     for (Eigen::Index i = 0; i < out.rows(); ++i) out(i, c0 + c) = data[(padlen + i * q) * W + c];
   }
@@ -330,7 +378,12 @@ Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Column
   std::vector<Eigen::Index> where;
   for (Eigen::Index c = 0; c < cols; ++c) {
     const auto& col = x[static_cast<std::size_t>(c)];
-    if ((col.array() == col(0)).all()) {
+    // Constant? A varying column shows it within its first samples; a constant one is checked
+    // to its end in vector instructions (the summed differences from the first sample: a NaN
+    // makes the sum NaN, so the column is filtered).
+    constexpr Eigen::Index kHead = 64;
+    const Eigen::Index head = std::min(kHead, n);
+    if ((col.head(head).array() == col(0)).all() && (n == head || (col.tail(n - head).array() - col(0)).abs().sum() == 0.0)) {
       out.col(c).setConstant(col(0) * dc_gain * dc_gain);
     } else {
       varying.push_back(col);
@@ -338,11 +391,14 @@ Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Column
     }
   }
   Eigen::MatrixXd filtered(out.rows(), static_cast<Eigen::Index>(varying.size()));
-  // The widest block's work space (three columns run four lanes, one idle).
-  const Eigen::Index widest = filtered.cols() <= 2 ? filtered.cols() : kLanes;
+  // The widest block's work space (three columns run four lanes, one idle). With the FMA
+  // kernels every block runs four lanes, so that a column comes out the same (to the bit)
+  // whichever columns share its block.
+  const bool fma = detail::fma_filters_available() && s.rows() <= 8;
+  const Eigen::Index widest = filtered.cols() == 0 ? 0 : fma || filtered.cols() > 2 ? kLanes : filtered.cols();
   double* const block = widest == 0 ? nullptr : frame.get((n + 2 * padlen) * widest).data();
   for (Eigen::Index c = 0; c < filtered.cols(); c += kLanes) {
-    const Eigen::Index lanes = std::min<Eigen::Index>(kLanes, filtered.cols() - c);
+    const Eigen::Index lanes = fma ? kLanes : std::min<Eigen::Index>(kLanes, filtered.cols() - c);
     if (lanes == 1) filtfilt_block<1>(s, zi, varying, c, padlen, keep_every, filtered, block);
     else if (lanes == 2) filtfilt_block<2>(s, zi, varying, c, padlen, keep_every, filtered, block);
     else filtfilt_block<kLanes>(s, zi, varying, c, padlen, keep_every, filtered, block);  // 3 columns: one idle lane

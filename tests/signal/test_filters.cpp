@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,7 @@
 #include "frictionlab/signal/decimate.hpp"
 #include "frictionlab/signal/differentiate.hpp"
 #include "frictionlab/signal/filtfilt.hpp"
+#include "signal/recursive_kernels.hpp"
 
 namespace fl = frictionlab;
 
@@ -41,6 +43,49 @@ Eigen::VectorXd vec(std::initializer_list<double> v) {
 }
 
 std::string ref_path(const std::string& name) { return std::string(FRICTIONLAB_SOURCE_DIR) + "/tests/signal/" + name; }
+
+// The textbook direct form II transposed (scipy's lfilter loop: one sample at a time, a multiply
+// and an add per term), what the library's kernels must equal up to rounding.
+Eigen::VectorXd textbook_lfilter(const fl::TransferFunction& tf, const Eigen::VectorXd& x, Eigen::VectorXd z) {
+  const Eigen::VectorXd b = tf.b / tf.a(0), a = tf.a / tf.a(0);
+  const Eigen::Index k = a.size() - 1;
+  Eigen::VectorXd y(x.size());
+  for (Eigen::Index n = 0; n < x.size(); ++n) {
+    y(n) = z(0) + b(0) * x(n);
+    for (Eigen::Index i = 0; i + 1 < k; ++i) z(i) = z(i + 1) + x(n) * b(i + 1) - y(n) * a(i + 1);
+    z(k - 1) = x(n) * b(k) - y(n) * a(k);
+  }
+  return y;
+}
+
+// scipy's filtfilt from the textbook loop: odd padding, forward from lfilter_zi times the first
+// sample, backward from lfilter_zi times the last output.
+Eigen::VectorXd textbook_filtfilt(const fl::TransferFunction& tf, const Eigen::VectorXd& x) {
+  const Eigen::Index pad = 3 * tf.a.size(), n = x.size();
+  Eigen::VectorXd e(n + 2 * pad);
+  for (Eigen::Index i = 0; i < pad; ++i) {
+    e(i) = 2 * x(0) - x(pad - i);
+    e(pad + n + i) = 2 * x(n - 1) - x(n - 2 - i);
+  }
+  e.segment(pad, n) = x;
+  const Eigen::VectorXd zi = fl::lfilter_zi(tf);
+  const Eigen::VectorXd f = textbook_lfilter(tf, e, zi * e(0));
+  const Eigen::VectorXd r = f.reverse();
+  return textbook_lfilter(tf, r, zi * r(0)).reverse().segment(pad, n);
+}
+
+// A record like a position log: a slow sine, a seeded random walk and noise.
+Eigen::VectorXd wandering(Eigen::Index n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> step(0.0, 0.01), noise(0.0, 0.002);
+  Eigen::VectorXd x(n);
+  double walk = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    walk += step(rng);
+    x(i) = std::sin(0.002 * static_cast<double>(i)) + walk + noise(rng);
+  }
+  return x;
+}
 
 }  // namespace
 
@@ -228,4 +273,116 @@ TEST(Gradient, ExactOnAQuadraticInside) {
   const Eigen::VectorXd d = fl::gradient(x, dt);
   constexpr double kTol = 1e-12;  // rounding of differences of values <= 1
   for (Eigen::Index i = 1; i < 19; ++i) EXPECT_NEAR(d(i), 6.0 * i * dt, kTol);
+}
+
+// Long records: on a CPU with AVX2 and FMA the recursion runs fused multiply-adds, and a single
+// channel runs as four blocks at once whose initial states are added back over the samples the
+// filter takes to forget a state (src/signal/recursive_kernels.hpp). Either way the result must
+// be the textbook recursion's up to rounding, at lengths around the blocks' threshold (4096),
+// with a tail of 1 to 3 samples past four whole blocks, forward and backward, and for a filter
+// whose memory is too long for blocks (order 2 at 0.002: it declines and runs serially). The
+// filters are ones a transfer function holds well: at higher orders and lower cut-offs the
+// direct form amplifies any change of rounding (order 6 at 0.05, or order 4 at 0.0005, differ by
+// 1e-10 between two correct loops), which is why the pipelines use order 4 at 0.2.
+TEST(Filtfilt, LongRecordsEqualTheTextbookRecursion) {
+  struct Case {
+    int order;
+    double wn;
+  };
+  for (const Case c : {Case{2, 0.3}, Case{4, 0.2}, Case{4, 0.05}, Case{3, 0.1}, Case{2, 0.002}}) {
+    const fl::TransferFunction tf = fl::butter(c.order, c.wn);
+    for (const Eigen::Index n : {Eigen::Index{4095}, Eigen::Index{4096}, Eigen::Index{4099}, Eigen::Index{30001}}) {
+      const Eigen::VectorXd x = wandering(n, static_cast<unsigned>(c.order * 100000 + n));
+      const Eigen::VectorXd zi = fl::lfilter_zi(tf) * x(0);
+      const std::string what = "order " + std::to_string(c.order) + ", wn " + std::to_string(c.wn) + ", n " + std::to_string(n);
+      expect_close(fl::lfilter(tf, x, zi), textbook_lfilter(tf, x, zi), kSeriesRelTol, "lfilter, " + what);
+      expect_close(fl::filtfilt(tf, x), textbook_filtfilt(tf, x), kSeriesRelTol, "filtfilt, " + what);
+    }
+  }
+}
+
+// The four-block kernel runs where it should (a record of 30001 samples through a filter that
+// forgets in a few hundred) and declines where it must (fewer than 4096 samples; a filter whose
+// memory exceeds an eighth of the record), so the test above covers both paths.
+TEST(Filtfilt, FourBlockKernelRunsOnLongRecordsOfShortMemoryFilters) {
+  if (!fl::detail::fma_filters_available()) GTEST_SKIP() << "this CPU lacks AVX2 or FMA: the portable loops run";
+  const auto attempt = [](const fl::TransferFunction& tf, Eigen::Index n) {
+    const Eigen::VectorXd b = tf.b / tf.a(0), a = tf.a / tf.a(0);
+    Eigen::VectorXd x = wandering(n, 7), z = Eigen::VectorXd::Zero(a.size() - 1);
+    return fl::detail::lfilter_blocks_fma(b.data(), a.data(), static_cast<int>(a.size() - 1), z.data(), x.data(), n, 1);
+  };
+  EXPECT_TRUE(attempt(fl::butter(4, 0.2), 30001));
+  EXPECT_TRUE(attempt(fl::butter(4, 0.2), 4096));
+  EXPECT_FALSE(attempt(fl::butter(4, 0.2), 4095));
+  EXPECT_FALSE(attempt(fl::butter(2, 0.002), 30001));
+}
+
+namespace {
+
+// scipy's sosfiltfilt from textbook loops: each section a direct form II transposed, a multiply
+// and an add per term; odd padding; sosfilt_zi states times the first (last) sample.
+Eigen::VectorXd textbook_sosfiltfilt(const fl::SecondOrderSections& sos, const Eigen::VectorXd& x) {
+  const Eigen::Index ns = sos.rows(), n = x.size();
+  const Eigen::Index pad = 3 * (2 * ns + 1 - std::min((sos.col(2).array() == 0.0).count(), (sos.col(5).array() == 0.0).count()));
+  Eigen::VectorXd e(n + 2 * pad);
+  for (Eigen::Index i = 0; i < pad; ++i) {
+    e(i) = 2 * x(0) - x(pad - i);
+    e(pad + n + i) = 2 * x(n - 1) - x(n - 2 - i);
+  }
+  e.segment(pad, n) = x;
+  const Eigen::MatrixX2d zi = fl::sosfilt_zi(sos);
+  const auto run = [&](Eigen::VectorXd v) {
+    const Eigen::MatrixX2d z0 = zi * v(0);
+    for (Eigen::Index r = 0; r < ns; ++r) {
+      const Eigen::VectorXd b = sos.row(r).head<3>().transpose() / sos(r, 3), a = sos.row(r).tail<3>().transpose() / sos(r, 3);
+      double z1 = z0(r, 0), z2 = z0(r, 1);
+      for (Eigen::Index i = 0; i < v.size(); ++i) {
+        const double in = v(i), out = b(0) * in + z1;
+        z1 = b(1) * in - a(1) * out + z2;
+        z2 = b(2) * in - a(2) * out;
+        v(i) = out;
+      }
+    }
+    return v;
+  };
+  const Eigen::VectorXd forward = run(e);
+  return run(forward.reverse()).reverse().segment(pad, n);
+}
+
+}  // namespace
+
+// Long records: on a CPU with AVX-512 the decimation filter runs each half of a record in its own
+// four lanes and adds the second half's initial-state response back (recursive_kernels.hpp).
+// Columns must equal the textbook cascade up to rounding, with an even and an odd length, and
+// decimate must keep every q-th of them.
+TEST(Decimate, LongRecordsEqualTheTextbookCascade) {
+  const fl::SecondOrderSections sos = fl::cheby1_sos(8, 0.05, 0.08);
+  for (const Eigen::Index n : {Eigen::Index{20000}, Eigen::Index{20001}}) {
+    Eigen::MatrixXd m(n, 4);
+    for (Eigen::Index c = 0; c < 4; ++c) m.col(c) = wandering(n, static_cast<unsigned>(10 * n + c));
+    const Eigen::MatrixXd f = fl::sosfiltfilt_columns(sos, m);
+    const Eigen::MatrixXd d = fl::decimate_columns(m, 10);
+    for (Eigen::Index c = 0; c < 4; ++c) {
+      const Eigen::VectorXd want = textbook_sosfiltfilt(sos, m.col(c));
+      const std::string what = std::to_string(n) + " samples, column " + std::to_string(c);
+      expect_close(f.col(c), want, kSeriesRelTol, "sosfiltfilt, " + what);
+      Eigen::VectorXd kept(d.rows());
+      for (Eigen::Index i = 0; i < d.rows(); ++i) kept(i) = want(10 * i);
+      expect_close(d.col(c), kept, kSeriesRelTol, "decimate, " + what);
+    }
+  }
+}
+
+// The halves kernel runs on a long record (the test above covers it) and declines below 8192.
+TEST(Decimate, HalvesKernelRunsOnLongRecords) {
+  if (!fl::detail::avx512_filters_available()) GTEST_SKIP() << "this CPU lacks AVX-512: the AVX2 or portable loops run";
+  const fl::SecondOrderSections sos = fl::cheby1_sos(8, 0.05, 0.08);
+  Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> s = sos;
+  for (Eigen::Index r = 0; r < s.rows(); ++r) s.row(r) /= s(r, 3);
+  const auto attempt = [&](Eigen::Index n) {
+    std::vector<double> x(static_cast<std::size_t>(4 * n), 1.0), z(static_cast<std::size_t>(8 * s.rows()), 0.0);
+    return fl::detail::cascade4_halves_avx512(s.data(), static_cast<int>(s.rows()), z.data(), x.data(), n, 1);
+  };
+  EXPECT_TRUE(attempt(20000));
+  EXPECT_FALSE(attempt(8191));
 }

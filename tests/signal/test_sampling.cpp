@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "error_message.hpp"
 #include "frictionlab/signal/sampling.hpp"
@@ -199,4 +202,34 @@ TEST(UniformResampler, BadOptionsAndColumnsAreNamed) {
   back(20) = 0.0;
   EXPECT_NE(error_of([&] { fl::UniformResampler q(back); }).find("sample 21: time 0 s is before the previous"),
             std::string::npos);
+}
+
+// time_steps selects the median among a bracket of the steps (signal/sampling.cpp); it must give
+// exactly the value std::nth_element gives, on clocks that repeat a few step values, on steps
+// all distinct, on a record with gaps, and on steps of any sign (the bracket misses and it falls
+// back). Lengths straddle the 4096 steps below which it selects over all of them at once.
+TEST(TimeSteps, MedianIsExactlyTheUpperMedianOfTheSteps) {
+  const auto reference = [](const Eigen::VectorXd& t) {
+    std::vector<double> d(static_cast<std::size_t>(t.size() - 1));
+    for (std::size_t k = 0; k < d.size(); ++k) d[k] = t(static_cast<Eigen::Index>(k) + 1) - t(static_cast<Eigen::Index>(k));
+    std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());  // the upper median
+    return d[d.size() / 2];
+  };
+  std::mt19937 rng(11);
+  for (const Eigen::Index n : {Eigen::Index{4000}, Eigen::Index{4098}, Eigen::Index{24841}, Eigen::Index{100001}}) {
+    Eigen::VectorXd stamped(n);  // a 1 kHz clock stored as k * dt: a few distinct rounded steps
+    for (Eigen::Index k = 0; k < n; ++k) stamped(k) = static_cast<double>(k) * 1e-3 + 1e4;
+    const Eigen::VectorXd uniform = jittered(n, 0.9e-3, 1.1e-3, static_cast<unsigned>(n));
+    Eigen::VectorXd gaps = clock(n, 1e-3);
+    for (Eigen::Index k = n / 3; k < n; ++k) gaps(k) += 0.5;  // one long gap
+    Eigen::VectorXd signs(n);  // not a time column at all: steps of both signs
+    std::normal_distribution<double> g(0.0, 1.0);
+    for (Eigen::Index k = 0; k < n; ++k) signs(k) = g(rng);
+    Eigen::VectorXd halves = clock(n, 1e-3);  // two step values, half of each: the bracket's edge
+    for (Eigen::Index k = 1; k < n; ++k) halves(k) = halves(k - 1) + (k % 2 ? 1e-3 : 2e-3);
+    for (const auto& [name, t] : {std::pair<const char*, const Eigen::VectorXd*>{"stamped", &stamped}, {"uniform", &uniform},
+                                  {"gaps", &gaps}, {"signs", &signs}, {"halves", &halves}}) {
+      EXPECT_EQ(fl::time_steps(*t).median, reference(*t)) << name << ", " << n << " samples";
+    }
+  }
 }
