@@ -3,11 +3,7 @@
 # 0.95 Fs and back, then a force sine of amplitude 2 Fs) to CSV, identify the LuGre parameters
 # from force and position, check sigma0 and sigma1 within 5 %; then all six from one noisy
 # multisine record; bad input exits 2.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 
 # The scenario: table corners on the 1 kHz sample times, so the recorded force reproduces the input.
 /usr/bin/python3 - "$tmp/lugre.yaml" <<'PY'

@@ -1,11 +1,7 @@
 #!/usr/bin/env bash
 # The seed documents' procedures end to end on the command line: simulate an experiment to CSV,
 # identify from the CSV, compare with the parameters the simulation used.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 check() {  # json file, python expression over p (parameters by name -> value)
   /usr/bin/python3 - "$1" "$2" <<'PY'
 import json, sys

@@ -1,5 +1,14 @@
-# Shared by the CLI test scripts (sourced after `exe` and `tmp` are set): run the tool and check
-# its exit status and its one-line message.
+# Shared by the CLI test scripts, sourced first: `source "$(dirname "$0")/lib.sh"`. ctest runs
+# each script as `bash SCRIPT PATH_TO_frictionlab SOURCE_DIR` (tests/CMakeLists.txt); sourced
+# without arguments, this file sees the script's. It sets the scripts' common start: strict mode,
+# `exe` (the tool), `src` (the source tree), a scratch directory `tmp` removed on exit (a script
+# that needs more cleanup sets its own EXIT trap, removing "$tmp" too); and the helpers below, to
+# run the tool and check its exit status and its one-line message.
+set -euo pipefail
+exe="$1"
+src="$2"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
 
 fail() { echo "FAIL: $*"; exit 1; }
 
