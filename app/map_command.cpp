@@ -167,15 +167,22 @@ FigureFiles draw_map(const Part& run, const std::string& plot, bool overwrite, c
     throw std::logic_error("draw_map: expects a whole analyze map run, got " + run.command + " shard " + run.shard.text());
   // What the figure needs besides the rows, from the run's envelope (map_run.hpp): the scenario
   // file (its theory boundary is drawn from it), the grid and the theory's kind.
-  const nlohmann::json env = nlohmann::json::parse(run.envelope);
-  const nlohmann::json& result = env.at("result");
-  const std::string recorded = result.at("scenario").get<std::string>();
+  std::string recorded, theory_kind, digest;
   MapGrid grid;
-  for (const auto& text : result.at("grid")) grid.axes.push_back(parse_map_axis(text.get<std::string>()));
+  try {
+    const nlohmann::json env = nlohmann::json::parse(run.envelope);
+    const nlohmann::json& result = env.at("result");
+    recorded = result.at("scenario").get<std::string>();
+    for (const auto& text : result.at("grid")) grid.axes.push_back(parse_map_axis(text.get<std::string>()));
+    theory_kind = result.at("theory").at("kind").get<std::string>();
+    digest = env.at("data").at("sha256").get<std::string>();
+  } catch (const std::exception& e) {  // a hand-edited part: its envelope is not a map run's
+    throw std::invalid_argument(std::string("--plot: the parts' envelope is not a map run's (result.scenario, "
+                                            "result.grid, result.theory.kind, data.sha256): ") + e.what());
+  }
   if (grid.axes.size() > 2)
     throw std::invalid_argument("--plot draws 1-D and 2-D maps; this one varies " + std::to_string(grid.axes.size()) +
                                 " keys (write the table with -o and plot two of them yourself)");
-  const std::string theory_kind = result.at("theory").at("kind").get<std::string>();
   // The scenario is read again for the boundary: it must be the file the map ran on.
   const std::string file = scenario.empty() ? recorded : scenario;
   const std::string given = scenario.empty() ? "" : " (--scenario)";
@@ -184,7 +191,7 @@ FigureFiles draw_map(const Part& run, const std::string& plot, bool overwrite, c
     throw std::invalid_argument("--plot: the map's scenario " + file + given +
                                 " is not a file here; the map's theory boundary is drawn from it (give it with "
                                 "--scenario FILE where the parts' path does not resolve)");
-  if (sha256_file(file) != env.at("data").at("sha256").get<std::string>())
+  if (sha256_file(file) != digest)
     throw std::invalid_argument("--plot: the scenario " + file + given + " is not the file the map ran on (" + recorded +
                                 "): its SHA-256 differs from the run's");
   std::vector<std::string> keys;

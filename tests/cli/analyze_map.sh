@@ -75,7 +75,24 @@ expect_fail "--plot: the scenario $tmp/elsewhere.yaml (--scenario) is not the fi
   merge "$tmp/mv1.json" "$tmp/mv2.json" -o "$tmp/m.csv" --plot "$tmp/m.svg" --scenario "$tmp/elsewhere.yaml"
 expect_fail "--drift: the parts are of \`frictionlab analyze map\`, not of a batch identification" \
   merge "$tmp/mv1.json" "$tmp/mv2.json" -o "$tmp/m.csv" --drift "$tmp/d.csv"
-[ ! -e "$tmp/m.csv" ] || fail "a refused merge left $tmp/m.csv"
+# Hostile parts: an envelope edited alike in every part (so merge accepts them) is named, not a
+# crash; a map of three keys has no figure.
+/usr/bin/python3 - "$tmp/mv1.json" "$tmp/mv2.json" "$tmp" <<'PY'
+import json, sys
+for k, path in enumerate(sys.argv[1:3], 1):
+    j = json.load(open(path))
+    del j["envelope"]["result"]["grid"]
+    json.dump(j, open(f"{sys.argv[3]}/ed{k}.json", "w"))
+PY
+expect_fail "--plot: the parts' envelope is not a map run's (result.scenario, result.grid" \
+  merge "$tmp/ed1.json" "$tmp/ed2.json" -o "$tmp/m.csv" --plot "$tmp/m.svg"
+sb3=(--vary plant.V0=0.01:0.1:2 --vary plant.c=1:2:2 --vary plant.k=10:20:2)
+for k in 1 2; do
+  "$exe" analyze map "$src/examples/map_spring_block.yaml" "${sb3[@]}" --shard "$k/2" -o "$tmp/k3_$k.json" > /dev/null
+done
+expect_fail "--plot draws 1-D and 2-D maps; this one varies 3 keys" \
+  merge "$tmp/k3_1.json" "$tmp/k3_2.json" -o "$tmp/m.csv" --plot "$tmp/m.svg"
+[ ! -e "$tmp/m.csv" ] && [ ! -e "$tmp/m.svg" ] || fail "a refused merge left outputs"
 
 # A two-contact plant (an xy-table, examples/map_xy_traverse.yaml): x traverses at 20 mm/s, y holds
 # its place. The map classifies

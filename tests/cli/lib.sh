@@ -34,3 +34,17 @@ expect_fail() {
   shift
   expect 2 "$want" "$@"
 }
+
+# check_parameters JSON EXPR: the result in JSON (a --json file) is ok and the Python expression
+# EXPR holds over p, its parameters by name -> value; `rel NAME VALUE TOL` writes the expression
+# "p[NAME] is within the relative tolerance TOL of VALUE" for it.
+check_parameters() {
+  /usr/bin/python3 - "$1" "$2" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+p = {k: v["value"] for k, v in j["parameters"].items()}
+assert j["status"] == "ok", j["message"]
+assert eval(sys.argv[2]), (sys.argv[2], p)
+PY
+}
+rel() { echo "abs(p['$1'] - $2) <= $3 * abs($2)"; }
