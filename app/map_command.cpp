@@ -167,7 +167,7 @@ FigureFiles draw_map(const Part& run, const std::string& plot, bool overwrite, c
     throw std::logic_error("draw_map: expects a whole analyze map run, got " + run.command + " shard " + run.shard.text());
   // What the figure needs besides the rows, from the run's envelope (map_run.hpp): the scenario
   // file (its theory boundary is drawn from it), the grid and the theory's kind.
-  std::string recorded, theory_kind, digest;
+  std::string recorded, theory_kind, digest, contact;
   MapGrid grid;
   try {
     const nlohmann::json env = nlohmann::json::parse(run.envelope);
@@ -176,6 +176,7 @@ FigureFiles draw_map(const Part& run, const std::string& plot, bool overwrite, c
     for (const auto& text : result.at("grid")) grid.axes.push_back(parse_map_axis(text.get<std::string>()));
     theory_kind = result.at("theory").at("kind").get<std::string>();
     digest = env.at("data").at("sha256").get<std::string>();
+    if (result.contains("contact")) contact = result.at("contact").at("name").get<std::string>();
   } catch (const std::exception& e) {  // a hand-edited part: its envelope is not a map run's
     throw std::invalid_argument(std::string("--plot: the parts' envelope is not a map run's (result.scenario, "
                                             "result.grid, result.theory.kind, data.sha256): ") + e.what());
@@ -199,7 +200,9 @@ FigureFiles draw_map(const Part& run, const std::string& plot, bool overwrite, c
   const ScenarioGrid g(file, keys);
   progress_stage("drawing " + plot);
   const FigureFiles files = write_figure(
-      map_figure(g, grid, run.table, theory_kind, std::filesystem::path(recorded).filename().string()), plot, overwrite);
+      map_figure(g, grid, run.table, theory_kind,
+                 std::filesystem::path(recorded).filename().string() + (contact.empty() ? "" : ", contact " + contact)),
+      plot, overwrite);
   return files;
 }
 

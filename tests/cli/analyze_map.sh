@@ -100,7 +100,9 @@ expect_fail "--plot draws 1-D and 2-D maps; this one varies 3 keys" \
 traverse="$src/examples/map_xy_traverse.yaml"
 xyvary=(--vary plant.axes.x.mass=10:20:2)
 "$exe" analyze map "$traverse" "${xyvary[@]}" -o "$tmp/x.csv" > /dev/null
-"$exe" analyze map "$traverse" "${xyvary[@]}" --contact y -o "$tmp/y.csv" --json "$tmp/y.json" > "$tmp/y.txt"
+"$exe" analyze map "$traverse" "${xyvary[@]}" --contact y -o "$tmp/y.csv" --json "$tmp/y.json" --plot "$tmp/y.svg" \
+  > "$tmp/y.txt"
+grep -q "map_xy_traverse.yaml, contact y" "$tmp/y.svg" || fail "the figure's title does not name the contact"
 "$exe" analyze map "$traverse" "${xyvary[@]}" --contact 1 -o "$tmp/y1.csv" > /dev/null
 cmp "$tmp/y.csv" "$tmp/y1.csv" || fail "--contact 1 and --contact y differ"
 grep -q "contact y (index 1)" "$tmp/y.txt" || fail "text does not name the contact: $(cat "$tmp/y.txt")"
