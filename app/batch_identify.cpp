@@ -309,8 +309,8 @@ std::vector<DriftRow> table_drift(const RowTable& table, double threshold) {
   };
   const std::size_t c_date = col("date"), c_file = col("file"), c_status = col("status");
   if (c_date == table.columns.size())
-    throw std::invalid_argument("the rows carry no dates (identify ran without --date-from), and a batch's drift "
-                                "table and figure compare the logs by date: this table has no figure");
+    throw std::invalid_argument("the rows carry no dates (identify ran without --date-from): a batch's drift table "
+                                "and figure compare the logs by date, so these rows have no figure and no drift");
   // The parameters: grown columns P followed by P_std and P_unit (batch_table).
   std::vector<std::size_t> params;
   const GrownColumns g = table.grown.value_or(GrownColumns{});

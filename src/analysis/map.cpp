@@ -268,7 +268,7 @@ int map_contact(const Scenario& scenario, const std::string& which, const std::s
   for (int i = 0; i < n; ++i)
     if (plant.contact(i).name == which) return i;
   std::size_t index = 0;
-  if (!which.empty() && which.size() < 9 && std::all_of(which.begin(), which.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
+  if (which.size() < 9 && std::all_of(which.begin(), which.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
       (index = std::stoul(which)) < static_cast<std::size_t>(n))
     return static_cast<int>(index);
   std::string list;

@@ -34,9 +34,9 @@ cmp "$tmp/wd.svg" "$tmp/md.svg" || fail "merged drift figure differs from the un
 cmp "$tmp/wd.svg.dat" "$tmp/md.svg.dat" || fail "merged drift figure data differs from the unsharded batch's"
 # Parts without dates have no figure and no drift: exit 2 saying so, nothing written.
 for k in 1 2; do expect 0 "" "${sweep[@]}" "$tmp/fleet" --jobs 1 --shard "$k/2" --table "$tmp/u$k.json"; done
-expect_fail "--plot: the rows carry no dates (identify ran without --date-from), and a batch's drift table and figure" \
+expect_fail "--plot: the rows carry no dates (identify ran without --date-from): a batch's drift table and figure" \
   merge "$tmp/u1.json" "$tmp/u2.json" -o "$tmp/u.csv" --plot "$tmp/u.svg"
-grep -qF "this table has no figure" "$tmp/err.txt" || fail "no-figure message: $(cat "$tmp/err.txt")"
+grep -qF "so these rows have no figure and no drift" "$tmp/err.txt" || fail "no-figure message: $(cat "$tmp/err.txt")"
 expect_fail "--drift: the rows carry no dates" merge "$tmp/u1.json" "$tmp/u2.json" -o "$tmp/u.csv" --drift "$tmp/ud.csv"
 expect_fail "--scenario: the parts are of \`frictionlab identify\`, not of a map" \
   merge "$tmp/u1.json" "$tmp/u2.json" -o "$tmp/u.csv" --scenario "$src/examples/map_pid_hunting.yaml"
