@@ -28,8 +28,6 @@ bool ends_with_json(const std::string& path) {
   return ext == ".json";
 }
 
-std::string number_text(double v) { return std::isfinite(v) ? format_exact(v) : ""; }
-
 Cell integer_cell(std::size_t n) { return static_cast<std::int64_t>(n); }
 
 // The fixed columns before the parameters and after them.
@@ -112,7 +110,7 @@ Figure drift_figure(const std::vector<DriftRow>& rows, double threshold) {
     FigureSeries s, flagged;
     s.name = "value +- std";
     s.style = SeriesStyle::errorbars;
-    flagged.name = "change > " + number_text(threshold) + " combined std";
+    flagged.name = "change > " + format_exact(threshold) + " combined std";
     flagged.style = SeriesStyle::points;
     flagged.color = "#d55e00";
     flagged.point_size = 1.8;
@@ -160,8 +158,8 @@ void add_batch_options(CLI::App* cmd, BatchOptions& o) {
                   "Identify only shard K of N of the files (file i, from 0 in the expanded DATA list, with "
                   "i % N == K - 1) and write a part file to --table PART.json; `frictionlab merge PART... -o "
                   "OUT.csv|OUT.json` joins the parts into the table the unsharded run writes. Give every shard the "
-                  "same DATA and options; --drift and --plot are refused (they need every file: run them on the "
-                  "merged table, see the README)")
+                  "same DATA and options; --drift and --plot are refused (they need every file: give them to "
+                  "`frictionlab merge`, which writes the same drift table and figure)")
       ->group(g);
   cmd->add_option("--date-from", o.date_from,
                   "The log's date per row: 'name' (from the file name, e.g. axis3_2026-11-02.csv or "
@@ -305,16 +303,49 @@ std::string batch_key(const std::vector<BatchJob>& jobs, const BatchOptions& o) 
   return sha256_hex(id.dump());
 }
 
-std::vector<DriftRow> batch_drift(const std::vector<BatchRow>& rows, double threshold) {
+std::vector<DriftRow> table_drift(const RowTable& table, double threshold) {
+  const auto col = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(table.columns.begin(), table.columns.end(), name) - table.columns.begin());
+  };
+  const std::size_t c_date = col("date"), c_file = col("file"), c_status = col("status");
+  if (c_date == table.columns.size())
+    throw std::invalid_argument("the rows carry no dates (identify ran without --date-from): a batch's drift table "
+                                "and figure compare the logs by date, so these rows have no figure and no drift");
+  // The parameters: grown columns P followed by P_std and P_unit (batch_table).
+  std::vector<std::size_t> params;
+  const GrownColumns g = table.grown.value_or(GrownColumns{});
+  for (std::size_t c = g.begin; c + 2 < g.end; ++c)
+    if (table.columns[c + 1] == table.columns[c] + "_std" && table.columns[c + 2] == table.columns[c] + "_unit")
+      params.push_back(c);
+  const auto text = [](const Cell& c) { return std::holds_alternative<std::string>(c) ? std::get<std::string>(c) : ""; };
+  const auto number = [](const Cell& c) { return std::holds_alternative<double>(c) ? std::get<double>(c) : std::nan(""); };
   std::vector<DriftSample> samples;
-  for (const auto& row : rows) {
-    if (!row.result.ok()) continue;
-    for (const Parameter& p : row.result.parameters)
-      samples.push_back({row.job.file, row.date, p.name, p.value, p.std, p.unit});
+  for (const auto& row : table.rows) {
+    if (text(row[c_status]) != "ok") continue;
+    const std::string file = text(row[c_file]), iso = text(row[c_date]);
+    // The table's ISO date (to the second), read back by the file-name parser ("HH-MM-SS" is
+    // one of its time forms).
+    std::string name = iso;
+    std::replace(name.begin(), name.end(), ':', '-');
+    const std::optional<LogDate> date = log_date_from_name(name);
+    if (!date) throw std::invalid_argument(file + ": date '" + iso + "': expected YYYY-MM-DD or YYYY-MM-DDTHH:MM:SS");
+    for (std::size_t c : params) {
+      const double value = number(row[c]);
+      if (std::isnan(value)) continue;  // a parameter this row does not have
+      samples.push_back({file, *date, table.columns[c], value, number(row[c + 1]), text(row[c + 2])});
+    }
   }
   return drift_table(samples, threshold);
 }
 
+void write_drift(const std::vector<DriftRow>& drift, const std::string& drift_file, const std::string& plot,
+                 double threshold, bool overwrite) {
+  if (!drift_file.empty()) write_file_atomic(drift_file, table_text(drift_part(drift), drift_file), {overwrite});
+  if (!plot.empty() && !drift.empty()) {
+    progress_stage("drawing " + plot);
+    write_figure(drift_figure(drift, threshold), plot, overwrite);
+  }
+}
 
 int run_identify_batch(const std::vector<std::string>& data, const BatchOptions& o, const std::string& json,
                        const std::string& report, const std::string& plot, bool overwrite,
@@ -336,7 +367,8 @@ int run_identify_batch(const std::vector<std::string>& data, const BatchOptions&
     if (!o.drift.empty() || !plot.empty())
       throw std::invalid_argument(std::string(o.drift.empty() ? "--plot" : "--drift") + " with --shard " + o.shard +
                                   ": the drift compares consecutive logs, so it needs every file's row; merge the "
-                                  "parts, then run the drift on the whole table (see the README)");
+                                  "parts with --drift and --plot (frictionlab merge PART... -o OUT --drift FILE --plot "
+                                  "FIG)");
   }
   const bool dated = !o.date_from.empty();
   if (!dated && !o.drift.empty()) throw std::invalid_argument("--drift needs --date-from (the logs' dates)");
@@ -370,14 +402,10 @@ int run_identify_batch(const std::vector<std::string>& data, const BatchOptions&
 
   // Outputs: the drift table and figure first, the table last (the main output; a failure of
   // the others leaves none of them half-written, and no table that claims a finished run).
-  std::vector<DriftRow> drift;
-  if (dated && ok > 0) drift = batch_drift(rows, o.drift_threshold);
-  if (!o.drift.empty()) write_file_atomic(o.drift, table_text(drift_part(drift), o.drift), {overwrite});
-  if (!plot.empty() && !drift.empty()) {
-    progress_stage("drawing " + plot);
-    write_figure(drift_figure(drift, o.drift_threshold), plot, overwrite);
-  }
   Part part = table_part("identify", batch_table(rows, dated));
+  std::vector<DriftRow> drift;
+  if (dated && ok > 0) drift = table_drift(part.table, o.drift_threshold);
+  write_drift(drift, o.drift, plot, o.drift_threshold, overwrite);
   if (sharded) {
     part.key = batch_key(all, o);
     part.shard = shard;

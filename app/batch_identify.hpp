@@ -85,8 +85,20 @@ RowTable batch_table(const std::vector<BatchRow>& rows, bool with_date);
 /// sha256 column names the bytes it read.
 std::string batch_key(const std::vector<BatchJob>& jobs, const BatchOptions& o);
 
-/// The drift table (analysis/drift.hpp) of the ok rows' parameters, by date.
-std::vector<DriftRow> batch_drift(const std::vector<BatchRow>& rows, double threshold);
+/// The drift table (analysis/drift.hpp) of a batch table (batch_table's columns, with date): the
+/// parameters (grown columns P with P_std and P_unit) of its ok rows, by the date column (ISO, to
+/// the second). An unsharded batch and `frictionlab merge` of its parts both take the drift from
+/// the table, so the two agree.
+/// \throws std::invalid_argument when the table has no date column (identify ran without
+///         --date-from), a date cannot be read (naming the row's file), or as drift_table.
+std::vector<DriftRow> table_drift(const RowTable& table, double threshold);
+
+/// Writes the drift table to `drift_file` (CSV, or JSON when it ends in .json; "" = none) and the
+/// drift figure to `plot` (one panel per parameter, value +- std against days since the first log,
+/// flagged logs marked; "" = none, and none when `drift` is empty) through write_file_atomic and
+/// write_figure. `threshold` labels the flagged marks. \throws std::invalid_argument as they do.
+void write_drift(const std::vector<DriftRow>& drift, const std::string& drift_file, const std::string& plot,
+                 double threshold, bool overwrite);
 
 /// Runs a batch for a parsed method subcommand: checks the outputs first (--table, --drift,
 /// --plot; --json and --report are one file's outputs and are refused with a batch), identifies

@@ -39,7 +39,7 @@ struct AnalyzeArgs {
   OutputOptions output;  // --json, --plot, --overwrite (no --report)
   double threshold = 0.0;
   ReadOptions read;  // --names, --resample, --max-gap, --drop-invalid
-  MapArgs map;       // analyze map: --vary, --jobs, --shard, -o, --transient, --tolerance
+  MapArgs map;       // analyze map: --vary, --jobs, --shard, --contact, -o, --transient, --tolerance
 };
 
 // NaN is not JSON: null instead.
@@ -206,8 +206,8 @@ Handler register_analyze(CLI::App& app) {
   register_json_output(cmd, json, [a] { return a->method.empty() ? std::string("analyze") : a->method; });
   return [a]() -> int {
     if (a->method == "map") return run_map_command(a->data, a->map, a->output);
-    if (!a->map.vary.empty() || !a->map.shard.empty() || !a->map.out.empty())
-      throw std::invalid_argument("--vary, --shard and -o belong to analyze map; analyze " + a->method +
+    if (!a->map.vary.empty() || !a->map.shard.empty() || !a->map.out.empty() || !a->map.contact.empty())
+      throw std::invalid_argument("--vary, --shard, --contact and -o belong to analyze map; analyze " + a->method +
                                   " writes --json and --plot");
     check_outputs(a->output);
     const Dataset d = load_data(a->data, a->read, a->time);

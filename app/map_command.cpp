@@ -8,12 +8,15 @@
 #include <mutex>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "frictionlab/analysis/map.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/io/figure.hpp"
 #include "frictionlab/io/map_run.hpp"
 #include "frictionlab/io/scenario_grid.hpp"
+#include "frictionlab/io/sha256.hpp"
 #include "frictionlab/io/shard.hpp"
 
 namespace frictionlab::cli {
@@ -159,6 +162,50 @@ Figure map_figure(const ScenarioGrid& g, const MapGrid& grid, const RowTable& t,
 
 }  // namespace
 
+FigureFiles draw_map(const Part& run, const std::string& plot, bool overwrite, const std::string& scenario) {
+  if (run.command != "analyze map" || !run.shard.whole())
+    throw std::logic_error("draw_map: expects a whole analyze map run, got " + run.command + " shard " + run.shard.text());
+  // What the figure needs besides the rows, from the run's envelope (map_run.hpp): the scenario
+  // file (its theory boundary is drawn from it), the grid and the theory's kind.
+  std::string recorded, theory_kind, digest, contact;
+  MapGrid grid;
+  try {
+    const nlohmann::json env = nlohmann::json::parse(run.envelope);
+    const nlohmann::json& result = env.at("result");
+    recorded = result.at("scenario").get<std::string>();
+    for (const auto& text : result.at("grid")) grid.axes.push_back(parse_map_axis(text.get<std::string>()));
+    theory_kind = result.at("theory").at("kind").get<std::string>();
+    digest = env.at("data").at("sha256").get<std::string>();
+    if (result.contains("contact")) contact = result.at("contact").at("name").get<std::string>();
+  } catch (const std::exception& e) {  // a hand-edited part: its envelope is not a map run's
+    throw std::invalid_argument(std::string("--plot: the parts' envelope is not a map run's (result.scenario, "
+                                            "result.grid, result.theory.kind, data.sha256): ") + e.what());
+  }
+  if (grid.axes.size() > 2)
+    throw std::invalid_argument("--plot draws 1-D and 2-D maps; this one varies " + std::to_string(grid.axes.size()) +
+                                " keys (write the table with -o and plot two of them yourself)");
+  // The scenario is read again for the boundary: it must be the file the map ran on.
+  const std::string file = scenario.empty() ? recorded : scenario;
+  const std::string given = scenario.empty() ? "" : " (--scenario)";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw std::invalid_argument("--plot: the map's scenario " + file + given +
+                                " is not a file here; the map's theory boundary is drawn from it (give it with "
+                                "--scenario FILE where the parts' path does not resolve)");
+  if (sha256_file(file) != digest)
+    throw std::invalid_argument("--plot: the scenario " + file + given + " is not the file the map ran on (" + recorded +
+                                "): its SHA-256 differs from the run's");
+  std::vector<std::string> keys;
+  for (const auto& ax : grid.axes) keys.push_back(ax.key);
+  const ScenarioGrid g(file, keys);
+  progress_stage("drawing " + plot);
+  const FigureFiles files = write_figure(
+      map_figure(g, grid, run.table, theory_kind,
+                 std::filesystem::path(recorded).filename().string() + (contact.empty() ? "" : ", contact " + contact)),
+      plot, overwrite);
+  return files;
+}
+
 void add_map_options(CLI::App* cmd, MapArgs& a) {
   cmd->add_option("--vary", a.vary,
                   "map: KEY=START:STOP:N (or KEY=log:START:STOP:N): N values of a scenario key, a dotted path into "
@@ -170,6 +217,11 @@ void add_map_options(CLI::App* cmd, MapArgs& a) {
   cmd->add_option("--shard", a.shard,
                   "map: run only shard K of N (grid points i with i % N == K - 1) and write a part file to -o; "
                   "`frictionlab merge` joins the parts")
+      ->group("Map (analyze map SCENARIO.yaml)");
+  cmd->add_option("--contact", a.contact,
+                  "map: the contact whose motion is classified, by name (x, y of an xy-table) or index from 0; "
+                  "default: the first (the one contact of a 1-DOF plant). Its name is the table's contact column "
+                  "and the JSON's result.contact")
       ->group("Map (analyze map SCENARIO.yaml)");
   cmd->add_option("-o,--output", a.out,
                   "map: the table, one row per grid point (.csv or .json), or with --shard the part file")
@@ -194,6 +246,7 @@ int run_map_command(const std::string& scenario, const MapArgs& a, const OutputO
   ro.motion.tolerance = a.tolerance;
   ro.motion.validate();
   ro.threads = a.jobs;
+  ro.contact = a.contact;
   const bool sharded = !a.shard.empty();
   if (sharded) {
     if (a.out.empty()) throw std::invalid_argument("--shard " + a.shard + " needs -o PART (the part file to write)");
@@ -244,6 +297,7 @@ int run_map_command(const std::string& scenario, const MapArgs& a, const OutputO
        << (sharded ? "shard " + ro.shard.text() + ", " + std::to_string(part.table.rows.size()) + " of " : "")
        << part.total << " points";
   for (const auto& ax : grid.axes) text << " " << ax.text();
+  if (!run.contact_name.empty()) text << ", contact " << run.contact_name << " (index " << run.contact << ")";
   text << "\ntransient: "
        << (a.transient >= 0 ? "the first " + format_number(a.transient) + " s"
                             : "the first half of each run (" + format_number(shown_transient) + " s here)")
@@ -265,13 +319,7 @@ int run_map_command(const std::string& scenario, const MapArgs& a, const OutputO
   }
   note << text.str();
   if (!output.plot.empty()) {
-    progress_stage("drawing " + output.plot);
-    std::vector<std::string> keys;
-    for (const auto& ax : grid.axes) keys.push_back(ax.key);
-    const ScenarioGrid g(scenario, keys);
-    const FigureFiles files =
-        write_figure(map_figure(g, grid, part.table, run.theory_kind, std::filesystem::path(scenario).filename().string()),
-                     output.plot, output.overwrite);
+    const FigureFiles files = draw_map(part, output.plot, output.overwrite);
     note << "figure " << files.figure << " (data " << files.data << ", gnuplot script " << files.script << ")\n";
   }
   if (!a.out.empty()) {

@@ -53,7 +53,7 @@ def detect_stick_slip(t, v=None, force=None, *, velocity_threshold=0.0, min_slip
     return _core._detect_stick_slip(t, v, force, o)
 
 
-def analyze_map(scenario, vary=None, *, transient=None, tolerance=0.01, jobs=0, shard=None):
+def analyze_map(scenario, vary=None, *, transient=None, tolerance=0.01, jobs=0, shard=None, contact=None):
     """Map of a scenario file over a grid of its keys, as ``frictionlab analyze map``: each grid
     point simulated and classified after a transient.
 
@@ -63,16 +63,20 @@ def analyze_map(scenario, vary=None, *, transient=None, tolerance=0.01, jobs=0, 
     ``{key: (start, stop, n)}``. ``transient``: seconds discarded from the start of each run (None:
     half of each run). ``tolerance``: a velocity oscillation below this fraction of the run's
     largest |v| counts as none (0.01). ``jobs``: threads (0: all cores). ``shard``: "K/N" to run
-    only the points i with i % N == K - 1.
+    only the points i with i % N == K - 1. ``contact``: the contact whose motion is classified, a
+    name (``"x"``, ``"y"`` of an xy-table) or an index from 0 (None: the first, the one contact of
+    a 1-DOF plant).
 
     Returns a list of dicts, one per grid point in grid order (the first key varying slowest),
     with the same columns as the CLI's table: the varied keys, ``class`` ('converged',
     'steady-sliding', 'stick-slip', 'hunting', 'oscillating', 'failed'), ``amplitude`` (m),
     ``period`` (s), ``mean_velocity``, ``velocity_amplitude`` (m/s), ``stuck_fraction``,
     ``transient`` (s), ``theory`` (the class theory predicts, '' where none applies),
-    ``theory_margin`` (N s/m), ``theory_amplitude`` (m), ``theory_period`` (s), ``message``, and
-    ``index`` (the point's global index). Numbers that do not exist are NaN.
-    Raises ValueError naming an unknown key or a bad grid.
+    ``theory_margin`` (N s/m), ``theory_amplitude`` (m), ``theory_period`` (s), ``message``,
+    ``contact`` (the classified contact's name, '' for a 1-DOF plant's one contact) and ``index``
+    (the point's global index). Numbers that do not exist are NaN.
+    Raises ValueError naming an unknown key, a bad grid or a contact the plant does not have (listing
+    its contacts).
     """
     import math
     import os
@@ -88,6 +92,13 @@ def analyze_map(scenario, vary=None, *, transient=None, tolerance=0.01, jobs=0, 
         raise _core.ArgumentTypeError(
             f"analyze_map: argument vary: expected 'KEY=START:STOP:N', a list of them or a dict "
             f"{{key: (start, stop, n)}}; got {type(vary).__name__}")
+    if contact is None:
+        contact = ""
+    elif isinstance(contact, bool) or not isinstance(contact, (str, int)):
+        raise _core.ArgumentTypeError(
+            f"analyze_map: argument contact: expected a contact's name or an index from 0; got {type(contact).__name__}")
+    elif isinstance(contact, int) and contact < 0:
+        raise ValueError(f"analyze_map: contact {contact}: expected an index from 0 (or a contact's name)")
     out = _core._analyze_map(os.fspath(scenario), list(vary), math.nan if transient is None else float(transient),
-                             float(tolerance), int(jobs), "" if shard is None else str(shard))
+                             float(tolerance), int(jobs), "" if shard is None else str(shard), str(contact))
     return out["rows"]

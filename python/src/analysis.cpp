@@ -130,7 +130,7 @@ void init_analysis(py::module_& m) {
   m.def(
       "_analyze_map",
       [](const std::string& scenario, const std::vector<std::string>& vary, double transient, double tolerance, int jobs,
-         const std::string& shard) {
+         const std::string& shard, const std::string& contact) {
         MapGrid grid;
         for (const auto& v : vary) grid.axes.push_back(parse_map_axis(v, "vary"));
         MapRunOptions o;
@@ -138,6 +138,8 @@ void init_analysis(py::module_& m) {
         o.motion.tolerance = tolerance;
         o.threads = jobs;
         if (!shard.empty()) o.shard = parse_shard(shard, "shard");
+        o.contact = contact;
+        o.contact_option = "contact";
         MapRun run;
         {
           py::gil_scoped_release release;
@@ -162,10 +164,11 @@ void init_analysis(py::module_& m) {
         out["theory"] = run.theory_kind;
         out["theory_note"] = run.theory_note;
         out["columns"] = run.part.table.columns;
+        out["contact"] = py::make_tuple(run.contact, run.contact_name);
         return out;
       },
       py::arg("scenario"), py::arg("vary"), py::arg("transient"), py::arg("tolerance"), py::arg("jobs"), py::arg("shard"),
-      "Map of a scenario over a grid (see frictionlab.analyze_map).");
+      py::arg("contact"), "Map of a scenario over a grid (see frictionlab.analyze_map).");
 
   // Fleet drift (frictionlab.batch.drift, log_date): dates as (iso, posix seconds) tuples.
   m.def("_log_date_from_name", [](const std::string& path) -> py::object {

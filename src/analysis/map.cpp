@@ -260,14 +260,43 @@ MapTheory map_theory(const Scenario& scenario) {
   return th;
 }
 
+int map_contact(const Scenario& scenario, const std::string& which, const std::string& option) {
+  if (!scenario.plant) throw std::invalid_argument(option + " '" + which + "': the scenario has no plant");
+  const Plant& plant = *scenario.plant;
+  const int n = plant.num_contacts();
+  if (which.empty()) return 0;
+  for (int i = 0; i < n; ++i)
+    if (plant.contact(i).name == which) return i;
+  std::size_t index = 0;
+  if (which.size() < 9 && std::all_of(which.begin(), which.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
+      (index = std::stoul(which)) < static_cast<std::size_t>(n))
+    return static_cast<int>(index);
+  std::string list;
+  for (int i = 0; i < n; ++i) {
+    const std::string name = plant.contact(i).name;
+    list += (i ? ", " : "") + std::to_string(i) + " " + (name.empty() ? std::string("(unnamed)") : name);
+  }
+  throw std::invalid_argument(option + " '" + which + "': the " + plant.type() + " plant has no such contact; its " +
+                              (n == 1 ? std::string("contact: ") : std::to_string(n) + " contacts: ") + list +
+                              " (a name or an index from 0)");
+}
+
 std::vector<MotionSummary> run_map(const std::vector<Scenario>& scenarios, const MapOptions& options) {
   options.motion.validate();
+  for (std::size_t i = 0; i < scenarios.size(); ++i) {
+    // A scenario without a plant is simulate()'s to refuse: its row fails, the others go on.
+    const int n = scenarios[i].plant ? scenarios[i].plant->num_contacts() : 1;
+    if (options.contact < 0 || options.contact >= n)
+      throw std::invalid_argument("map: contact " + std::to_string(options.contact) + " is not a contact of scenario " +
+                                  std::to_string(i) + "'s plant (" + std::to_string(n) + " contacts, indices from 0)");
+  }
   std::vector<MotionSummary> out(scenarios.size());
   BatchOptions b;
   b.threads = options.threads;
   b.on_result = [&](std::size_t i, BatchResult& r) {
     const Trajectory& tr = r.trajectory;
-    out[i] = classify_motion(tr.time, tr.position, tr.velocity, options.motion);
+    const ContactColumns& c = tr.contact(options.contact);
+    out[i] = classify_motion(tr.time, c.position, c.velocity, options.motion);
     r.trajectory = Trajectory{};  // its columns go back to this thread's pool
   };
   if (options.progress) b.progress = [&](std::size_t, std::size_t done) { options.progress(done, scenarios.size()); };

@@ -13,7 +13,8 @@ namespace {
 
 const std::vector<std::string> kColumns = {"class",          "amplitude",        "period",        "mean_velocity",
                                            "velocity_amplitude", "stuck_fraction", "transient",     "theory",
-                                           "theory_margin",  "theory_amplitude", "theory_period", "message"};
+                                           "theory_margin",  "theory_amplitude", "theory_period", "message",
+                                           "contact"};
 
 std::string note_of(const std::string& kind) {
   if (kind == "spring-block")
@@ -40,11 +41,17 @@ MapRun map_scenario(const std::string& scenario, const MapGrid& grid, const MapR
   for (std::size_t i : jobs) scenarios.push_back(g.at(grid.point(i)));
 
   MapRun run;
-  run.theory_kind = map_theory(!jobs.empty() && jobs.front() == 0 ? scenarios.front() : g.at(grid.point(0))).kind;
+  const Scenario first = !jobs.empty() && jobs.front() == 0 ? scenarios.front() : g.at(grid.point(0));
+  run.contact = map_contact(first, options.contact, options.contact_option);
+  run.contact_name = first.plant->contact(run.contact).name;
+  // Both theories are of a 1-DOF plant's one contact (map_theory).
+  const bool theory = run.contact == 0;
+  run.theory_kind = theory ? map_theory(first).kind : "";
   run.theory_note = note_of(run.theory_kind);
 
   MapOptions mo;
   mo.motion = options.motion;
+  mo.contact = run.contact;
   mo.threads = options.threads;
   mo.progress = options.progress;
   const std::vector<MotionSummary> summaries = run_map(scenarios, mo);
@@ -58,7 +65,7 @@ MapRun map_scenario(const std::string& scenario, const MapGrid& grid, const MapR
   part.table.columns.insert(part.table.columns.end(), kColumns.begin(), kColumns.end());
   for (std::size_t r = 0; r < jobs.size(); ++r) {
     const MotionSummary& s = summaries[r];
-    const MapTheory th = map_theory(scenarios[r]);
+    const MapTheory th = theory ? map_theory(scenarios[r]) : MapTheory{};
     std::vector<Cell> row;
     for (double v : grid.point(jobs[r])) row.emplace_back(v);
     row.emplace_back(std::string(motion_class_name(s.kind)));
@@ -67,6 +74,7 @@ MapRun map_scenario(const std::string& scenario, const MapGrid& grid, const MapR
     row.emplace_back(th.predicted);
     for (double v : {th.margin, th.amplitude, th.period}) row.emplace_back(v);
     row.emplace_back(s.message.empty() ? th.message : s.message);
+    row.emplace_back(run.contact_name);
     part.table.index.push_back(jobs[r]);
     part.table.rows.push_back(std::move(row));
   }
@@ -77,9 +85,11 @@ MapRun map_scenario(const std::string& scenario, const MapGrid& grid, const MapR
   for (const auto& ax : grid.axes) grid_text.push_back(ax.text());
   const nlohmann::ordered_json transient =
       given ? nlohmann::ordered_json(options.motion.transient) : nlohmann::ordered_json("half of each run");
+  const nlohmann::ordered_json contact = {{"index", run.contact}, {"name", run.contact_name}};
   const nlohmann::ordered_json id = {{"command", part.command}, {"scenario_sha256", digest},
                                      {"grid", grid_text},       {"transient", transient},
-                                     {"tolerance", options.motion.tolerance}, {"columns", part.table.columns}};
+                                     {"tolerance", options.motion.tolerance}, {"contact", contact},
+                                     {"columns", part.table.columns}};
   part.key = sha256_hex(id.dump());
 
   Result env;
@@ -91,6 +101,7 @@ MapRun map_scenario(const std::string& scenario, const MapGrid& grid, const MapR
                                          {"points", total},
                                          {"transient", transient},
                                          {"tolerance", options.motion.tolerance},
+                                         {"contact", contact},
                                          {"theory", {{"kind", run.theory_kind}, {"note", run.theory_note}}},
                                          {"columns", part.table.columns},
                                          {"rows", nlohmann::ordered_json::array()}};

@@ -13,6 +13,7 @@
 #include "frictionlab/analysis/describing_function.hpp"
 #include "frictionlab/analysis/map.hpp"
 #include "frictionlab/analysis/sliding_stability.hpp"
+#include "frictionlab/io/map_run.hpp"
 #include "frictionlab/io/scenario_grid.hpp"
 #include <cstdio>
 
@@ -334,6 +335,63 @@ TEST(MapTheoryAgainstSimulation, NoStictionConvergesAsPredicted) {
   const std::vector<Scenario> sc = {g.at({1.0})};
   EXPECT_EQ(map_theory(sc[0]).predicted, "converged");
   EXPECT_EQ(run_map(sc)[0].kind, MotionClass::converged);
+}
+
+// examples/map_xy_traverse.yaml: a two-axis table (two contacts, x and y) whose x traverses at a
+// constant 20 mm/s while y holds its place: the contacts move differently, so each has its own class.
+const std::string kTraverse = kExamples + "map_xy_traverse.yaml";
+
+TEST(MapContact, ByNameOrIndexAndRefusalsListTheContacts) {
+  const Scenario xy = load_scenario(kTraverse);
+  EXPECT_EQ(map_contact(xy, ""), 0);
+  EXPECT_EQ(map_contact(xy, "x"), 0);
+  EXPECT_EQ(map_contact(xy, "y"), 1);
+  EXPECT_EQ(map_contact(xy, "1"), 1);
+  EXPECT_EQ(testing::error_of([&] { map_contact(xy, "z"); }),
+            "--contact 'z': the xy-table plant has no such contact; its 2 contacts: 0 x, 1 y (a name or an index from 0)");
+  EXPECT_THAT(testing::error_of([&] { map_contact(xy, "2", "contact"); }), HasSubstr("contact '2': the xy-table plant"));
+  EXPECT_THAT(testing::error_of([&] { map_contact(xy, "-1"); }), HasSubstr("its 2 contacts: 0 x, 1 y"));
+  const Scenario one = load_scenario(kExamples + "map_pid_hunting.yaml");
+  EXPECT_EQ(map_contact(one, "0"), 0);
+  EXPECT_THAT(testing::error_of([&] { map_contact(one, "x"); }), HasSubstr("its contact: 0 (unnamed)"));
+  MapOptions o;
+  o.contact = 1;
+  EXPECT_THAT(testing::error_of([&] { run_map({one}, o); }), HasSubstr("map: contact 1 is not a contact of scenario 0"));
+}
+
+TEST(MapContact, EachContactOfATwoAxisTableGetsItsOwnClass) {
+  const std::string& file = kTraverse;
+  MapGrid grid;
+  grid.axes.push_back(parse_map_axis("plant.axes.x.mass=10:20:2"));
+  MapRunOptions o;
+  o.threads = 2;
+  const MapRun first = map_scenario(file, grid, o);  // default: the first contact, x
+  o.contact = "y";
+  const MapRun second = map_scenario(file, grid, o);
+  EXPECT_EQ(first.contact, 0);
+  EXPECT_EQ(first.contact_name, "x");
+  EXPECT_EQ(second.contact, 1);
+  EXPECT_EQ(second.contact_name, "y");
+  const auto& cols = first.part.table.columns;
+  const auto at = [&](const std::string& name) { return std::find(cols.begin(), cols.end(), name) - cols.begin(); };
+  for (std::size_t r = 0; r < 2; ++r) {
+    const auto& x = first.part.table.rows[r];
+    const auto& y = second.part.table.rows[r];
+    EXPECT_EQ(std::get<std::string>(x[at("class")]), "steady-sliding") << "row " << r;
+    EXPECT_EQ(std::get<std::string>(y[at("class")]), "converged") << "row " << r;
+    // x moves at the path's 20 mm/s; y stays where it started.
+    constexpr double kFeedRelTol = 0.01;  // the loop follows a ramp with a small lag, constant after the transient
+    EXPECT_NEAR(std::get<double>(x[at("mean_velocity")]), 0.02, kFeedRelTol * 0.02) << "row " << r;
+    EXPECT_EQ(std::get<double>(y[at("mean_velocity")]), 0.0) << "row " << r;
+    EXPECT_EQ(std::get<std::string>(x[at("contact")]), "x");
+    EXPECT_EQ(std::get<std::string>(y[at("contact")]), "y");
+  }
+  // The contact decides the rows: parts of the two runs are not one run's.
+  EXPECT_NE(first.part.key, second.part.key);
+  EXPECT_THAT(first.part.envelope, HasSubstr(R"("contact":{"index":0,"name":"x"})"));
+  EXPECT_THAT(second.part.envelope, HasSubstr(R"("contact":{"index":1,"name":"y"})"));
+  o.contact = "z";
+  EXPECT_THAT(testing::error_of([&] { map_scenario(file, grid, o); }), HasSubstr("--contact 'z'"));
 }
 
 }  // namespace

@@ -3,12 +3,7 @@
 # the four quadrant glitches (each well above the radial error away from the reversals), the
 # largest radial error and the roundness; --plot draws the polar figure with its scale; bad
 # input is exit 2 naming the file and column, and leaves no output behind.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-source "$src/tests/cli/lib.sh"
+source "$(dirname "$0")/lib.sh"
 
 "$exe" simulate "$src/examples/xy_circle.yaml" -o "$tmp/run.csv" 2> /dev/null
 "$exe" analyze contour "$tmp/run.csv" > "$tmp/text.txt"

@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
 # frictionlab analyze map and merge: a 1-D PID hunting map classifies Fs = Fc as converged and
-# stiction as hunting; three shards merged equal the unsharded CSV and JSON byte for byte; merge
-# names a missing, duplicated or foreign part; unknown keys and bad grids exit 2 naming them.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-source "$src/tests/cli/lib.sh"
+# stiction as hunting; three shards merged equal the unsharded CSV and JSON byte for byte, and
+# merge --plot draws the figure the unsharded --plot draws, byte for byte (the scenario file found
+# again, or given with --scenario, checked by its SHA-256); merge names a missing, duplicated or
+# foreign part; --contact classifies another contact of a two-axis table (its own classes, its
+# name in the table and JSON; an unknown one lists the contacts); unknown keys and bad grids exit
+# 2 naming them.
+source "$(dirname "$0")/lib.sh"
 pid="$src/examples/map_pid_hunting.yaml"
 vary=(--vary friction.Fs=1:2:3 --vary controller.Kp=3:4:2)  # 6 points
 
-"$exe" analyze map "$pid" "${vary[@]}" --jobs 2 -o "$tmp/whole.csv" --json "$tmp/whole.json" > "$tmp/text.txt"
+"$exe" analyze map "$pid" "${vary[@]}" --jobs 2 -o "$tmp/whole.csv" --json "$tmp/whole.json" --plot "$tmp/whole.svg" \
+  > "$tmp/text.txt"
 grep -q "transient: the first half of each run (120 s here) discarded" "$tmp/text.txt" || fail "no transient note: $(cat "$tmp/text.txt")"
 grep -q "theory (pid-hunting)" "$tmp/text.txt" || fail "no theory line: $(cat "$tmp/text.txt")"
 /usr/bin/python3 - "$tmp/whole.csv" "$tmp/whole.json" <<'PY'
@@ -37,6 +37,13 @@ done
 cmp "$tmp/whole.csv" "$tmp/merged.csv" || fail "merged CSV differs from the unsharded run"
 "$exe" merge "$tmp/part1.json" "$tmp/part2.json" "$tmp/part3.json" -o "$tmp/merged.json" > /dev/null
 cmp "$tmp/whole.json" "$tmp/merged.json" || fail "merged JSON differs from the unsharded run"
+# merge --plot draws the merged map with analyze map's own figure code: the same figure and data.
+expect 0 "" merge "$tmp/part2.json" "$tmp/part3.json" "$tmp/part1.json" -o "$tmp/merged2.csv" --plot "$tmp/merged.svg"
+grep -qF "merged 3 parts, 6 rows (analyze map) -> $tmp/merged2.csv; figure $tmp/merged.svg" "$tmp/out.txt" ||
+  fail "merge --plot summary: $(cat "$tmp/out.txt")"
+cmp "$tmp/whole.svg" "$tmp/merged.svg" || fail "merged map figure differs from the unsharded run's"
+cmp "$tmp/whole.svg.dat" "$tmp/merged.svg.dat" || fail "merged map figure data differs from the unsharded run's"
+grep -q "<svg" "$tmp/merged.svg" && grep -q "hunting" "$tmp/merged.svg.dat" || fail "merged figure lacks the classes"
 
 # merge refuses what does not make the whole run, naming the part.
 expect_fail "missing part: shard 2/3 was not given" merge "$tmp/part1.json" "$tmp/part3.json" -o "$tmp/m.csv"
@@ -48,6 +55,78 @@ expect_fail "not a frictionlab part file" merge "$tmp/whole.json" -o "$tmp/m.csv
 expect_fail "-o $tmp/m.txt: expected a .csv or .json file" merge "$tmp/part1.json" -o "$tmp/m.txt"
 expect_fail "$tmp/merged.csv" merge "$tmp/part1.json" "$tmp/part2.json" "$tmp/part3.json" -o "$tmp/merged.csv"
 [ ! -e "$tmp/m.csv" ] || fail "a failed merge left $tmp/m.csv"
+
+# The figure needs the scenario (the theory boundary): a part's path that does not resolve here is
+# named, --scenario gives the file, and a different file (edited since) is refused by its SHA-256.
+cp "$pid" "$tmp/moved.yaml"
+for k in 1 2; do
+  "$exe" analyze map "$tmp/moved.yaml" --vary friction.Fs=1:2:3 --jobs 1 --shard "$k/2" -o "$tmp/mv$k.json" > /dev/null
+done
+"$exe" analyze map "$tmp/moved.yaml" --vary friction.Fs=1:2:3 --jobs 1 -o "$tmp/mv.csv" --plot "$tmp/mv.svg" > /dev/null
+mv "$tmp/moved.yaml" "$tmp/elsewhere.yaml"
+expect_fail "--plot: the map's scenario $tmp/moved.yaml is not a file here" \
+  merge "$tmp/mv1.json" "$tmp/mv2.json" -o "$tmp/m.csv" --plot "$tmp/m.svg"
+[ ! -e "$tmp/m.csv" ] && [ ! -e "$tmp/m.svg" ] || fail "a refused merge --plot left outputs"
+expect 0 "" merge "$tmp/mv1.json" "$tmp/mv2.json" -o "$tmp/m1d.csv" --plot "$tmp/m1d.svg" --scenario "$tmp/elsewhere.yaml"
+cmp "$tmp/mv.svg" "$tmp/m1d.svg" || fail "1-D merged map figure differs from the unsharded run's"
+cmp "$tmp/mv.csv" "$tmp/m1d.csv" || fail "1-D merged table differs from the unsharded run's"
+echo "# edited" >> "$tmp/elsewhere.yaml"
+expect_fail "--plot: the scenario $tmp/elsewhere.yaml (--scenario) is not the file the map ran on" \
+  merge "$tmp/mv1.json" "$tmp/mv2.json" -o "$tmp/m.csv" --plot "$tmp/m.svg" --scenario "$tmp/elsewhere.yaml"
+expect_fail "--drift: the parts are of \`frictionlab analyze map\`, not of a batch identification" \
+  merge "$tmp/mv1.json" "$tmp/mv2.json" -o "$tmp/m.csv" --drift "$tmp/d.csv"
+# Hostile parts: an envelope edited alike in every part (so merge accepts them) is named, not a
+# crash; a map of three keys has no figure.
+/usr/bin/python3 - "$tmp/mv1.json" "$tmp/mv2.json" "$tmp" <<'PY'
+import json, sys
+for k, path in enumerate(sys.argv[1:3], 1):
+    j = json.load(open(path))
+    del j["envelope"]["result"]["grid"]
+    json.dump(j, open(f"{sys.argv[3]}/ed{k}.json", "w"))
+PY
+expect_fail "--plot: the parts' envelope is not a map run's (result.scenario, result.grid" \
+  merge "$tmp/ed1.json" "$tmp/ed2.json" -o "$tmp/m.csv" --plot "$tmp/m.svg"
+sb3=(--vary plant.V0=0.01:0.1:2 --vary plant.c=1:2:2 --vary plant.k=10:20:2)
+for k in 1 2; do
+  "$exe" analyze map "$src/examples/map_spring_block.yaml" "${sb3[@]}" --shard "$k/2" -o "$tmp/k3_$k.json" > /dev/null
+done
+expect_fail "--plot draws 1-D and 2-D maps; this one varies 3 keys" \
+  merge "$tmp/k3_1.json" "$tmp/k3_2.json" -o "$tmp/m.csv" --plot "$tmp/m.svg"
+[ ! -e "$tmp/m.csv" ] && [ ! -e "$tmp/m.svg" ] || fail "a refused merge left outputs"
+
+# A two-contact plant (an xy-table, examples/map_xy_traverse.yaml): x traverses at 20 mm/s, y holds
+# its place. The map classifies
+# the first contact by default, --contact NAME|INDEX another; the name is in the table and JSON.
+traverse="$src/examples/map_xy_traverse.yaml"
+xyvary=(--vary plant.axes.x.mass=10:20:2)
+"$exe" analyze map "$traverse" "${xyvary[@]}" -o "$tmp/x.csv" > /dev/null
+"$exe" analyze map "$traverse" "${xyvary[@]}" --contact y -o "$tmp/y.csv" --json "$tmp/y.json" --plot "$tmp/y.svg" \
+  > "$tmp/y.txt"
+grep -q "map_xy_traverse.yaml, contact y" "$tmp/y.svg" || fail "the figure's title does not name the contact"
+"$exe" analyze map "$traverse" "${xyvary[@]}" --contact 1 -o "$tmp/y1.csv" > /dev/null
+cmp "$tmp/y.csv" "$tmp/y1.csv" || fail "--contact 1 and --contact y differ"
+grep -q "contact y (index 1)" "$tmp/y.txt" || fail "text does not name the contact: $(cat "$tmp/y.txt")"
+/usr/bin/python3 - "$tmp/x.csv" "$tmp/y.csv" "$tmp/y.json" <<'PY'
+import csv, json, sys
+x = list(csv.DictReader(open(sys.argv[1])))
+y = list(csv.DictReader(open(sys.argv[2])))
+assert [r["class"] for r in x] == ["steady-sliding"] * 2, x
+assert [r["class"] for r in y] == ["converged"] * 2, y
+assert [r["contact"] for r in x] == ["x", "x"] and [r["contact"] for r in y] == ["y", "y"], (x, y)
+assert abs(float(x[0]["mean_velocity"]) - 0.02) < 0.01 * 0.02, x[0]  # the path's feed, 1 %: a ramp's lag is constant
+assert float(y[0]["mean_velocity"]) == 0.0, y[0]
+j = json.load(open(sys.argv[3]))
+assert j["result"]["contact"] == {"index": 1, "name": "y"}, j["result"]["contact"]
+PY
+expect_fail "--contact 'z': the xy-table plant has no such contact; its 2 contacts: 0 x, 1 y" \
+  analyze map "$traverse" "${xyvary[@]}" --contact z
+expect_fail "--contact '2': the xy-table plant has no such contact" analyze map "$traverse" "${xyvary[@]}" --contact 2
+expect_fail "--contact 'x': the axis plant has no such contact; its contact: 0 (unnamed)" \
+  analyze map "$pid" --vary friction.Fs=1:2:2 --contact x
+# Parts of another contact are another run's.
+"$exe" analyze map "$traverse" "${xyvary[@]}" --contact y --shard 1/2 -o "$tmp/cy1.json" > /dev/null
+"$exe" analyze map "$traverse" "${xyvary[@]}" --shard 2/2 -o "$tmp/cx2.json" > /dev/null
+expect_fail "cx2.json: foreign part: its key differs" merge "$tmp/cy1.json" "$tmp/cx2.json" -o "$tmp/m.csv"
 
 # Bad keys and grids: exit 2 naming them, before anything is simulated.
 expect_fail "--vary friction.Fx: the scenario does not give it, and as a new field" \
@@ -64,7 +143,7 @@ expect_fail "--shard '4/3': K = 4 must be <= N = 3" analyze map "$pid" --vary fr
 expect_fail "--shard 1/2 needs -o PART" analyze map "$pid" --vary friction.Fs=1:2:2 --shard 1/2
 expect_fail "--shard writes a part file only" analyze map "$pid" --vary friction.Fs=1:2:2 --shard 1/2 -o "$tmp/p.json" --json -
 expect_fail "-o $tmp/t.txt: expected a .csv or .json file" analyze map "$pid" --vary friction.Fs=1:2:2 -o "$tmp/t.txt"
-expect_fail "--vary, --shard and -o belong to analyze map" analyze stick-slip "$tmp/whole.csv" -o "$tmp/x.csv"
+expect_fail "--vary, --shard, --contact and -o belong to analyze map" analyze stick-slip "$tmp/whole.csv" -o "$tmp/x.csv"
 
 # A 2-D spring-block map: both classes on either side of the drawn linear stability boundary.
 "$exe" analyze map "$src/examples/map_spring_block.yaml" --vary plant.V0=log:0.005:0.1:4 --vary plant.c=2:6:2 \

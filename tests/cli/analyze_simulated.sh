@@ -1,11 +1,7 @@
 #!/usr/bin/env bash
 # frictionlab analyze on simulate output: the four Craig pendulum cases classify as
 # none / exponential / linear / mixed; the Canudas stick-slip period is 6.36 s; bad columns exit 2.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 
 for pair in frictionless:none viscous:exponential coulomb:linear combined:mixed; do
   case_name="${pair%%:*}"

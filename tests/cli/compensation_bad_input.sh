@@ -3,12 +3,7 @@
 # message naming the file and the key (a LuGre observer without a LuGre law, an unknown type, a
 # parameter of another type, an unknown key, a model file that is not there); nothing written.
 # Usage: compensation_bad_input.sh PATH_TO_frictionlab SOURCE_DIR
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-source "$src/tests/cli/lib.sh"
+source "$(dirname "$0")/lib.sh"
 
 hunting="$src/examples/canudas_pid_hunting_compensated.yaml"
 circle="$src/examples/xy_circle_compensated.yaml"

@@ -5,15 +5,9 @@
 # with "schema": 1, "status": "error" and a message, the exit status is 2, and stderr carries
 # exactly one line. With --json FILE a failed run writes no file.
 # Usage: contract_json.sh PATH_TO_frictionlab SOURCE_DIR
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 emps="$src/data/emps/DATA_EMPS.mat"
 scenario="$src/examples/emps_closed_loop.yaml"
-
-fail() { echo "FAIL: $*"; exit 1; }
 
 # expect_json WANT_IN_MESSAGE ARGS...: exit 2, one JSON error object on stdout naming WANT, one
 # line on stderr.

@@ -6,10 +6,7 @@
 # --overwrite. /dev/null itself is not used (as root a regression would replace it): a private
 # character device (mknod, when root) and a FIFO stand in for it.
 # Usage: contract_outputs.sh PATH_TO_frictionlab SOURCE_DIR
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
+source "$(dirname "$0")/lib.sh"
 pids=()
 cleanup() {
   for p in "${pids[@]}"; do kill "$p" 2> /dev/null || true; done

@@ -4,16 +4,10 @@
 # memory it would need, never an out-of-memory crash; a key given twice in a mapping is refused
 # naming the key and its line (YAML readers keep one of the two silently); nothing is written.
 # Usage: contract_scenario.sh PATH_TO_frictionlab SOURCE_DIR
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 base="$src/examples/craig_pendulum_coulomb.yaml"
 
-fail() { echo "FAIL: $*"; exit 1; }
-
-expect_fail() {  # FILE TEXT...: exit 2, each TEXT in the one-line message, no output written
+expect_refused() {  # FILE TEXT...: exit 2, each TEXT in the one-line message, no output written
   local file="$1"
   shift
   set +e
@@ -29,29 +23,29 @@ expect_fail() {  # FILE TEXT...: exit 2, each TEXT in the one-line message, no o
 }
 
 sed 's/^duration: 20/duration: 1e9/' "$base" > "$tmp/long.yaml"
-expect_fail "$tmp/long.yaml" "long.yaml: duration and output_rate: 1000000000 s at 200 Hz" "output rows, which need" "B of memory"
+expect_refused "$tmp/long.yaml" "long.yaml: duration and output_rate: 1000000000 s at 200 Hz" "output rows, which need" "B of memory"
 grep -v '^output_rate' "$base" | sed 's/^duration: 20/duration: 1e9/' > "$tmp/long_default.yaml"
-expect_fail "$tmp/long_default.yaml" "duration: 1000000000 s at 100 Hz (the default output_rate)"
+expect_refused "$tmp/long_default.yaml" "duration: 1000000000 s at 100 Hz (the default output_rate)"
 sed 's/^output_rate: 200/output_rate: 1e9/' "$base" > "$tmp/rate.yaml"
-expect_fail "$tmp/rate.yaml" "output_rate" "B of memory"
+expect_refused "$tmp/rate.yaml" "output_rate" "B of memory"
 sed 's/^output_rate: 200/output_rate: 1e300/' "$base" > "$tmp/huge.yaml"
-expect_fail "$tmp/huge.yaml" "output_rate" "B of memory"
+expect_refused "$tmp/huge.yaml" "output_rate" "B of memory"
 
 # A key twice: at the top, in a section, in the friction law.
 { cat "$base"; echo "duration: 30"; } > "$tmp/dup_top.yaml"
-expect_fail "$tmp/dup_top.yaml" "dup_top.yaml: line 22: key 'duration' given twice (first on line 17)"
+expect_refused "$tmp/dup_top.yaml" "dup_top.yaml: line 22: key 'duration' given twice (first on line 17)"
 sed 's/^  g: 9.81/  g: 9.81\n  g: 1.62/' "$base" > "$tmp/dup_plant.yaml"
-expect_fail "$tmp/dup_plant.yaml" "key 'g' given twice" "line 12"
+expect_refused "$tmp/dup_plant.yaml" "key 'g' given twice" "line 12"
 sed 's/^  Fc: 0.16/  Fc: 0.16\n  Fc: 0.18/' "$base" > "$tmp/dup_law.yaml"
-expect_fail "$tmp/dup_law.yaml" "key 'Fc' given twice"
+expect_refused "$tmp/dup_law.yaml" "key 'Fc' given twice"
 # A value of the wrong kind: a clear error, not an internal one.
 sed 's/^  law: static-coulomb-viscous/  law: [static-coulomb-viscous]/' "$base" > "$tmp/law_list.yaml"
-expect_fail "$tmp/law_list.yaml" "friction.law: expected a name"
+expect_refused "$tmp/law_list.yaml" "friction.law: expected a name"
 sed 's/^  m: 1.0/  m: {value: 1.0}/' "$base" > "$tmp/map_value.yaml"
-expect_fail "$tmp/map_value.yaml" "plant.m: expected a number"
+expect_refused "$tmp/map_value.yaml" "plant.m: expected a number"
 # A directory as the scenario.
 mkdir "$tmp/adir"
-expect_fail "$tmp/adir" "adir is a directory"
+expect_refused "$tmp/adir" "adir is a directory"
 
 # identify lugre --static takes the law files through the same reader: a key twice is refused.
 printf 'law: stribeck\nFc: 1\nFs: 1.5\nvs: 0.001\nFv: 0.4\nFc: 2\n' > "$tmp/law.yaml"

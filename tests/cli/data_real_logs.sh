@@ -3,13 +3,8 @@
 # columns and time stamps 10 to 12 ms apart is identified with --names and --resample; the bad
 # cases (irregular time without --resample, a gap, wrong --names, a number out of range, a MAT
 # file with a damaged compressed variable) exit 2 with a message naming what is wrong.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 # shellcheck source=lib.sh
-. "$(dirname "$0")/lib.sh"
 
 # The log: joint 1 moves (a sum of sines), the drive reports current (A) with noise and an offset;
 # torque = kt * current = M qdd + Fv qd + Fc sign(qd) + offset. Seeded.

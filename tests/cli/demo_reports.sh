@@ -3,12 +3,7 @@
 # the better model's, each with the fit, friction-map and cross-test figures (demo.sh checks the
 # files itself and fails without them); the better model's map shows its Stribeck terms.
 # Usage: demo_reports.sh PATH_TO_frictionlab SOURCE_DIR
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/lib.sh"
 command -v gnuplot > /dev/null || { echo "SKIP: gnuplot not installed (Debian package gnuplot-nox)"; exit 0; }
 
 FRICTIONLAB_DEMO_OUT="$tmp/demo" bash "$src/examples/demo.sh" "$(dirname "$(dirname "$exe")")" > "$tmp/log.txt" 2>&1 ||

@@ -3,12 +3,7 @@
 # identified law's values; bad model files, compensations and flags are exit 2 naming the file,
 # key or flag; a failed run leaves no output, the input is never overwritten, --overwrite is needed
 # to replace a header.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-source "$src/tests/cli/lib.sh"
+source "$(dirname "$0")/lib.sh"
 
 # no_output FILE: a failed run left nothing behind (no header, no temporary).
 no_output() {

@@ -1,13 +1,8 @@
 #!/usr/bin/env bash
 # frictionlab identify with bad input: exit 2, a message naming the file, row, column or option
 # and what was expected; no output file is left behind.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 # shellcheck source=lib.sh
-. "$(dirname "$0")/lib.sh"
 emps="$src/data/emps/DATA_EMPS.mat"
 
 expect_identify_fail() {  # text the message must contain, then the identify arguments

@@ -3,12 +3,7 @@
 # their rows, the same rows on 1 and 2 --jobs, exit 2 only when every file failed; --date-from
 # name with the drift table (the wear step flagged) and figure; one file keeps its own output;
 # batch options refused where they make no sense.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-. "$src/tests/cli/lib.sh"
+source "$(dirname "$0")/lib.sh"
 
 /usr/bin/python3 "$src/examples/fleet_logs.py" "$tmp/fleet" > /dev/null
 sweep=(identify sweep --resample --model coulomb-viscous)

@@ -2,11 +2,7 @@
 # Data that cannot give an answer is exit 2 with status "error" and a message, never exit 0 with
 # NaN figures: a zero drive gain on EMPS (force zero throughout), a record that never slips for
 # analyze stick-slip. And idim's rate-dependent defaults are reported as such.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 data="$src/data/emps"
 
 # --gain 0: zero drive force.

@@ -1,11 +1,7 @@
 #!/usr/bin/env bash
 # frictionlab identify idim on the bundled EMPS data: the published figures through the command
 # line, the JSON contract of DESIGN.md, atomic output and the --overwrite rule.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 data="$src/data/emps"
 cols=(--time t --position qm --input vir --gain gtau)
 

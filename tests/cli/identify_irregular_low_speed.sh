@@ -3,11 +3,7 @@
 # data logger on a slow serial link writes it: constant-velocity levels from 0.1 vs to 10 vs in
 # both directions, velocity noise 2 % of the slowest level. Without --resample it is refused
 # naming --resample; with it, identify sweep finds every level and Fc, Fs within 5 %.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 
 /usr/bin/python3 - "$tmp/slow.csv" <<'PY'
 import sys

@@ -3,11 +3,7 @@
 # 0.95 Fs and back, then a force sine of amplitude 2 Fs) to CSV, identify the LuGre parameters
 # from force and position, check sigma0 and sigma1 within 5 %; then all six from one noisy
 # multisine record; bad input exits 2.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 
 # The scenario: table corners on the 1 kHz sample times, so the recorded force reproduces the input.
 /usr/bin/python3 - "$tmp/lugre.yaml" <<'PY'
@@ -29,30 +25,19 @@ with open(sys.argv[1], "w") as f:
 PY
 "$exe" simulate "$tmp/lugre.yaml" -o "$tmp/lugre.csv" > /dev/null
 
-check() {  # json file, python expression over p (parameters by name -> value)
-  /usr/bin/python3 - "$1" "$2" <<'PY'
-import json, sys
-j = json.load(open(sys.argv[1]))
-p = {k: v["value"] for k, v in j["parameters"].items()}
-assert j["status"] == "ok", j["message"]
-assert eval(sys.argv[2]), (sys.argv[2], p)
-PY
-}
-rel() { echo "abs(p['$1'] - $2) <= $3 * abs($2)"; }
-
 # Static part identified from the same record.
 "$exe" identify lugre "$tmp/lugre.csv" --force applied --inertia 1 --json - > "$tmp/l.json" 2> "$tmp/l.txt"
-check "$tmp/l.json" "$(rel sigma0 1e5 0.05) and $(rel sigma1 316.22776601683796 0.05) and $(rel Fc 1.0 0.02)"
+check_parameters "$tmp/l.json" "$(rel sigma0 1e5 0.05) and $(rel sigma1 316.22776601683796 0.05) and $(rel Fc 1.0 0.02)"
 grep -Eq '"unit": ?"N/m"' "$tmp/l.json"
 
 # Static part given (a Stribeck MODEL file): the dynamic ones still within 5 %.
 printf '{"law": "stribeck", "Fc": 1.0, "Fs": 1.5, "vs": 0.001, "delta": 2, "Fv": 0.4}\n' > "$tmp/static.json"
 "$exe" identify lugre "$tmp/lugre.csv" --force applied --inertia 1 --static "$tmp/static.json" --json "$tmp/g.json" > /dev/null
-check "$tmp/g.json" "$(rel sigma0 1e5 0.05) and $(rel sigma1 316.22776601683796 0.05) and p['Fs'] == 1.5"
+check_parameters "$tmp/g.json" "$(rel sigma0 1e5 0.05) and $(rel sigma1 316.22776601683796 0.05) and p['Fs'] == 1.5"
 
 # The identified model is a MODEL.json that --static accepts.
 "$exe" identify lugre "$tmp/lugre.csv" --force applied --inertia 1 --static "$tmp/l.json" --json "$tmp/m.json" > /dev/null
-check "$tmp/m.json" "$(rel sigma0 1e5 0.05)"
+check_parameters "$tmp/m.json" "$(rel sigma0 1e5 0.05)"
 
 # One record, nothing given: a sum of two sinusoids (faded in over 2 s) drives the Table I axis
 # through presliding, breakaways both ways and reversals; 0.3 um encoder noise on a 0.05 um grid.
@@ -87,7 +72,7 @@ with open(sys.argv[2], "w", newline="") as f:
         w.writerow([r["time"], r["applied"], repr(5e-8 * round(x / 5e-8))])
 PY
 "$exe" identify lugre "$tmp/ms.csv" --force applied --inertia 1 --json "$tmp/ms.json" > /dev/null
-check "$tmp/ms.json" "$(rel Fc 1.0 0.05) and $(rel Fs 1.5 0.05) and $(rel sigma0 1e5 0.10) and $(rel sigma1 316.22776601683796 0.20) and $(rel vs 0.001 0.25)"
+check_parameters "$tmp/ms.json" "$(rel Fc 1.0 0.05) and $(rel Fs 1.5 0.05) and $(rel sigma0 1e5 0.10) and $(rel sigma1 316.22776601683796 0.20) and $(rel vs 0.001 0.25)"
 /usr/bin/python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['diagnostics']['correlation']; assert len(c['names'])==6 and len(c['matrix'])==6, c" "$tmp/ms.json"
 # Through a file: grep -q stops reading at its match, and the rest of the help (the batch options
 # come after --vd) would meet a closed pipe (SIGPIPE, a failed pipeline under pipefail).

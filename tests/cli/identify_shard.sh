@@ -1,15 +1,11 @@
 #!/usr/bin/env bash
 # identify --shard K/N and merge: three shards of a folder merged (any order) equal the unsharded
 # --table byte for byte, CSV and JSON, with --date-from; a shard whose files all failed (no
-# parameter columns of its own) and an empty shard still merge to the unsharded table; exit
+# parameter columns of its own) and an empty shard still merge to the unsharded table; merge
+# --drift and --plot write the unsharded batch's drift table and figure (undated parts: exit 2); exit
 # status rules as without --shard; merge names a missing, duplicated or foreign part; the options
 # that make no sense with --shard are refused before any work.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-. "$src/tests/cli/lib.sh"
+source "$(dirname "$0")/lib.sh"
 
 /usr/bin/python3 "$src/examples/fleet_logs.py" "$tmp/fleet" > /dev/null
 sweep=(identify sweep --resample --model coulomb-viscous)
@@ -25,6 +21,26 @@ grep -q "merged 3 parts, 11 rows (identify)" "$tmp/out.txt" || { cat "$tmp/out.t
 cmp "$tmp/whole.csv" "$tmp/merged.csv" || fail "merged CSV differs from the unsharded table"
 expect 0 "" merge "$tmp/part1.json" "$tmp/part2.json" "$tmp/part3.json" -o "$tmp/merged.json"
 cmp "$tmp/whole.json" "$tmp/merged.json" || fail "merged JSON differs from the unsharded table"
+# merge --drift and --plot: the unsharded batch's drift table and figure, byte for byte (both are
+# computed from the table by one function, and drawn by one).
+expect 0 "" "${sweep[@]}" "$tmp/fleet" --date-from name --table "$tmp/w.csv" --drift "$tmp/wd.csv" --drift-threshold 3 \
+  --plot "$tmp/wd.svg"
+expect 0 "" merge "$tmp/part2.json" "$tmp/part3.json" "$tmp/part1.json" -o "$tmp/md_table.csv" --drift "$tmp/md.csv" \
+  --drift-threshold 3 --plot "$tmp/md.svg"
+grep -qF "drift: 1 flagged (a change beyond 3 combined std)" "$tmp/out.txt" || { cat "$tmp/out.txt"; fail "merge drift summary"; }
+cmp "$tmp/w.csv" "$tmp/md_table.csv" || fail "merged table with --drift differs"
+cmp "$tmp/wd.csv" "$tmp/md.csv" || fail "merged drift table differs from the unsharded batch's"
+cmp "$tmp/wd.svg" "$tmp/md.svg" || fail "merged drift figure differs from the unsharded batch's"
+cmp "$tmp/wd.svg.dat" "$tmp/md.svg.dat" || fail "merged drift figure data differs from the unsharded batch's"
+# Parts without dates have no figure and no drift: exit 2 saying so, nothing written.
+for k in 1 2; do expect 0 "" "${sweep[@]}" "$tmp/fleet" --jobs 1 --shard "$k/2" --table "$tmp/u$k.json"; done
+expect_fail "--plot: the rows carry no dates (identify ran without --date-from): a batch's drift table and figure" \
+  merge "$tmp/u1.json" "$tmp/u2.json" -o "$tmp/u.csv" --plot "$tmp/u.svg"
+grep -qF "so these rows have no figure and no drift" "$tmp/err.txt" || fail "no-figure message: $(cat "$tmp/err.txt")"
+expect_fail "--drift: the rows carry no dates" merge "$tmp/u1.json" "$tmp/u2.json" -o "$tmp/u.csv" --drift "$tmp/ud.csv"
+expect_fail "--scenario: the parts are of \`frictionlab identify\`, not of a map" \
+  merge "$tmp/u1.json" "$tmp/u2.json" -o "$tmp/u.csv" --scenario "$src/examples/map_pid_hunting.yaml"
+[ ! -e "$tmp/u.csv" ] && [ ! -e "$tmp/u.svg" ] && [ ! -e "$tmp/ud.csv" ] || fail "a refused merge wrote a file"
 "$exe" "${sweep[@]}" "$tmp/fleet" --date-from name --jobs 1 --shard 2/3 --table "$tmp/p2.json" --overwrite 2> "$tmp/err.txt"
 grep -qF "shard 2/3: 4 of 11 files: 3 ok, 1 failed; part $tmp/p2.json" "$tmp/err.txt" || { cat "$tmp/err.txt"; fail "shard summary"; }
 # A part holds its own files' rows only, with their global index.
@@ -94,7 +110,7 @@ expect_fail "map2.json: foreign part: its command (analyze map against identify)
 expect_fail "--shard 1/3 writes a part file: give --table PART.json" "${sweep[@]}" "$tmp/fleet" --shard 1/3
 expect_fail "--shard 1/3 writes a part file: give --table PART.json" "${sweep[@]}" "$tmp/fleet" --shard 1/3 --table "$tmp/s.csv"
 expect_fail "--shard '4/3': K = 4 must be <= N = 3" "${sweep[@]}" "$tmp/fleet" --shard 4/3 --table "$tmp/s.json"
-expect_fail "--drift with --shard 1/3: the drift compares consecutive logs, so it needs every file's row" \
+expect_fail "--drift with --shard 1/3: the drift compares consecutive logs, so it needs every file's row; merge the parts with --drift" \
   "${sweep[@]}" "$tmp/fleet" --date-from name --shard 1/3 --table "$tmp/s.json" --drift "$tmp/d.csv"
 expect_fail "--plot with --shard 1/3" "${sweep[@]}" "$tmp/fleet" --date-from name --shard 1/3 --table "$tmp/s.json" --plot "$tmp/d.svg"
 [ ! -e "$tmp/s.json" ] && [ ! -e "$tmp/s.csv" ] && [ ! -e "$tmp/d.csv" ] || fail "a refused run wrote a file"

@@ -3,11 +3,7 @@
 # to 250 vs, noise 4 % of the slowest speed): every level is found, on the measured velocity and on
 # --reference; a sweep that never goes below 3 vs gives vs and delta std null, a warning, and
 # "(undetermined)" in the text.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 
 /usr/bin/python3 - "$tmp" <<'PY'
 import sys

@@ -1,5 +1,14 @@
-# Shared by the CLI test scripts (sourced after `exe` and `tmp` are set): run the tool and check
-# its exit status and its one-line message.
+# Shared by the CLI test scripts, sourced first: `source "$(dirname "$0")/lib.sh"`. ctest runs
+# each script as `bash SCRIPT PATH_TO_frictionlab SOURCE_DIR` (tests/CMakeLists.txt); sourced
+# without arguments, this file sees the script's. It sets the scripts' common start: strict mode,
+# `exe` (the tool), `src` (the source tree), a scratch directory `tmp` removed on exit (a script
+# that needs more cleanup sets its own EXIT trap, removing "$tmp" too); and the helpers below, to
+# run the tool and check its exit status and its one-line message.
+set -euo pipefail
+exe="$1"
+src="$2"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
 
 fail() { echo "FAIL: $*"; exit 1; }
 
@@ -25,3 +34,17 @@ expect_fail() {
   shift
   expect 2 "$want" "$@"
 }
+
+# check_parameters JSON EXPR: the result in JSON (a --json file) is ok and the Python expression
+# EXPR holds over p, its parameters by name -> value; `rel NAME VALUE TOL` writes the expression
+# "p[NAME] is within the relative tolerance TOL of VALUE" for it.
+check_parameters() {
+  /usr/bin/python3 - "$1" "$2" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+p = {k: v["value"] for k, v in j["parameters"].items()}
+assert j["status"] == "ok", j["message"]
+assert eval(sys.argv[2]), (sys.argv[2], p)
+PY
+}
+rel() { echo "abs(p['$1'] - $2) <= $3 * abs($2)"; }

@@ -1,12 +1,7 @@
 #!/usr/bin/env bash
 # The library's messages speak of its parameters (drop_invalid, names, scale, the drive gain);
 # the command line says the flag that sets each (app/flag_names.hpp, app/data_options.cpp).
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-. "$src/tests/cli/lib.sh"
+source "$(dirname "$0")/lib.sh"
 emps="$src/data/emps/DATA_EMPS.mat"
 
 # A force that is zero throughout (status error through the result, not an exception).

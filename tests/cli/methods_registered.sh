@@ -3,10 +3,7 @@
 # subcommand has its file app/methods/NAME.cpp defining NAME_method(), one line in cli_methods()
 # and one in the library's identification_methods(); and no file outside app/methods/ chooses
 # behaviour by comparing a method's name (the text table, report and figures read the result).
-set -euo pipefail
-exe="$1"
-src="$2"
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/lib.sh"
 
 # The subcommands as --help lists them (CLI11: a "Subcommands:" block, one name per line).
 names=$("$exe" identify --help | awk '/^Subcommands:/{on=1; next} on && /^  [a-z]/ {print $1} on && /^[A-Z]/ {exit}')

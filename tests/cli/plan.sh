@@ -3,13 +3,8 @@
 # units, JSON with the predicted std of Fs, Fc, Fv and the read-offs), a sweep whose limits leave
 # vs undetermined (std null, warning), and bad input: exit 2 with a one-line message naming the
 # limit, key or file; no output file left behind.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 export FRICTIONLAB_NO_PROGRESS=1
-source "$src/tests/cli/lib.sh"
 prior="$src/examples/plan/craig_motor_prior.json"
 motor="$src/examples/craig_motor_trapezoid.yaml"
 

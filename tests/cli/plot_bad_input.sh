@@ -3,13 +3,8 @@
 # the option and path): an unsupported --plot extension, an existing non-empty --report
 # directory without --overwrite. A missing gnuplot names the Debian package that provides it.
 # Usage: plot_bad_input.sh PATH_TO_frictionlab SOURCE_DIR
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=lib.sh
-. "$(dirname "$0")/lib.sh"
+source "$(dirname "$0")/lib.sh"
 emps="$src/data/emps/DATA_EMPS.mat"
 idim=(identify idim "$emps" --time t --position qm --input vir --gain gtau)
 

@@ -5,11 +5,7 @@
 # redraws the figure; identify --report writes the friction-velocity map next to the fit figure.
 # Set FRICTIONLAB_PLOT_DIR to keep the figures (CI artefacts).
 # Usage: plot_outputs.sh PATH_TO_frictionlab SOURCE_DIR
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 out="${FRICTIONLAB_PLOT_DIR:-$tmp/figures}"
 mkdir -p "$out"
 command -v gnuplot > /dev/null || { echo "SKIP: gnuplot not installed (Debian package gnuplot-nox)"; exit 0; }

@@ -2,11 +2,7 @@
 # The README's "Your own data" walk-through, command for command: a headerless, jittered robot
 # joint log (examples/robot_joint_log.py) is refused without --resample, then identified with
 # --names and --resample; joint 2's friction comes out within 5 % and the report is written.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 cd "$tmp"
 
 /usr/bin/python3 "$src/examples/robot_joint_log.py" joints.csv

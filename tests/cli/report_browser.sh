@@ -6,14 +6,9 @@
 # The screenshot is kept in $FRICTIONLAB_REPORT_SCREENSHOT, else ./report_browser.png in the
 # working directory (ctest runs in the build directory, so CI can keep it as an artefact).
 # Usage: report_browser.sh PATH_TO_frictionlab SOURCE_DIR
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 shot="${FRICTIONLAB_REPORT_SCREENSHOT:-$PWD/report_browser.png}"
 
-fail() { echo "FAIL: $*"; exit 1; }
 browser=""
 for b in chromium chromium-browser; do command -v "$b" > /dev/null && { browser="$b"; break; }; done
 [ -n "$browser" ] || { echo "SKIP: chromium not installed (Debian package chromium; make deps installs it)"; exit 0; }

@@ -1,13 +1,9 @@
 #!/usr/bin/env bash
 # frictionlab simulate with bad scenario files: exit 2, the message names the file, the key and
 # lists what is valid; nothing is written.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 
-expect_fail() {  # file, text the message must contain
+expect_refused() {  # file, text the message must contain
   set +e
   "$exe" simulate "$1" -o "$tmp/out.csv" 2> "$tmp/err.txt"
   local code=$?
@@ -19,24 +15,24 @@ expect_fail() {  # file, text the message must contain
 
 base="$src/examples/craig_stick_slip.yaml"
 sed 's/law: static-coulomb-viscous/law: sticky/' "$base" > "$tmp/law.yaml"
-expect_fail "$tmp/law.yaml" "unknown friction law 'sticky'"
-expect_fail "$tmp/law.yaml" "stribeck"            # the list of valid laws
-expect_fail "$tmp/law.yaml" "law.yaml: friction"  # file and key
+expect_refused "$tmp/law.yaml" "unknown friction law 'sticky'"
+expect_refused "$tmp/law.yaml" "stribeck"            # the list of valid laws
+expect_refused "$tmp/law.yaml" "law.yaml: friction"  # file and key
 
 sed 's/type: spring-base/type: trolley/' "$base" > "$tmp/plant.yaml"
-expect_fail "$tmp/plant.yaml" "plant.type: unknown plant type 'trolley'; valid plant types: axis, pendulum, spring-base, dc-motor"
+expect_refused "$tmp/plant.yaml" "plant.type: unknown plant type 'trolley'; valid plant types: axis, pendulum, spring-base, dc-motor"
 
 sed 's/duration: 10/duration: -3/' "$base" > "$tmp/dur.yaml"
-expect_fail "$tmp/dur.yaml" "duration: -3 must be > 0 (s)"
+expect_refused "$tmp/dur.yaml" "duration: -3 must be > 0 (s)"
 
 sed 's/  k: 100.0      # N\/m/  kk: 100.0/' "$base" > "$tmp/field.yaml"
-expect_fail "$tmp/field.yaml" "plant.kk: unknown field 'kk'; valid fields: type, m, k, c, V0, x0"
+expect_refused "$tmp/field.yaml" "plant.kk: unknown field 'kk'; valid fields: type, m, k, c, V0, x0"
 
 grep -v '  V0:' "$base" > "$tmp/missing.yaml"
-expect_fail "$tmp/missing.yaml" "plant: missing 'V0'"
+expect_refused "$tmp/missing.yaml" "plant: missing 'V0'"
 
 printf 'plant: [unclosed\n' > "$tmp/broken.yaml"
-expect_fail "$tmp/broken.yaml" "not valid YAML at line"
+expect_refused "$tmp/broken.yaml" "not valid YAML at line"
 
-expect_fail "$tmp/does_not_exist.yaml" "cannot open"
+expect_refused "$tmp/does_not_exist.yaml" "cannot open"
 echo "ok"

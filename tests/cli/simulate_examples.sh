@@ -1,11 +1,7 @@
 #!/usr/bin/env bash
 # frictionlab simulate: every example runs; -o writes the CSV with the documented header;
 # an existing file is refused without --overwrite (exit 2) and replaced with it.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 
 for f in "$src"/examples/*.yaml; do
   "$exe" simulate "$f" > "$tmp/summary.txt" || { echo "FAIL: simulate $f"; exit 1; }

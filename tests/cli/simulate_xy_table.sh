@@ -2,12 +2,7 @@
 # frictionlab simulate on the two-axis table: examples/xy_circle.yaml writes per-axis columns
 # (x.position, ..., y.drive) and a per-axis summary; a circle or path defines the references; bad
 # keys are exit 2 naming the key, and nothing is written.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-source "$src/tests/cli/lib.sh"
+source "$(dirname "$0")/lib.sh"
 
 "$exe" simulate "$src/examples/xy_circle.yaml" -o "$tmp/run.csv" 2> "$tmp/summary.txt"
 want='time'

@@ -2,12 +2,7 @@
 # Start-up cost: commands that read no MAT file do not load matio (nor HDF5, curl, GnuTLS, ...,
 # about 30 shared libraries through it); a MAT file loads it on first use. The dynamic loader's own
 # record (LD_DEBUG=files) tells which libraries a run opened.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
-source "$src/tests/cli/lib.sh"
+source "$(dirname "$0")/lib.sh"
 
 opened() { LD_DEBUG=files "$@" 2>&1 >/dev/null | grep -E 'file=[^ ]+ \[0\];  (needed|dynamically loaded)' || true; }
 

@@ -3,13 +3,8 @@
 # validation of examples/emps_closed_loop.yaml on both files (JSON contract of DESIGN.md,
 # published figures within the acceptance band), and bad input exiting 2 with a message that
 # names the file or column.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 # shellcheck source=lib.sh
-. "$(dirname "$0")/lib.sh"
 data="$src/data/emps"
 scenario="$src/examples/emps_closed_loop.yaml"
 cols=(--time t --position qm --input vir --gain gtau)

@@ -5,13 +5,8 @@
 # relative errors and the contour figures of measured and simulated in --json and text, the
 # contour and polar error figures in --plot and --report, and bad input (a one-axis model on the
 # table, a missing column, an unknown axis) exiting 2 naming the key or column.
-set -euo pipefail
-exe="$1"
-src="$2"
-tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/lib.sh"
 # shellcheck source=lib.sh
-. "$(dirname "$0")/lib.sh"
 scenario="$src/examples/xy_circle.yaml"
 
 # The real machine: x has 10 % more friction and 1 kg more; y a lower Coulomb and higher static level.

@@ -49,3 +49,22 @@ def test_shard_and_errors(example):
         fl.analyze_map(example("map_pid_hunting"), 3)
     with pytest.raises(ValueError, match="shard '3/2'"):
         fl.analyze_map(example("map_pid_hunting"), VARY, shard="3/2")
+
+
+def test_contact_of_a_two_axis_table(example):
+    # examples/map_xy_traverse.yaml: x traverses at 20 mm/s, y holds its place.
+    vary = "plant.axes.x.mass=10:20:2"
+    x = fl.analyze_map(example("map_xy_traverse"), vary)
+    y = fl.analyze_map(example("map_xy_traverse"), vary, contact="y")
+    assert [r["class"] for r in x] == ["steady-sliding"] * 2 and {r["contact"] for r in x} == {"x"}
+    assert [r["class"] for r in y] == ["converged"] * 2 and {r["contact"] for r in y} == {"y"}
+    by_index = fl.analyze_map(example("map_xy_traverse"), vary, contact=1)
+    assert [(r["class"], r["contact"], r["amplitude"]) for r in by_index] == [(r["class"], r["contact"], r["amplitude"]) for r in y]
+    with pytest.raises(ValueError, match=r"contact 'z': the xy-table plant has no such contact; its 2 contacts: 0 x, 1 y"):
+        fl.analyze_map(example("map_xy_traverse"), vary, contact="z")
+    with pytest.raises(ValueError, match="contact -1: expected an index from 0"):
+        fl.analyze_map(example("map_xy_traverse"), vary, contact=-1)
+    with pytest.raises(TypeError, match="argument contact"):
+        fl.analyze_map(example("map_xy_traverse"), vary, contact=1.5)
+    # A 1-DOF plant has one unnamed contact: its rows say ''.
+    assert {r["contact"] for r in fl.analyze_map(example("map_pid_hunting"), "friction.Fs=1.5:1.5:1")} == {""}

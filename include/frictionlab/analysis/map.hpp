@@ -109,20 +109,35 @@ struct MapTheory {
   std::string message;  ///< why no prediction, when kind is set but predicted is empty
 };
 
-/// The theory of a scenario (see MapTheory). Never throws for a scenario that simulates.
+/// The theory of a scenario (see MapTheory), for its first contact (both theories are of 1-DOF
+/// plants). Never throws for a scenario that simulates.
 MapTheory map_theory(const Scenario& scenario);
+
+/// The contact a map classifies, by `which`: a contact's name (Contact::name: "x", "y" of an
+/// xy-table), or its index from 0 (Plant::contact order); "" is the first contact (index 0). A name
+/// is matched before an index (a contact named "1" is that contact).
+/// \returns the index, 0 <= index < plant->num_contacts().
+/// \throws std::invalid_argument "OPTION 'WHICH': ..." for a name or index the plant does not have,
+///         listing its contacts as INDEX NAME ("0 x, 1 y"; "0 (unnamed)" for a 1-DOF plant), or a
+///         scenario without a plant.
+int map_contact(const Scenario& scenario, const std::string& which, const std::string& option = "--contact");
 
 /// Options of run_map.
 struct MapOptions {
   MotionOptions motion;
   int threads = 0;  ///< as BatchOptions::threads (0: all cores)
+  /// The contact classified (index from 0, map_contact); every scenario's plant must have it.
+  int contact = 0;
   /// Called after each point (thread-safe): points finished so far, of `scenarios.size()`.
   std::function<void(std::size_t finished, std::size_t total)> progress;
 };
 
 /// Simulates each scenario (simulate_batch, trajectories reduced as they finish) and classifies
-/// its first contact's motion. A failed simulation gives MotionClass::failed with its message;
-/// the others go on.
+/// the motion of contact options.contact (the first by default). A failed simulation gives
+/// MotionClass::failed with its message; the others go on.
+/// \throws std::invalid_argument when options.contact is not a contact of every scenario's plant
+///         (before anything is simulated; a scenario without a plant is a failed row), or for bad
+///         motion options.
 std::vector<MotionSummary> run_map(const std::vector<Scenario>& scenarios, const MapOptions& options = {});
 
 }  // namespace frictionlab
