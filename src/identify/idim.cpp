@@ -49,7 +49,7 @@ double checked_step(const IdimData& d) {
   RegularSamplingCheck check;  // the one rule of signal/sampling.hpp: 1 % of the median step
   check.where = where(d);
   check.requirement = "IDIM needs regularly sampled data";
-  return check_regular_sampling(d.time, check).mean;
+  return check_regular_sampling(d.time, check);
 }
 
 // A built-in term from its value at one sample, f(qd, qdd), in both forms: written into a

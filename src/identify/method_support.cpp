@@ -35,7 +35,7 @@ double regular_time_step(const Eigen::VectorXd& t, const std::string& method) {
   check.min_samples = 3;
   check.where = method + ": ";
   check.requirement = method + " needs regularly sampled data";
-  return check_regular_sampling(t, check).mean;
+  return check_regular_sampling(t, check);
 }
 
 }  // namespace frictionlab::detail

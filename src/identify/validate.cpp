@@ -37,7 +37,7 @@ double checked_step(const Vec& time, const std::string& file) {
   RegularSamplingCheck check;  // the one rule of signal/sampling.hpp
   check.where = where(file);
   check.requirement = "validation needs regularly sampled data";
-  return check_regular_sampling(time, check).mean;
+  return check_regular_sampling(time, check);
 }
 
 // The IDIM pipeline's skip and decimation must leave enough samples for the filter and decimate.

@@ -84,7 +84,7 @@ double check_time(const Dataset& data, const Eigen::VectorXd& time, const TimeCh
   c.require_regular = options.require_regular;
   c.where = data.where();
   c.row_label = [&data](Eigen::Index k) { return data.row_label(k); };
-  return check_regular_sampling(time, c).mean;
+  return check_regular_sampling(time, c);
 }
 
 void resample_dataset(Dataset& data, const std::string& time_column, ResampleOptions options) {

@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -16,7 +17,13 @@ namespace frictionlab {
 namespace detail {
 bool fma_filters_available() {
 #if defined(FRICTIONLAB_FMA_FILTERS)  // recursive_kernels_fma.cpp built with -mavx2 -mfma
-  static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  // FRICTIONLAB_FILTER_KERNELS=portable runs the portable loops on any CPU (what a CPU without
+  // AVX2 runs; the tests run both).
+  static const bool available = [] {
+    const char* choice = std::getenv("FRICTIONLAB_FILTER_KERNELS");
+    const bool portable = choice != nullptr && std::string(choice) == "portable";
+    return !portable && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  }();
   return available;
 #else
   return false;

@@ -21,8 +21,9 @@
 
 namespace frictionlab::detail {
 
-/// Whether the kernels below were built and this CPU runs them (AVX2 and FMA; asked once).
-/// Defined in filtfilt.cpp, which is built for the baseline.
+/// Whether the kernels below were built and this CPU runs them (AVX2 and FMA; asked once),
+/// and the environment variable FRICTIONLAB_FILTER_KERNELS is not "portable" (which runs the
+/// portable loops anywhere: the tests run both). Defined in filtfilt.cpp, built for the baseline.
 bool fma_filters_available();
 
 /// Whether the AVX-512 kernels (recursive_kernels_avx512.cpp, -mavx512f) were built and this

@@ -1,9 +1,10 @@
 // Built with -mavx2 -mfma where CMakeLists.txt can (x86-64, GCC or Clang); see recursive_kernels.hpp.
-// Nothing here may call an inline function of another header (see there): plain arrays, intrinsics.
+// Nothing here may call an inline function of another header (see there): plain arrays, intrinsics
+// and recursive_kit.hpp, whose functions are private to each file that includes it.
 #include "recursive_kernels.hpp"
 
 #if defined(__AVX2__) && defined(__FMA__)
-#include <immintrin.h>
+#include "recursive_kit.hpp"
 #endif
 
 namespace frictionlab::detail {
@@ -13,40 +14,18 @@ namespace {
 
 using Index = std::ptrdiff_t;
 
-// One section's coefficients, broadcast to the four channels; a1 and a2 negated so that each
-// state update is one fused multiply-add.
-struct Section {
-  __m256d b0, b1, b2, na1, na2;
-};
-
-// One sample through the NS sections. The chain from one sample to the next runs through
-// out = b0 x + z0 and z0 = -a1 out + (b1 x + z1): two fused multiply-adds per section; the
-// other products wait on nothing of this sample's recursion.
-template <int NS>
-inline __m256d link(const Section (&s)[NS], __m256d (&z0)[NS], __m256d (&z1)[NS], __m256d cur) {
-  for (int r = 0; r < NS; ++r) {
-    const __m256d out = _mm256_fmadd_pd(s[r].b0, cur, z0[r]);
-    z0[r] = _mm256_fmadd_pd(s[r].na1, out, _mm256_fmadd_pd(s[r].b1, cur, z1[r]));
-    z1[r] = _mm256_fmadd_pd(s[r].na2, out, _mm256_mul_pd(s[r].b2, cur));
-    cur = out;
-  }
-  return cur;
-}
-
 // The cascade over `count` samples from `read(n)` to `write(n, y)`: interleaved in place, or
 // gathered from four arrays. States and coefficients stay in registers for the loop.
 template <int NS, class Read, class Write>
 void run_cascade(const double* c, double* z, Index count, Read read, Write write) {
-  Section s[NS];
+  SectionOf<__m256d> s[NS];
+  load_sections(c, s);
   __m256d z0[NS], z1[NS];
   for (int r = 0; r < NS; ++r) {
-    const double* row = c + 6 * r;
-    s[r] = {_mm256_set1_pd(row[0]), _mm256_set1_pd(row[1]), _mm256_set1_pd(row[2]), _mm256_set1_pd(-row[4]),
-            _mm256_set1_pd(-row[5])};
     z0[r] = _mm256_loadu_pd(z + 8 * r);
     z1[r] = _mm256_loadu_pd(z + 8 * r + 4);
   }
-  for (Index n = 0; n < count; ++n) write(n, link<NS>(s, z0, z1, read(n)));
+  for (Index n = 0; n < count; ++n) write(n, link(s, z0, z1, read(n)));
   for (int r = 0; r < NS; ++r) {
     _mm256_storeu_pd(z + 8 * r, z0[r]);
     _mm256_storeu_pd(z + 8 * r + 4, z1[r]);
@@ -216,39 +195,23 @@ struct Blocks {
   }
 };
 
-// F<n>::run(args...) for n = 1..8 chosen at run time; false for any other n.
-template <template <int> class F, class... Args>
-bool by_count(int n, Args... args) {
-  switch (n) {
-    case 1: return F<1>::run(args...);
-    case 2: return F<2>::run(args...);
-    case 3: return F<3>::run(args...);
-    case 4: return F<4>::run(args...);
-    case 5: return F<5>::run(args...);
-    case 6: return F<6>::run(args...);
-    case 7: return F<7>::run(args...);
-    case 8: return F<8>::run(args...);
-    default: return false;
-  }
-}
-
 }  // namespace
 
 bool cascade4_fma(const double* coefficients, int sections, double* z, double* x, std::ptrdiff_t count, int step) {
-  return by_count<InPlace>(sections, coefficients, z, x, count, step);
+  return by_count<InPlace, 8>(sections, coefficients, z, x, count, step);
 }
 
 bool cascade4_gather_fma(const double* coefficients, int sections, double* z, const double* const in[4],
                          std::ptrdiff_t count, double* out) {
-  return by_count<Gather>(sections, coefficients, z, in, count, out);
+  return by_count<Gather, 8>(sections, coefficients, z, in, count, out);
 }
 
 bool lfilter_fma(const double* b, const double* a, int order, double* z, double* x, std::ptrdiff_t count, int step) {
-  return by_count<Order>(order, b, a, z, x, count, step);
+  return by_count<Order, 8>(order, b, a, z, x, count, step);
 }
 
 bool lfilter_blocks_fma(const double* b, const double* a, int order, double* z, double* x, std::ptrdiff_t count, int step) {
-  return by_count<Blocks>(order, b, a, z, x, count, step);
+  return by_count<Blocks, 8>(order, b, a, z, x, count, step);
 }
 
 #else  // not built for AVX2 and FMA: filtfilt.cpp runs its portable loops

@@ -60,14 +60,21 @@ Eigen::VectorXd textbook_lfilter(const fl::TransferFunction& tf, const Eigen::Ve
 
 // scipy's filtfilt from the textbook loop: odd padding, forward from lfilter_zi times the first
 // sample, backward from lfilter_zi times the last output.
-Eigen::VectorXd textbook_filtfilt(const fl::TransferFunction& tf, const Eigen::VectorXd& x) {
-  const Eigen::Index pad = 3 * tf.a.size(), n = x.size();
+// x with `pad` samples of odd reflection at each end (scipy's padtype 'odd').
+Eigen::VectorXd odd_padded(const Eigen::VectorXd& x, Eigen::Index pad) {
+  const Eigen::Index n = x.size();
   Eigen::VectorXd e(n + 2 * pad);
   for (Eigen::Index i = 0; i < pad; ++i) {
     e(i) = 2 * x(0) - x(pad - i);
     e(pad + n + i) = 2 * x(n - 1) - x(n - 2 - i);
   }
   e.segment(pad, n) = x;
+  return e;
+}
+
+Eigen::VectorXd textbook_filtfilt(const fl::TransferFunction& tf, const Eigen::VectorXd& x) {
+  const Eigen::Index pad = 3 * tf.a.size(), n = x.size();
+  const Eigen::VectorXd e = odd_padded(x, pad);
   const Eigen::VectorXd zi = fl::lfilter_zi(tf);
   const Eigen::VectorXd f = textbook_lfilter(tf, e, zi * e(0));
   const Eigen::VectorXd r = f.reverse();
@@ -324,24 +331,13 @@ namespace {
 Eigen::VectorXd textbook_sosfiltfilt(const fl::SecondOrderSections& sos, const Eigen::VectorXd& x) {
   const Eigen::Index ns = sos.rows(), n = x.size();
   const Eigen::Index pad = 3 * (2 * ns + 1 - std::min((sos.col(2).array() == 0.0).count(), (sos.col(5).array() == 0.0).count()));
-  Eigen::VectorXd e(n + 2 * pad);
-  for (Eigen::Index i = 0; i < pad; ++i) {
-    e(i) = 2 * x(0) - x(pad - i);
-    e(pad + n + i) = 2 * x(n - 1) - x(n - 2 - i);
-  }
-  e.segment(pad, n) = x;
+  const Eigen::VectorXd e = odd_padded(x, pad);
   const Eigen::MatrixX2d zi = fl::sosfilt_zi(sos);
-  const auto run = [&](Eigen::VectorXd v) {
+  const auto run = [&](Eigen::VectorXd v) {  // section after section, each from its zi state
     const Eigen::MatrixX2d z0 = zi * v(0);
     for (Eigen::Index r = 0; r < ns; ++r) {
-      const Eigen::VectorXd b = sos.row(r).head<3>().transpose() / sos(r, 3), a = sos.row(r).tail<3>().transpose() / sos(r, 3);
-      double z1 = z0(r, 0), z2 = z0(r, 1);
-      for (Eigen::Index i = 0; i < v.size(); ++i) {
-        const double in = v(i), out = b(0) * in + z1;
-        z1 = b(1) * in - a(1) * out + z2;
-        z2 = b(2) * in - a(2) * out;
-        v(i) = out;
-      }
+      const fl::TransferFunction section{sos.row(r).head<3>().transpose(), sos.row(r).tail<3>().transpose()};
+      v = textbook_lfilter(section, v, z0.row(r).transpose());
     }
     return v;
   };

@@ -51,8 +51,10 @@ fl::SamplingProblem problem_of(const Eigen::VectorXd& t) {
 TEST(RegularSampling, AcceptsSmallJitterAndReportsSteps) {
   Eigen::VectorXd t = clock(1001, 1e-3);
   t(500) += 2e-6;  // 0.2 % of a step: well inside 1 %
-  const fl::TimeSteps s = fl::check_regular_sampling(t);
+  const double mean = fl::check_regular_sampling(t);
+  const fl::TimeSteps s = fl::time_steps(t);
   constexpr double kRel = 1e-9;  // sums of 1e-3 s steps carry rounding at 1e-16 s
+  EXPECT_EQ(mean, s.mean);
   EXPECT_NEAR(s.mean, 1e-3, kRel * 1e-3);
   EXPECT_NEAR(s.median, 1e-3, kRel * 1e-3);
   EXPECT_NEAR(s.min, 1e-3 - 2e-6, kRel * 1e-3);

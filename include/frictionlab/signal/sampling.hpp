@@ -75,9 +75,9 @@ struct RegularSamplingCheck {
 /// increasing, and (require_regular) every step within `tolerance` of the median step. Messages
 /// name the first offending sample, e.g. "run.csv: line 17: time step 0.012 s differs from the
 /// median step 0.01 s by more than 1 % (steps from 0.01 to 0.012 s); expected regularly sampled
-/// data". Returns the steps (min, median, max, mean).
+/// data". Returns the mean step (t(N-1) - t(0)) / (N - 1), s; time_steps gives the others.
 /// \throws SamplingError (a std::invalid_argument) saying which rule failed.
-TimeSteps check_regular_sampling(const Eigen::VectorXd& time, const RegularSamplingCheck& check = {});
+double check_regular_sampling(const Eigen::VectorXd& time, const RegularSamplingCheck& check = {});
 
 /// Options of UniformResampler.
 struct ResampleOptions {
