@@ -15,15 +15,20 @@
 namespace frictionlab {
 
 namespace detail {
+namespace {
+// The environment's FRICTIONLAB_FILTER_KERNELS: "portable", "avx2" or unset (the widest the CPU runs).
+std::string kernels_asked() {
+  const char* choice = std::getenv("FRICTIONLAB_FILTER_KERNELS");
+  return choice != nullptr ? choice : "";
+}
+}  // namespace
+
 bool fma_filters_available() {
 #if defined(FRICTIONLAB_FMA_FILTERS)  // recursive_kernels_fma.cpp built with -mavx2 -mfma
   // FRICTIONLAB_FILTER_KERNELS=portable runs the portable loops on any CPU (what a CPU without
   // AVX2 runs; the tests run both).
-  static const bool available = [] {
-    const char* choice = std::getenv("FRICTIONLAB_FILTER_KERNELS");
-    const bool portable = choice != nullptr && std::string(choice) == "portable";
-    return !portable && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  }();
+  static const bool available =
+      kernels_asked() != "portable" && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   return available;
 #else
   return false;
@@ -32,7 +37,8 @@ bool fma_filters_available() {
 
 bool avx512_filters_available() {
 #if defined(FRICTIONLAB_AVX512_FILTERS)  // recursive_kernels_avx512.cpp built with -mavx512f
-  static const bool available = fma_filters_available() && __builtin_cpu_supports("avx512f");
+  // FRICTIONLAB_FILTER_KERNELS=avx2 stops at AVX2 (what a CPU without AVX-512 runs).
+  static const bool available = fma_filters_available() && kernels_asked() != "avx2" && __builtin_cpu_supports("avx512f");
   return available;
 #else
   return false;

@@ -27,7 +27,8 @@ namespace frictionlab::detail {
 bool fma_filters_available();
 
 /// Whether the AVX-512 kernels (recursive_kernels_avx512.cpp, -mavx512f) were built and this
-/// CPU runs them (AVX-512F, AVX2 and FMA). Defined in filtfilt.cpp.
+/// CPU runs them (AVX-512F, AVX2 and FMA), and FRICTIONLAB_FILTER_KERNELS is neither "portable"
+/// nor "avx2" (which stops at the AVX2 kernels). Defined in filtfilt.cpp.
 bool avx512_filters_available();
 
 /// Each kernel returns false, doing nothing, when `sections` or `order` is outside 1..8 or the
