@@ -48,6 +48,9 @@ bool avx512_filters_available() {
 
 namespace {
 
+// Every value finite, in vector instructions (Eigen vectorises the sum; inf * 0 and NaN are NaN).
+bool all_finite(const Eigen::Ref<const Eigen::VectorXd>& v) { return !std::isnan((v.array() * 0.0).sum()); }
+
 // b and a divided by a(0) and zero-padded to a common length (scipy's lfilter / lfilter_zi).
 TransferFunction normalized(const TransferFunction& tf) {
   if (tf.a.size() == 0 || tf.a(0) == 0.0) {
@@ -105,8 +108,11 @@ void lfilter_in_place(const TransferFunction& tf, double* z, double* x, Eigen::I
 // and FMA, the fused multiply-add kernel (recursive_kernels.hpp).
 void lfilter_dispatch(const TransferFunction& tf, double* z, double* x, Eigen::Index count, int step) {
   const int order = static_cast<int>(tf.a.size() - 1);
-  if (detail::fma_filters_available() && (detail::lfilter_blocks_fma(tf.b.data(), tf.a.data(), order, z, x, count, step) ||
-                                          detail::lfilter_fma(tf.b.data(), tf.a.data(), order, z, x, count, step)))
+  // Blocks only over finite samples: a NaN must reach every later output, as in the serial recursion.
+  const auto finite = [&] { return all_finite(Eigen::Map<const Eigen::VectorXd>(step > 0 ? x : x - (count - 1), count)); };
+  if (detail::fma_filters_available() &&
+      ((count > 0 && finite() && detail::lfilter_blocks_fma(tf.b.data(), tf.a.data(), order, z, x, count, step)) ||
+       detail::lfilter_fma(tf.b.data(), tf.a.data(), order, z, x, count, step)))
     return;
   switch (tf.a.size() - 1) {
     case 2: return lfilter_in_place<2>(tf, z, x, count, step);
@@ -192,14 +198,17 @@ void cascade(const SectionCoefficients& s, double* z, double* x, Eigen::Index co
 // of out, keeping samples 0, q, 2q, ...: odd extension, forward pass from the steady state of
 // the first sample, backward pass from the steady state of the last output.
 // `data` holds (n + 2 padlen) W doubles of work space.
+// `split`: the columns are finite, so a long record may run in halves (recursive_kernels.hpp);
+// a NaN must instead reach every later output, as in the serial recursion.
 template <int W>
 void filtfilt_block(const SectionCoefficients& s, const Eigen::MatrixX2d& zi, const ColumnViews& x,
-                    Eigen::Index c0, Eigen::Index padlen, Eigen::Index q, Eigen::MatrixXd& out, double* const data) {
+                    Eigen::Index c0, Eigen::Index padlen, Eigen::Index q, Eigen::MatrixXd& out, double* const data,
+                    bool split) {
   const Eigen::Index n = x.front().size(), m = n + 2 * padlen, ns = s.rows();
   const int used = static_cast<int>(std::min<Eigen::Index>(W, static_cast<Eigen::Index>(x.size()) - c0));
   // With AVX2 and FMA: the fused multiply-add kernels, and the forward pass reads the signal
   // from its columns (`gather`; the padding must hold the first sample the states start from).
-  const bool fma = W == 4 && detail::fma_filters_available() && ns <= 8;
+  const bool fma = W == 4 && detail::fma_filters_available() && ns >= 1 && ns <= 8;
   const bool gather = fma && used == W && padlen > 0;
   for (int c = used; c < W; ++c) {
     for (Eigen::Index i = 0; i < m; ++i) data[i * W + c] = 0.0;  // an idle lane
@@ -223,7 +232,7 @@ void filtfilt_block(const SectionCoefficients& s, const Eigen::MatrixX2d& zi, co
     }
   };
   // One pass over count samples from `from` (in place, interleaved).
-  const bool avx512 = fma && detail::avx512_filters_available();
+  const bool avx512 = fma && split && detail::avx512_filters_available();
   const auto pass = [&](double* from, Eigen::Index count, int step) {
     if (avx512 && detail::cascade4_halves_avx512(s.data(), static_cast<int>(ns), z.data(), from, count, step)) return;
     if (fma) detail::cascade4_fma(s.data(), static_cast<int>(ns), z.data(), from, count, step);
@@ -241,8 +250,12 @@ void filtfilt_block(const SectionCoefficients& s, const Eigen::MatrixX2d& zi, co
       detail::cascade4_gather_fma(s.data(), static_cast<int>(ns), z.data(), in, n, data + padlen * W);
     pass(data + (padlen + n) * W, padlen, 1);
   } else {
+    // The same three stretches, so that the halves kernel (which needs a long stretch) decides
+    // alike whether the signal was gathered or copied: a column's numbers do not depend on it.
     start(data);
-    pass(data, m, 1);
+    pass(data, padlen, 1);
+    pass(data + padlen * W, n, 1);
+    pass(data + (padlen + n) * W, padlen, 1);
   }
   start(data + (m - 1) * W);
   pass(data + (m - 1) * W, m, -1);
@@ -407,14 +420,15 @@ Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Column
   // The widest block's work space (three columns run four lanes, one idle). With the FMA
   // kernels every block runs four lanes, so that a column comes out the same (to the bit)
   // whichever columns share its block.
-  const bool fma = detail::fma_filters_available() && s.rows() <= 8;
+  const bool fma = detail::fma_filters_available() && s.rows() >= 1 && s.rows() <= 8;
+  const bool split = std::all_of(varying.begin(), varying.end(), [](const auto& v) { return all_finite(v); });
   const Eigen::Index widest = filtered.cols() == 0 ? 0 : fma || filtered.cols() > 2 ? kLanes : filtered.cols();
   double* const block = widest == 0 ? nullptr : frame.get((n + 2 * padlen) * widest).data();
   for (Eigen::Index c = 0; c < filtered.cols(); c += kLanes) {
     const Eigen::Index lanes = fma ? kLanes : std::min<Eigen::Index>(kLanes, filtered.cols() - c);
-    if (lanes == 1) filtfilt_block<1>(s, zi, varying, c, padlen, keep_every, filtered, block);
-    else if (lanes == 2) filtfilt_block<2>(s, zi, varying, c, padlen, keep_every, filtered, block);
-    else filtfilt_block<kLanes>(s, zi, varying, c, padlen, keep_every, filtered, block);  // 3 columns: one idle lane
+    if (lanes == 1) filtfilt_block<1>(s, zi, varying, c, padlen, keep_every, filtered, block, split);
+    else if (lanes == 2) filtfilt_block<2>(s, zi, varying, c, padlen, keep_every, filtered, block, split);
+    else filtfilt_block<kLanes>(s, zi, varying, c, padlen, keep_every, filtered, block, split);  // 3 columns: one idle lane
   }
   for (std::size_t j = 0; j < where.size(); ++j) out.col(where[j]) = filtered.col(static_cast<Eigen::Index>(j));
   return out;

@@ -32,7 +32,9 @@ bool fma_filters_available();
 bool avx512_filters_available();
 
 /// Each kernel returns false, doing nothing, when `sections` or `order` is outside 1..8 or the
-/// kernels were not built (then fma_filters_available() is false too).
+/// kernels were not built (then fma_filters_available() is false too). The block and halves
+/// kernels take finite samples only: a NaN must reach every later output, as in the serial
+/// recursion, and a block started from a zero state would not carry it (the caller checks).
 ///
 /// Four interleaved channels (x[4 n + c], c = 0..3) through `sections` second-order sections
 /// (1..8), in place over `count` samples; step +1 runs forward from x, -1 runs

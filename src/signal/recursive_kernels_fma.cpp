@@ -108,7 +108,7 @@ struct Blocks {
       double z[K] = {};
       z[unit] = 1.0;
       Index quiet_since = -1;
-      for (Index n = 0; n < 2 * limit; ++n) {
+      for (Index n = 0; n < 2 * limit + 2; ++n) {  // a quiet_since up to limit gets its whole check
         const double y = z[0];
         double size = 0;
         for (int i = 0; i + 1 < K; ++i) {
@@ -122,7 +122,7 @@ struct Blocks {
         else if (quiet_since < 0) quiet_since = n;
         if (quiet_since >= 0 && n >= 2 * quiet_since + 1) break;  // quiet as long again as it took
       }
-      if (quiet_since < 0 || quiet_since > limit) return 0;
+      if (quiet_since < 0 || quiet_since > limit) return 0;  // never quiet, or not checked to the end
       longest = longest > quiet_since + 1 ? longest : quiet_since + 1;
     }
     return longest;

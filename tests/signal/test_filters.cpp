@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -381,4 +382,30 @@ TEST(Decimate, HalvesKernelRunsOnLongRecords) {
   };
   EXPECT_TRUE(attempt(20000));
   EXPECT_FALSE(attempt(8191));
+}
+
+// A NaN reaches every later sample of a recursion, and filtfilt's backward pass carries it to all
+// of them, as scipy's does: the block and halves kernels, which start blocks from a zero state,
+// must not run on such a record (they would return finite numbers after the NaN's block).
+TEST(Filtfilt, ANaNInALongRecordReachesEveryLaterOutput) {
+  Eigen::VectorXd x = wandering(30001, 3);
+  x(10000) = std::numeric_limits<double>::quiet_NaN();
+  const fl::TransferFunction tf = fl::butter(4, 0.2);
+  const Eigen::VectorXd y = fl::lfilter(tf, x);
+  EXPECT_TRUE(y.head(10000).allFinite());
+  EXPECT_TRUE(y.tail(20001).array().isNaN().all());
+  EXPECT_TRUE(fl::filtfilt(tf, x).array().isNaN().all());
+  Eigen::MatrixXd m(x.size(), 4);
+  for (Eigen::Index c = 0; c < 4; ++c) m.col(c) = wandering(x.size(), static_cast<unsigned>(20 + c));
+  m.col(2) = x;
+  const Eigen::MatrixXd f = fl::sosfiltfilt_columns(fl::cheby1_sos(8, 0.05, 0.08), m);
+  EXPECT_TRUE(f.col(2).array().isNaN().all());
+  EXPECT_TRUE(f.col(0).allFinite());
+}
+
+// No sections at all: the identity, with every block width (the gathering forward pass included).
+TEST(Filtfilt, NoSectionsIsTheIdentity) {
+  Eigen::MatrixXd m(20001, 5);
+  for (Eigen::Index c = 0; c < m.cols(); ++c) m.col(c) = wandering(m.rows(), static_cast<unsigned>(40 + c));
+  EXPECT_EQ(fl::sosfiltfilt_columns(fl::SecondOrderSections(0, 6), m), m);
 }
