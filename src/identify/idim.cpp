@@ -16,6 +16,7 @@
 #include "frictionlab/signal/differentiate.hpp"
 #include "frictionlab/signal/filtfilt.hpp"
 #include "frictionlab/signal/sampling.hpp"
+#include "../signal/all_finite.hpp"
 #include "../signal/scratch.hpp"
 
 namespace frictionlab {
@@ -32,9 +33,7 @@ void check_signal(const IdimData& d, const Vec& v, const char* name, Eigen::Inde
     throw std::invalid_argument(where(d) + name + " has " + std::to_string(v.size()) + " samples; expected " +
                                 std::to_string(n) + " like time");
   }
-  // The common case in vector instructions (Eigen vectorises the sum; inf * 0 and NaN are
-  // NaN); else the loop finds the sample.
-  if (!std::isnan((v.array() * 0.0).sum())) return;
+  if (detail::all_finite(v)) return;  // the common case; else the loop finds the sample
   for (Eigen::Index k = 0; k < n; ++k) {
     if (!std::isfinite(v(k))) {
       throw std::invalid_argument(where(d) + "sample " + std::to_string(k + 1) + ": " + name + " = " + detail::format_value(v(k), 6) +

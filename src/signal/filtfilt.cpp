@@ -1,5 +1,6 @@
 #include "frictionlab/signal/filtfilt.hpp"
 
+#include "all_finite.hpp"
 #include "recursive_kernels.hpp"
 #include "scratch.hpp"
 
@@ -47,9 +48,6 @@ bool avx512_filters_available() {
 }  // namespace detail
 
 namespace {
-
-// Every value finite, in vector instructions (Eigen vectorises the sum; inf * 0 and NaN are NaN).
-bool all_finite(const Eigen::Ref<const Eigen::VectorXd>& v) { return !std::isnan((v.array() * 0.0).sum()); }
 
 // b and a divided by a(0) and zero-padded to a common length (scipy's lfilter / lfilter_zi).
 TransferFunction normalized(const TransferFunction& tf) {
@@ -109,7 +107,7 @@ void lfilter_in_place(const TransferFunction& tf, double* z, double* x, Eigen::I
 void lfilter_dispatch(const TransferFunction& tf, double* z, double* x, Eigen::Index count, int step) {
   const int order = static_cast<int>(tf.a.size() - 1);
   // Blocks only over finite samples: a NaN must reach every later output, as in the serial recursion.
-  const auto finite = [&] { return all_finite(Eigen::Map<const Eigen::VectorXd>(step > 0 ? x : x - (count - 1), count)); };
+  const auto finite = [&] { return detail::all_finite(Eigen::Map<const Eigen::VectorXd>(step > 0 ? x : x - (count - 1), count)); };
   if (detail::fma_filters_available() &&
       ((count > 0 && finite() && detail::lfilter_blocks_fma(tf.b.data(), tf.a.data(), order, z, x, count, step)) ||
        detail::lfilter_fma(tf.b.data(), tf.a.data(), order, z, x, count, step)))
@@ -194,6 +192,9 @@ void cascade(const SectionCoefficients& s, double* z, double* x, Eigen::Index co
   }
 }
 
+// Whether a cascade of `sections` runs on the FMA kernels (four lanes; 1 to 8 sections).
+bool fma_cascade(Eigen::Index sections) { return detail::fma_filters_available() && sections >= 1 && sections <= 8; }
+
 // sosfiltfilt of columns c0 .. c0 + W - 1 of x (fewer at the right edge) into the same columns
 // of out, keeping samples 0, q, 2q, ...: odd extension, forward pass from the steady state of
 // the first sample, backward pass from the steady state of the last output.
@@ -208,7 +209,7 @@ void filtfilt_block(const SectionCoefficients& s, const Eigen::MatrixX2d& zi, co
   const int used = static_cast<int>(std::min<Eigen::Index>(W, static_cast<Eigen::Index>(x.size()) - c0));
   // With AVX2 and FMA: the fused multiply-add kernels, and the forward pass reads the signal
   // from its columns (`gather`; the padding must hold the first sample the states start from).
-  const bool fma = W == 4 && detail::fma_filters_available() && ns >= 1 && ns <= 8;
+  const bool fma = W == 4 && fma_cascade(ns);
   const bool gather = fma && used == W && padlen > 0;
   for (int c = used; c < W; ++c) {
     for (Eigen::Index i = 0; i < m; ++i) data[i * W + c] = 0.0;  // an idle lane
@@ -420,8 +421,8 @@ Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Column
   // The widest block's work space (three columns run four lanes, one idle). With the FMA
   // kernels every block runs four lanes, so that a column comes out the same (to the bit)
   // whichever columns share its block.
-  const bool fma = detail::fma_filters_available() && s.rows() >= 1 && s.rows() <= 8;
-  const bool split = std::all_of(varying.begin(), varying.end(), [](const auto& v) { return all_finite(v); });
+  const bool fma = fma_cascade(s.rows());
+  const bool split = std::all_of(varying.begin(), varying.end(), [](const auto& v) { return detail::all_finite(v); });
   const Eigen::Index widest = filtered.cols() == 0 ? 0 : fma || filtered.cols() > 2 ? kLanes : filtered.cols();
   double* const block = widest == 0 ? nullptr : frame.get((n + 2 * padlen) * widest).data();
   for (Eigen::Index c = 0; c < filtered.cols(); c += kLanes) {

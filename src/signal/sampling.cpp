@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "frictionlab/models/parameter.hpp"
+#include "all_finite.hpp"
 #include "scratch.hpp"
 
 namespace frictionlab {
@@ -90,11 +91,10 @@ double check_regular_sampling(const Eigen::VectorXd& t, const RegularSamplingChe
     throw SamplingError(SamplingProblem::too_few, c.where + "time has " + std::to_string(n) +
                                                       " samples; expected at least " + std::to_string(needed));
   }
-  // The common case in vector instructions (Eigen vectorises sums and minima; inf * 0 and NaN
-  // are NaN); else the loop finds the first offending sample.
+  // The common case in vector instructions; else the loop finds the first offending sample.
   const auto steps = t.tail(n - 1) - t.head(n - 1);
   const double smallest = steps.minCoeff();
-  const bool clean = !std::isnan((t.array() * 0.0).sum()) && smallest > 0;
+  const bool clean = detail::all_finite(t) && smallest > 0;
   for (Eigen::Index k = 0; k < n && !clean; ++k) {
     if (!std::isfinite(t(k))) {
       throw SamplingError(SamplingProblem::not_finite,
