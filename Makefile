@@ -11,6 +11,8 @@ CMAKE_ARGS ?=
 CONFIGURE   = cmake -S . -B $(1) -DPython_EXECUTABLE=$(PYTHON) $(CMAKE_ARGS) $(2) >/dev/null
 # Inherited by cmake's own makes: the build prints its progress, not "Entering directory" lines.
 MAKEFLAGS  += --no-print-directory
+# ccache (when installed) keys objects by paths relative to the checkout, so clones share them.
+export CCACHE_BASEDIR ?= $(CURDIR)
 # The fuzzers (tests/fuzz): a Clang build of their own; seconds per target in make fuzz and in make test.
 FUZZ_BUILD        ?= build-fuzz
 FUZZ_SECONDS      ?= 600

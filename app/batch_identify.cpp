@@ -12,9 +12,9 @@
 
 #include "frictionlab/format.hpp"
 #include "frictionlab/io/atomic_write.hpp"
-#include "frictionlab/io/figure.hpp"
+#include "frictionlab/report/figure.hpp"
 #include "frictionlab/io/sha256.hpp"
-#include "frictionlab/io/shard.hpp"
+#include "frictionlab/fleet/shard.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {

@@ -17,7 +17,7 @@
 
 #include "frictionlab/analysis/drift.hpp"
 #include "frictionlab/identify/result.hpp"
-#include "frictionlab/io/shard.hpp"
+#include "frictionlab/fleet/shard.hpp"
 
 namespace frictionlab::cli {
 
@@ -73,7 +73,7 @@ std::vector<BatchRow> run_batch(const std::vector<BatchJob>& jobs, int threads,
                                 const std::function<double(const std::string& file, const std::string& column)>& date_of_column);
 
 /// The table: columns index, file, [date,] status, message, method, model, axis, then each
-/// parameter P as P, P_std, P_unit (grown columns of io/shard.hpp: in order of first appearance by
+/// parameter P as P, P_std, P_unit (grown columns of fleet/shard.hpp: in order of first appearance by
 /// job index), then relative_error_percent, rmse, rmse_unit, samples, sha256; one row per BatchRow
 /// (index and samples as integers, NaN where a row has no value, e.g. a failed file's parameters).
 RowTable batch_table(const std::vector<BatchRow>& rows, bool with_date);
@@ -104,7 +104,7 @@ void write_drift(const std::vector<DriftRow>& drift, const std::string& drift_fi
 /// --plot; --json and --report are one file's outputs and are refused with a batch), identifies
 /// every job, writes the table (stdout when --table is not given), the drift table and figure,
 /// and prints "N files: K ok, F failed" on stderr, one line per failure. With --shard K/N: the
-/// shard's jobs only, written as a part file (io/shard.hpp, command "identify", key batch_key) to
+/// shard's jobs only, written as a part file (fleet/shard.hpp, command "identify", key batch_key) to
 /// --table PART.json; --drift and --plot are refused (the drift needs every file).
 /// \returns 0 when at least one file gave a result (or the shard has no files), 2 when every
 /// file failed (the table or part is still written).

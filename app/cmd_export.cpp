@@ -8,7 +8,7 @@
 
 #include "commands.hpp"
 #include "frictionlab/io/atomic_write.hpp"
-#include "frictionlab/io/c_export.hpp"
+#include "frictionlab/export/c_export.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {

@@ -1,5 +1,5 @@
 // frictionlab merge PART... -o OUT [--plot FIG] [--drift FILE] [--drift-threshold K] [--scenario FILE]
-//                   [--overwrite]: joins the part files that `--shard K/N` runs wrote (io/shard.hpp
+//                   [--overwrite]: joins the part files that `--shard K/N` runs wrote (fleet/shard.hpp
 // checks that they belong together and are complete) into the output the unsharded run writes:
 // CSV for OUT.csv, JSON for OUT.json, equal byte for byte. --plot draws the whole run's figure
 // with the unsharded run's own code: a map's (draw_map), or a dated batch's drift figure
@@ -10,8 +10,8 @@
 
 #include "batch_identify.hpp"
 #include "commands.hpp"
-#include "frictionlab/io/figure.hpp"
-#include "frictionlab/io/shard.hpp"
+#include "frictionlab/report/figure.hpp"
+#include "frictionlab/fleet/shard.hpp"
 #include "map_command.hpp"
 #include "output.hpp"
 

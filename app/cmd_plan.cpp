@@ -9,7 +9,7 @@
 #include "frictionlab/analysis/plan/plan.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/io/atomic_write.hpp"
-#include "frictionlab/io/plan_files.hpp"
+#include "frictionlab/scenario/plan_files.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {

@@ -8,10 +8,10 @@
 #include "frictionlab/format.hpp"
 #include "contour_figure.hpp"
 #include "figures.hpp"
-#include "frictionlab/io/figure.hpp"
+#include "frictionlab/report/figure.hpp"
 #include "output.hpp"
 #include "frictionlab/io/atomic_write.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 namespace frictionlab::cli {

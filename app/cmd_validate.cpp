@@ -21,8 +21,8 @@
 #include "frictionlab/identify/validate.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/io/columns.hpp"
-#include "frictionlab/io/law_file.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/law_file.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {
@@ -43,7 +43,7 @@ struct ModelFile {
   std::string data_file, data_sha256;
 };
 
-// The one model reader (io/law_file.hpp: whole file, status ok) and the plant values, each
+// The one model reader (scenario/law_file.hpp: whole file, status ok) and the plant values, each
 // checked here so that a bad value is blamed on MODEL.json, not on the scenario.
 ModelFile read_model(const std::string& path) {
   const nlohmann::json j = read_model_json(path);

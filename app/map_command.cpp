@@ -13,11 +13,11 @@
 #include "frictionlab/analysis/map.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/io/atomic_write.hpp"
-#include "frictionlab/io/figure.hpp"
-#include "frictionlab/io/map_run.hpp"
-#include "frictionlab/io/scenario_grid.hpp"
+#include "frictionlab/report/figure.hpp"
+#include "frictionlab/fleet/map_run.hpp"
+#include "frictionlab/scenario/scenario_grid.hpp"
 #include "frictionlab/io/sha256.hpp"
-#include "frictionlab/io/shard.hpp"
+#include "frictionlab/fleet/shard.hpp"
 
 namespace frictionlab::cli {
 namespace {

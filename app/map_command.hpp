@@ -4,7 +4,7 @@
 //   [--tolerance F]
 // The map part of `analyze` (app/cmd_analyze.cpp owns the subcommand): a grid of simulations of a
 // scenario file, each point classified (analysis/map.hpp), with theory where it applies; written
-// as a table (io/shard.hpp) or, with --shard, as a part that `frictionlab merge` joins; the map's
+// as a table (fleet/shard.hpp) or, with --shard, as a part that `frictionlab merge` joins; the map's
 // figure (draw_map), drawn alike for an unsharded run and for merged parts.
 
 #include <CLI/CLI.hpp>
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "frictionlab/io/figure.hpp"
-#include "frictionlab/io/shard.hpp"
+#include "frictionlab/report/figure.hpp"
+#include "frictionlab/fleet/shard.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {

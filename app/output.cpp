@@ -17,8 +17,8 @@
 #include "frictionlab/format.hpp"
 #include "frictionlab/identify/method.hpp"
 #include "frictionlab/io/atomic_write.hpp"
-#include "frictionlab/io/figure.hpp"
-#include "frictionlab/io/report.hpp"
+#include "frictionlab/report/figure.hpp"
+#include "frictionlab/report/report.hpp"
 #include "frictionlab/version.hpp"
 
 #include <nlohmann/json.hpp>

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "frictionlab/identify/result.hpp"
-#include "frictionlab/io/report.hpp"
+#include "frictionlab/report/report.hpp"
 
 namespace frictionlab::cli {
 

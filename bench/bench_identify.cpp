@@ -11,7 +11,7 @@
 
 #include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/static_fit.hpp"
-#include "frictionlab/io/idim_record.hpp"
+#include "frictionlab/identify/idim_record.hpp"
 #include "frictionlab/io/mat.hpp"
 
 namespace {

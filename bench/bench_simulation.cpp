@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/plants/spring_base.hpp"
 #include "frictionlab/simulate/batch.hpp"
 #include "frictionlab/simulate/simulate.hpp"

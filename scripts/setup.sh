@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
+  ccache  # repeated builds (a second checkout, the fuzz and Python builds) reuse compiled objects
   libeigen3-dev libceres-dev libsundials-dev libcli11-dev nlohmann-json3-dev
   libyaml-cpp-dev libmatio-dev zlib1g-dev libdeflate-dev libssl-dev libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-scipy python3-pytest

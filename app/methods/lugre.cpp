@@ -10,7 +10,7 @@
 #include "frictionlab/models/friction_law.hpp"
 #include "method.hpp"
 #include "frictionlab/identify/lugre.hpp"
-#include "frictionlab/io/law_file.hpp"
+#include "frictionlab/scenario/law_file.hpp"
 
 namespace frictionlab::cli {
 namespace {

@@ -1,4 +1,4 @@
-// Code for the drive: frictionlab.export_c, the C99 header of io/c_export.hpp.
+// Code for the drive: frictionlab.export_c, the C99 header of export/c_export.hpp.
 #include <pybind11/stl.h>
 
 #include <optional>
@@ -6,7 +6,7 @@
 #include "common.hpp"
 #include "frictionlab/identify/validate.hpp"
 #include "frictionlab/io/atomic_write.hpp"
-#include "frictionlab/io/c_export.hpp"
+#include "frictionlab/export/c_export.hpp"
 
 namespace frictionlab::python {
 namespace {

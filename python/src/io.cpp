@@ -4,7 +4,7 @@
 #include "common.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/io/columns.hpp"
-#include "frictionlab/io/law_file.hpp"
+#include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/io/load.hpp"
 #include "frictionlab/io/sha256.hpp"
 

@@ -133,7 +133,7 @@ py::array_t<double> to_array(std::span<const double> values) {
   return out;
 }
 
-void init_export(py::module_& m);  // export.cpp: export_c (the C header of io/c_export.hpp)
+void init_export(py::module_& m);  // export.cpp: export_c (the C header of export/c_export.hpp)
 void init_contour(py::module_& m);  // contour.cpp: analyze_contour (analysis/contour.hpp)
 void init_plan(py::module_& m);  // plan.cpp: _plan, the core of frictionlab.plan (analysis/plan/plan.hpp)
 

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "common.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/plants/closed_loop.hpp"
 #include "frictionlab/plants/xy_table.hpp"
 #include "frictionlab/simulate/simulate.hpp"

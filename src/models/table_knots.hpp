@@ -1,6 +1,6 @@
 #pragma once
 // The interpolation points of a Table (models/table.hpp), shared by the table itself and the code
-// generator of io/c_export.cpp, which writes them into a C header: one definition of how a table
+// generator of export/c_export.cpp, which writes them into a C header: one definition of how a table
 // splits into its two directions and of its monotone slopes, so the header interpolates exactly
 // as the library does.
 

@@ -16,8 +16,8 @@
 
 #include "error_message.hpp"
 #include "frictionlab/analysis/contour_validation.hpp"
-#include "frictionlab/io/law_file.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/law_file.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/plants/xy_table.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 

@@ -13,8 +13,8 @@
 #include "frictionlab/analysis/describing_function.hpp"
 #include "frictionlab/analysis/map.hpp"
 #include "frictionlab/analysis/sliding_stability.hpp"
-#include "frictionlab/io/map_run.hpp"
-#include "frictionlab/io/scenario_grid.hpp"
+#include "frictionlab/fleet/map_run.hpp"
+#include "frictionlab/scenario/scenario_grid.hpp"
 #include <cstdio>
 
 namespace frictionlab {

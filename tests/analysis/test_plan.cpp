@@ -12,7 +12,7 @@
 #include "error_message.hpp"
 #include "frictionlab/analysis/plan/fisher.hpp"
 #include "frictionlab/analysis/plan/plan.hpp"
-#include "frictionlab/io/plan_files.hpp"
+#include "frictionlab/scenario/plan_files.hpp"
 
 using namespace frictionlab;
 using frictionlab::testing::error_of;

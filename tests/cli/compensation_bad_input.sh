@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A scenario's `compensation:` block that does not fit (io/scenario.hpp): exit 2 with a one-line
+# A scenario's `compensation:` block that does not fit (scenario/scenario.hpp): exit 2 with a one-line
 # message naming the file and the key (a LuGre observer without a LuGre law, an unknown type, a
 # parameter of another type, an unknown key, a model file that is not there); nothing written.
 # Usage: compensation_bad_input.sh PATH_TO_frictionlab SOURCE_DIR

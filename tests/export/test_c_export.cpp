@@ -1,4 +1,4 @@
-// The exported C header (io/c_export.hpp) against the library: each header is compiled with the
+// The exported C header (export/c_export.hpp) against the library: each header is compiled with the
 // system C compiler in strict C99 (cc -std=c99 -Wall -Wextra -Werror -pedantic) into a small
 // program that prints the law over a velocity grid and a fixed-step run over a rig-like record;
 // the numbers must be the library's.
@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "error_message.hpp"
-#include "frictionlab/io/c_export.hpp"
+#include "frictionlab/export/c_export.hpp"
 #include "temp_dir.hpp"
 
 namespace frictionlab {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "frictionlab/io/law_file.hpp"
+#include "frictionlab/scenario/law_file.hpp"
 #include "fuzz_input_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "fuzz_input_file.hpp"
 #include "scenario_data.hpp"
 

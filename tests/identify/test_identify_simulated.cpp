@@ -7,7 +7,7 @@
 #include "frictionlab/identify/breakaway.hpp"
 #include "frictionlab/identify/decay.hpp"
 #include "frictionlab/identify/sweep.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 namespace fl = frictionlab;

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "frictionlab/identify/idim.hpp"
-#include "frictionlab/io/idim_record.hpp"
+#include "frictionlab/identify/idim_record.hpp"
 #include "frictionlab/io/mat.hpp"
 
 namespace fl = frictionlab;

@@ -17,8 +17,8 @@
 
 #include "error_message.hpp"
 #include "frictionlab/io/atomic_write.hpp"
-#include "frictionlab/io/law_file.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/law_file.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/simulate/output_size.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "temp_dir.hpp"

@@ -9,8 +9,8 @@
 #include <string>
 #include <unistd.h>
 
-#include "frictionlab/io/figure.hpp"
-#include "frictionlab/io/report.hpp"
+#include "frictionlab/report/figure.hpp"
+#include "frictionlab/report/report.hpp"
 
 namespace fs = std::filesystem;
 using namespace frictionlab;

@@ -1,4 +1,4 @@
-// io/shard.hpp: shard specs, job selection, part files, merge checks, table writers.
+// fleet/shard.hpp: shard specs, job selection, part files, merge checks, table writers.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "error_message.hpp"
-#include "frictionlab/io/shard.hpp"
+#include "frictionlab/fleet/shard.hpp"
 
 namespace frictionlab {
 namespace {

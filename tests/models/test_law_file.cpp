@@ -16,7 +16,7 @@
 
 #include "error_message.hpp"
 #include "temp_dir.hpp"
-#include "frictionlab/io/law_file.hpp"
+#include "frictionlab/scenario/law_file.hpp"
 
 namespace frictionlab {
 namespace {

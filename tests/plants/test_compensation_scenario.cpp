@@ -1,4 +1,4 @@
-// The `compensation:` block of scenario files (io/scenario.hpp): what it builds on a pid loop and
+// The `compensation:` block of scenario files (scenario/scenario.hpp): what it builds on a pid loop and
 // on the xy-table's axes, the messages of bad blocks, and the two compensated examples: the
 // lecture's hunting case settles, and feedforward flattens the circular test's quadrant glitches.
 #include <gtest/gtest.h>
@@ -15,7 +15,7 @@
 #include "frictionlab/control/disturbance_observer.hpp"
 #include "frictionlab/control/feedforward.hpp"
 #include "frictionlab/control/lugre_observer.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/models/viscous.hpp"
 #include "frictionlab/plants/closed_loop.hpp"
 #include "frictionlab/plants/xy_table.hpp"

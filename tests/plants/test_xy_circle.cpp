@@ -12,7 +12,7 @@
 #include "error_message.hpp"
 #include "radial_error.hpp"
 #include "frictionlab/core/contour_input.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/models/viscous.hpp"
 #include "frictionlab/plants/xy_table.hpp"
 #include "frictionlab/simulate/simulate.hpp"

@@ -1,4 +1,4 @@
-// Scenario files of the two-axis table (io/scenario.hpp): what they build, and the messages of
+// Scenario files of the two-axis table (scenario/scenario.hpp): what they build, and the messages of
 // bad ones (file, key path, value, unit).
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "error_message.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/plants/xy_table.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "temp_dir.hpp"

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/plants/spring_base.hpp"
 #include "frictionlab/simulate/batch.hpp"
 #include "frictionlab/simulate/simulate.hpp"

@@ -6,7 +6,7 @@
 #include <thread>
 #include <vector>
 
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "simulate/column_pool.hpp"
 

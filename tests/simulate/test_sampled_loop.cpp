@@ -10,7 +10,7 @@
 #include <fstream>
 
 #include "frictionlab/io/mat.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/plants/emps_pd.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "temp_dir.hpp"

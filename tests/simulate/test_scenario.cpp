@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/plants/closed_loop.hpp"
 #include "frictionlab/plants/dc_motor.hpp"
 

@@ -10,9 +10,9 @@
 
 #include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/validate.hpp"
-#include "frictionlab/io/idim_record.hpp"
+#include "frictionlab/identify/idim_record.hpp"
 #include "frictionlab/io/mat.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/plants/emps_pd.hpp"
 
 namespace fl = frictionlab;

@@ -1,6 +1,6 @@
 #pragma once
 // Validation of a two-axis machine's models on a circular test: the scenario (an xy-table whose
-// axes carry the identified models, io/scenario.hpp ScenarioOptions::axis_models) is simulated
+// axes carry the identified models, scenario/scenario.hpp ScenarioOptions::axis_models) is simulated
 // over a measured run and compared axis by axis (identify/validate.hpp validate_axes), and the
 // contour of the measured and of the simulated path (analysis/contour.hpp: quadrant glitches,
 // roundness) are compared against the scenario's reference.

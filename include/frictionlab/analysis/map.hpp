@@ -7,7 +7,7 @@
 // linearised sliding stability of a spring-block on a Stribeck law, analysis/sliding_stability.hpp;
 // the describing-function hunting cycle of a PID loop with Coulomb and static friction,
 // analysis/describing_function.hpp). Building the scenario of each point from a file is the io
-// layer's (io/scenario_grid.hpp); the table and its sharding, io/shard.hpp's.
+// layer's (scenario/scenario_grid.hpp); the table and its sharding, fleet/shard.hpp's.
 
 #include <cstddef>
 #include <functional>

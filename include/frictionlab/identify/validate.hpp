@@ -54,7 +54,7 @@ struct ValidateOptions {
 };
 
 /// Simulates `model` in `scenario` (its plant must already carry the model's inertia, offset and
-/// law, see io/scenario.hpp ScenarioOptions; its options are overridden: duration (N - 1) dt,
+/// law, see scenario/scenario.hpp ScenarioOptions; its options are overridden: duration (N - 1) dt,
 /// output rate 1/dt, initial state per options) and compares with `data`.
 /// Simulated force: gtau * v(k) for an EMPS loop (the drive input the controller computed at
 /// sample k, counterpart of the measured gtau * vir), the scenario input for an open loop.
@@ -87,7 +87,7 @@ struct MultiAxisValidationData {
 };
 
 /// validate_model for a plant with several named contacts (an xy-table): the scenario (its axes
-/// already carrying the identified models, see io/scenario.hpp ScenarioOptions::axis_models) is
+/// already carrying the identified models, see scenario/scenario.hpp ScenarioOptions::axis_models) is
 /// simulated over the record (duration (N - 1) dt, output rate 1/dt, initial state: each axis at
 /// its measured position and derived velocity of sample 0 when options.initial_state_from_data,
 /// else the scenario's) and each axis's position, velocity, acceleration (derived as in

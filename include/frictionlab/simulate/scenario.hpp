@@ -11,7 +11,7 @@
 
 namespace frictionlab {
 
-/// Everything simulate() needs. Scenario files (io/scenario.hpp) produce one.
+/// Everything simulate() needs. Scenario files (scenario/scenario.hpp) produce one.
 struct Scenario {
   std::shared_ptr<const Plant> plant;  ///< required (closed loops are plants too)
   FrictionLaw law;                     ///< friction on every contact whose Contact::law is null

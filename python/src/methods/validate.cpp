@@ -4,7 +4,7 @@
 #include "frictionlab/identify/lugre.hpp"
 #include "frictionlab/identify/validate.hpp"
 #include "frictionlab/io/load.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 
 #include "method.hpp"
 

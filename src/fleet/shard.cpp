@@ -1,4 +1,4 @@
-#include "frictionlab/io/shard.hpp"
+#include "frictionlab/fleet/shard.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #include "frictionlab/models/parameter.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -17,9 +17,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "frictionlab/io/c_export.hpp"
+#include "frictionlab/export/c_export.hpp"
 #include "frictionlab/io/columns.hpp"
-#include "frictionlab/io/law_file.hpp"
+#include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/io/load.hpp"
 #include "frictionlab/plants/axis.hpp"
 #include "frictionlab/plants/closed_loop.hpp"
@@ -232,7 +232,7 @@ FrictionLaw scaled_law(const FrictionLaw& law, double scale) {
 }
 
 // compensation: {type, model: FILE | friction: {law: ...}, scale, and the type's own parameters}
-// (see io/scenario.hpp): the compensator it builds, with messages naming the block's keys.
+// (see scenario/scenario.hpp): the compensator it builds, with messages naming the block's keys.
 std::shared_ptr<const Compensator> read_compensation(const Section& s, const CompensationContext& ctx) {
   const std::string type = s.text("type", "");
   const auto& types = compensation_types();

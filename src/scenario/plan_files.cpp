@@ -1,12 +1,12 @@
-#include "frictionlab/io/plan_files.hpp"
+#include "frictionlab/scenario/plan_files.hpp"
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 
-#include "frictionlab/io/law_file.hpp"
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/law_file.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 
 namespace frictionlab {
 

@@ -1,4 +1,4 @@
-#include "frictionlab/io/report.hpp"
+#include "frictionlab/report/report.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "frictionlab/identify/result.hpp"
-#include "frictionlab/io/figure.hpp"
+#include "frictionlab/report/figure.hpp"
 
 namespace frictionlab {
 

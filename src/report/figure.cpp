@@ -1,4 +1,4 @@
-#include "frictionlab/io/figure.hpp"
+#include "frictionlab/report/figure.hpp"
 
 #include <algorithm>
 #include <cctype>

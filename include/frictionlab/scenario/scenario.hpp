@@ -3,7 +3,7 @@
 // duration, output rate, solver, initial state) turned into a Scenario.
 //
 //   plant:      {type: axis|pendulum|spring-base|dc-motor|velocity-drive|xy-table, ...parameters}
-//   friction:   {law: NAME, ...parameters}          # the law YAML form of io/law_file.hpp
+//   friction:   {law: NAME, ...parameters}          # the law YAML form of scenario/law_file.hpp
 //   input:      {type: constant|step|ramp|trapezoid|sine|table, ...}
 //   controller: {loop: position|velocity, Kp, Ki, Kd, limit}   # optional, continuous P/PI/PD/PID
 //   controller: {type: emps-pd, kp, kv, gtau, limit (10 V), dt, delay (1), pulses}  # EMPS loop
@@ -58,7 +58,7 @@
 // `compensation: none` on an axis switches it off there):
 //   compensation:
 //     type: feedforward | feedback | lugre-observer | disturbance-observer
-//     model: MODEL.json          # an identified model or a law file (io/law_file.hpp); relative
+//     model: MODEL.json          # an identified model or a law file (scenario/law_file.hpp); relative
 //                                # to the scenario file's directory, as `data:`
 //     friction: {law: lugre, ...}   # or the law itself, in the `friction:` syntax
 //     scale: 1.2                 # optional, > 0, default 1 (see below)

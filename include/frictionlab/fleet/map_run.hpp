@@ -1,7 +1,7 @@
 #pragma once
-// A whole map run from a scenario file: the grid's scenarios (io/scenario_grid.hpp), the points of
+// A whole map run from a scenario file: the grid's scenarios (scenario/scenario_grid.hpp), the points of
 // one shard simulated and classified (analysis/map.hpp), the theory at each point, and the rows as
-// the table that `frictionlab analyze map` writes, `frictionlab merge` joins (io/shard.hpp) and
+// the table that `frictionlab analyze map` writes, `frictionlab merge` joins (fleet/shard.hpp) and
 // Python's fl.analyze_map returns. One function, so that all three give the same rows.
 //
 // Columns: the varied keys (their units), then
@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "frictionlab/analysis/map.hpp"
-#include "frictionlab/io/shard.hpp"
+#include "frictionlab/fleet/shard.hpp"
 
 namespace frictionlab {
 

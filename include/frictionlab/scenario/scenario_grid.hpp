@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "frictionlab/io/scenario.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 
 namespace frictionlab {
 

@@ -1,11 +1,11 @@
-#include "frictionlab/io/map_run.hpp"
+#include "frictionlab/fleet/map_run.hpp"
 
 #include <cmath>
 
 #include <nlohmann/json.hpp>
 
 #include "frictionlab/identify/result.hpp"
-#include "frictionlab/io/scenario_grid.hpp"
+#include "frictionlab/scenario/scenario_grid.hpp"
 #include "frictionlab/io/sha256.hpp"
 
 namespace frictionlab {

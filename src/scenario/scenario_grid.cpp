@@ -1,4 +1,4 @@
-#include "frictionlab/io/scenario_grid.hpp"
+#include "frictionlab/scenario/scenario_grid.hpp"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "frictionlab/io/c_export.hpp"
+#include "frictionlab/export/c_export.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "frictionlab/io/law_file.hpp"
+#include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/version.hpp"
 #include "../models/table_knots.hpp"
 

@@ -1,4 +1,4 @@
-#include "frictionlab/io/law_file.hpp"
+#include "frictionlab/scenario/law_file.hpp"
 
 #include <yaml-cpp/yaml.h>
 

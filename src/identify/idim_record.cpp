@@ -1,4 +1,4 @@
-#include "frictionlab/io/idim_record.hpp"
+#include "frictionlab/identify/idim_record.hpp"
 
 #include "frictionlab/io/columns.hpp"
 
