@@ -1,5 +1,5 @@
 #pragma once
-// The column options every data-reading subcommand shares (DESIGN.md's command-line contract):
+// The column options every data-reading subcommand shares (docs/contract.md):
 // which column or variable is time, position, velocity, current, force or drive input, the
 // constants that turn a drive signal into force, unit scale factors, the axis kind, and how the
 // file is read (--names for a file without a header row, --resample and --max-gap for

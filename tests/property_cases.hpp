@@ -1,6 +1,6 @@
 #pragma once
 // The number of cases of a seeded property test: FRICTIONLAB_PROPERTY_CASES when set to a positive
-// integer, else 1000 (README, For developers).
+// integer, else 1000 (docs/developers.md).
 
 #include <cstdlib>
 

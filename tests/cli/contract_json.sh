@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The --json contract on bad input (DESIGN.md, README "Guarantees"): whatever goes wrong (the data
+# The --json contract on bad input (docs/contract.md, docs/guarantees.md): whatever goes wrong (the data
 # file empty, a bad cell, a missing column, a truncated .mat, a directory as DATA, a bad option,
 # a bad model file, data that gives no answer), `--json -` still prints one JSON object on stdout
 # with "schema": 1, "status": "error" and a message, the exit status is 2, and stderr carries

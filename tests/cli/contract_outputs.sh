@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Output files on bad paths (README "Guarantees"): every output path is checked before any work;
+# Output files on bad paths (docs/guarantees.md): every output path is checked before any work;
 # a directory is refused naming the option (exit 2); two outputs that are one file are refused;
 # a run that fails on its second output has not written its first; a device node or FIFO is
 # written through (as `cat >` would), never replaced by a regular file, with or without

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Scenario and law files that would break the run later (README "Guarantees"): an output larger
+# Scenario and law files that would break the run later (docs/guarantees.md): an output larger
 # than the memory there is (duration: 1e9, output_rate: 1e9) is exit 2 naming the key and the
 # memory it would need, never an out-of-memory crash; a key given twice in a mapping is refused
 # naming the key and its line (YAML readers keep one of the two silently); nothing is written.

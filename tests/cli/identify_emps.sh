@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # frictionlab identify idim on the bundled EMPS data: the published figures through the command
-# line, the JSON contract of DESIGN.md, atomic output and the --overwrite rule.
+# line, the JSON contract of docs/contract.md, atomic output and the --overwrite rule.
 source "$(dirname "$0")/lib.sh"
 data="$src/data/emps"
 cols=(--time t --position qm --input vir --gain gtau)

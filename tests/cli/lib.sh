@@ -14,7 +14,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 # expect EXIT_CODE TEXT ARGS...: runs "$exe" ARGS (stdout to $tmp/out.txt, stderr to
 # $tmp/err.txt) and fails unless it exits with EXIT_CODE and, when EXIT_CODE is not 0, stderr is
-# one line (README "Guarantees") containing TEXT.
+# one line (docs/guarantees.md) containing TEXT.
 expect() {
   local want_code="$1" want="$2"
   shift 2

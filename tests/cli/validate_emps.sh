@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # frictionlab validate on the bundled EMPS data: identify idim --json, then the closed-loop
-# validation of examples/emps_closed_loop.yaml on both files (JSON contract of DESIGN.md,
+# validation of examples/emps_closed_loop.yaml on both files (JSON contract of docs/contract.md,
 # published figures within the acceptance band), and bad input exiting 2 with a message that
 # names the file or column.
 source "$(dirname "$0")/lib.sh"

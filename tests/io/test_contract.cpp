@@ -1,4 +1,4 @@
-// The library side of the bad-input contract (README "Guarantees"): how outputs are written
+// The library side of the bad-input contract (docs/guarantees.md): how outputs are written
 // (directories refused, devices and FIFOs written through, never replaced), scenario files whose
 // output would not fit in memory, keys given twice, and the one MODEL.json reader.
 

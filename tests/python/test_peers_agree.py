@@ -64,7 +64,7 @@ def test_canudas_stick_slip_period_and_peak_agree(cli, tmp_path):
     peer_period, peer_peak = common.stick_slip_figures(sol.t, sol.y[1])
     assert fl_period == pytest.approx(peer_period, rel=STICK_SLIP_REL_TOL)
     assert fl_peak == pytest.approx(peer_peak, rel=STICK_SLIP_REL_TOL)
-    # and both are the figures recorded in DESIGN.md (period 6.36 s, peak 0.370 m/s)
+    # and both are the figures recorded in docs/reference-results.md (period 6.36 s, peak 0.370 m/s)
     assert peer_period == pytest.approx(6.36, abs=0.005)
     assert peer_peak == pytest.approx(0.370, abs=0.0005)
 

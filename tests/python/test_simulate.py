@@ -34,8 +34,8 @@ def test_overrides_and_scenario_object():
 
 
 def test_craig_trapezoid_switch_times(example):
-    # examples/craig_motor_trapezoid.yaml: breakaway when Kt i = Fs on the 0.003 A/s ramp (35.46 s; DESIGN.md
-    # rounds to 35.47), stop at 102.0 s (DESIGN.md).
+    # examples/craig_motor_trapezoid.yaml: breakaway when Kt i = Fs on the 0.003 A/s ramp (35.46 s; docs/reference-results.md
+    # rounds to 35.47), stop at 102.0 s (docs/reference-results.md).
     tr = fl.simulate(example("craig_motor_trapezoid"))
     kinds = [s["kind"] for s in tr.switches]
     assert kinds == ["breakaway", "stick"]
@@ -47,7 +47,7 @@ def test_craig_trapezoid_switch_times(example):
 
 
 def test_canudas_stick_slip_lugre(example):
-    # DESIGN.md reference (tight LSODA run): period 6.36 s, peak slip velocity 0.370 m/s.
+    # docs/reference-results.md (tight LSODA run): period 6.36 s, peak slip velocity 0.370 m/s.
     tr = fl.simulate(example("canudas_stick_slip"))
     assert tr.law_state.shape == (1, len(tr))
     # The stiff engine on the spring-base plant's analytic Jacobian: no difference quotients.

@@ -7,7 +7,7 @@ LuGre Table I: sigma0 = 1e5, sigma1 = sqrt(1e5), sigma2 = 0.4, Fc = 1, Fs = 1.5,
 
 Prints the stick-slip period (mean time between successive velocity peaks after the first cycle)
 and the peak slip velocity; tests/simulate/test_examples.cpp compares frictionlab with them
-(period 6.36 s, peak 0.370 m/s as recorded in DESIGN.md)."""
+(period 6.36 s, peak 0.370 m/s as recorded in docs/reference-results.md)."""
 import numpy as np
 from scipy.integrate import solve_ivp
 

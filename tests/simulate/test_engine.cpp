@@ -1,4 +1,4 @@
-// Engine tests against closed forms and the reference results of DESIGN.md.
+// Engine tests against closed forms and the reference results of docs/reference-results.md.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -59,7 +59,7 @@ TEST(Hybrid, CraigMotorTrapezoid) {
   constexpr double kEventTol = 1e-6;  // root finding locates events to ~1e-12 s; 1e-6 s covers rounding of the closed form
   const double t_break = 0.0015 / 0.0141 / 0.003;
   EXPECT_NEAR(switch_time(tr, SwitchKind::breakaway), t_break, kEventTol);
-  EXPECT_NEAR(switch_time(tr, SwitchKind::breakaway), 35.47, 0.02);  // DESIGN.md reference
+  EXPECT_NEAR(switch_time(tr, SwitchKind::breakaway), 35.47, 0.02);  // docs/reference-results.md
   const double w_hold = (0.0141 * 0.15 - 0.0012) / 2.85e-6;
   const std::size_t i70 = 7000;
   constexpr double kHoldTol = 1e-6;  // 20 s into the hold = 54 time constants J/B: fully settled

@@ -1,4 +1,4 @@
-// Each example scenario in examples/ reproduces its source (DESIGN.md reference results).
+// Each example scenario in examples/ reproduces its source (docs/reference-results.md).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -102,7 +102,7 @@ TEST(Examples, CraigMotorTrapezoid) {
   const double t_stop = first_switch(tr, SwitchKind::stick);
   const double w_hold = tr.velocity[row_at(tr, 75.0)];
   const double i_stop = 0.15 - 0.003 * (t_stop - 80.0);
-  EXPECT_NEAR(t_break, 35.47, 0.02);                 // DESIGN.md: 35.47 s
+  EXPECT_NEAR(t_break, 35.47, 0.02);                 // docs/reference-results.md: 35.47 s
   EXPECT_NEAR(w_hold, 321.05, 321.05 * 1e-3);        // 321.05 rad/s within 0.1 %
   EXPECT_NEAR(t_stop, 102.0, 0.1);                   // 102.0 s
   EXPECT_NEAR(i_stop, 0.0840, 0.00005);              // 0.0840 A
@@ -134,7 +134,7 @@ TEST(Examples, CanudasStickSlipMatchesTheLsodaReference) {
   const Trajectory tr = run(load_scenario(example("canudas_stick_slip.yaml")), &ms);
   const StickSlipResult ss = detect_stick_slip(tr.time, tr.velocity, tr.friction);
   // Reference: tests/simulate/canudas_reference.py (scipy LSODA, rtol 1e-10, atol 1e-12):
-  // period 6.3627 s, peak slip velocity 0.3698 m/s (DESIGN.md: 6.36 s, 0.370 m/s).
+  // period 6.3627 s, peak slip velocity 0.3698 m/s (docs/reference-results.md: 6.36 s, 0.370 m/s).
   constexpr double kRelTol = 2e-3;  // the reference is printed to 4-5 digits; output at 1 kHz
   EXPECT_NEAR(ss.period, 6.3627, 6.3627 * kRelTol);
   EXPECT_NEAR(ss.peak_slip_velocity, 0.3698, 0.3698 * kRelTol);

@@ -1,7 +1,7 @@
 #pragma once
 // The result every identification method returns: parameters with standard deviations and
 // units, fit figures, optional validation figures on a second data set, diagnostics, and a
-// status with a message. Its JSON form is the MODEL.json of the command line (DESIGN.md).
+// status with a message. Its JSON form is the MODEL.json of the command line (docs/contract.md).
 
 #include <cstddef>
 #include <limits>
@@ -105,7 +105,7 @@ struct Result {
   double value(const std::string& name) const;
 };
 
-/// JSON text of a result (schema 1 of DESIGN.md):
+/// JSON text of a result (schema 1, docs/contract.md):
 /// {"schema":1,"status":"ok"|"error","message":...,"method":...,"model":...,
 ///  "data":{"file":...,"sha256":...},"axis":"linear"|"rotary","parameters":{"Fc":{"value":v,"std":s,"unit":"N"},...},
 ///  "fit":{"relative_error_percent":e,"rmse":r,"samples":n,"quantity":...,"unit":...} (the last two when set),"validation":{...} (only when set),

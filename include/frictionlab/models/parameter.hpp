@@ -43,7 +43,7 @@ Axis parse_axis(std::string_view text);
 /// `unit` is that unit's text where the axis is known (identification results), empty for a
 /// law's own parameters (their unit follows from `quantity` and the axis they are used on).
 struct Parameter {
-  std::string name;  ///< DESIGN.md name: "M", "Fv", "Fc", "offset", "Fc_pos", "sigma0", ...
+  std::string name;  ///< the shared name (docs/contract.md): "M", "Fv", "Fc", "offset", "Fc_pos", "sigma0", ...
   double value = 0;
   /// Standard deviation, same unit: 0 for a held or exact value, NaN when the data cannot
   /// determine it (see `flag`).
