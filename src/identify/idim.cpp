@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "frictionlab/identify/adequacy.hpp"
 #include "frictionlab/identify/method.hpp"
 #include "frictionlab/identify/least_squares.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
@@ -373,6 +374,31 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, dou
 
 }  // namespace
 
+namespace {
+// Is anything left in the residual? Residual checks against velocity, position and time
+// (identify/adequacy.hpp), on the fitted (decimated) samples; the position is the recorded one
+// at those samples.
+void add_idim_adequacy(Result& r, const IdimData& data, const IdimOptions& o) {
+  const auto& f = r.series.at("force");
+  const auto& fm = r.series.at("force_model");
+  std::vector<double> residual(f.size()), position;
+  for (std::size_t i = 0; i < f.size(); ++i) residual[i] = f[i] - fm[i];
+  if (data.position.size() > 0) {
+    const Eigen::Index step = std::max(1, o.decimation);
+    for (std::size_t k = 0; k < f.size(); ++k) position.push_back(data.position[o.skip + static_cast<Eigen::Index>(k) * step]);
+  }
+  constexpr std::size_t kMinSamples = 20;  // assess_residuals' least
+  if (residual.size() < kMinSamples) return;
+  AdequacyOptions ao;
+  double ss = 0;
+  for (double x : f) ss += x * x;
+  ao.force_scale = std::sqrt(ss / static_cast<double>(f.size()));  // the drive force's rms
+  add_adequacy(r, assess_residuals(r.series.at("velocity"), position, r.series.at("time"), residual,
+                                   std::string(unit(Quantity::force, o.axis)),
+                                   std::string(unit(Quantity::velocity, o.axis)), ao));
+}
+}  // namespace
+
 Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
   const detail::ScratchFrame frame;  // the regressions of a vs search share the buffers
   const double dt = checked_step(data);
@@ -427,6 +453,7 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
       if (t.parameter != "M" && t.parameter != "offset") curve += r.value(t.parameter) * t.column(k);
     r.series["law_velocity"].assign(grid.data(), grid.data() + grid.size());
     r.series["law_force"].assign(curve.data(), curve.data() + curve.size());
+    add_idim_adequacy(r, data, o);
   }
   return r;
 }

@@ -76,7 +76,7 @@ TEST(IdimSynthetic, RecoversSymmetricParameters) {
   expect_rel(r.value("Fv"), p.Fv, "Fv");
   expect_rel(r.value("Fc"), p.Fc, "Fc");
   expect_rel(r.value("offset"), p.offset, "offset");
-  EXPECT_TRUE(r.diagnostics.warnings.empty());
+  EXPECT_TRUE(r.diagnostics.warnings.empty()) << r.diagnostics.warnings.front();
 }
 
 TEST(IdimSynthetic, RecoversAsymmetricParameters) {
