@@ -12,18 +12,20 @@ case "$processor" in
   *) echo "not x86-64 ($processor): nothing to check"; exit 77 ;;
 esac
 command -v objdump >/dev/null || { echo "objdump (binutils) is needed for this check" >&2; exit 1; }
-listing=$(objdump -d --no-show-raw-insn "$library")
-instructions=$(grep -c $'^ *[0-9a-f]*:\t' <<<"$listing" || true)
-# A disassembly that is not the library's code would pass for the wrong reason.
-if ((instructions < 10000)); then
-  echo "objdump -d $library gave $instructions instructions; expected the library's whole code" >&2
-  exit 1
-fi
-# AT&T syntax names the registers %ymm0 .. %ymm31 and %zmm0 .. %zmm31.
-wide=$(grep -E '%[yz]mm[0-9]+' <<<"$listing" || true)
-if [[ -n "$wide" ]]; then
-  echo "$library: $(wc -l <<<"$wide") instructions use ymm or zmm registers; the first:" >&2
-  head -n 10 <<<"$wide" >&2
-  exit 1
-fi
-echo "$library: no ymm or zmm register in $instructions instructions"
+# One pass: count the instructions, keep the first ten that name a ymm or zmm register (AT&T
+# syntax: %ymm0 .. %ymm31, %zmm0 .. %zmm31), count those.
+objdump -d --no-show-raw-insn "$library" | awk -v library="$library" '
+  /^ *[0-9a-f]+:\t/ { instructions++ }
+  /%[yz]mm[0-9]/ { wide++; if (wide <= 10) first = first $0 "\n" }
+  END {
+    # A disassembly that is not the library code would pass for the wrong reason.
+    if (instructions < 10000) {
+      printf "objdump -d %s gave %d instructions; expected the library code\n", library, instructions > "/dev/stderr"
+      exit 1
+    }
+    if (wide > 0) {
+      printf "%s: %d instructions use ymm or zmm registers; the first:\n%s", library, wide, first > "/dev/stderr"
+      exit 1
+    }
+    printf "%s: no ymm or zmm register in %d instructions\n", library, instructions
+  }'
