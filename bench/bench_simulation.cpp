@@ -3,9 +3,9 @@
 // Targets: Canudas stick-slip (LuGre, 30 s, rtol 1e-8) under 6 ms and the Craig trapezoid (140 s)
 // under 5 ms; against scipy (bench/compare, same run): Canudas >= 5x faster than the fastest scipy
 // integrator (stretch 50x); batch speed-up from 1 to 2 threads >= 1.8x.
-// Each iteration builds and frees a whole Trajectory, as a loop of runs in a user's program does;
-// the columns' storage is recycled on the thread (src/simulate/column_pool.hpp), so the loop maps
-// no new pages. BM_ScenarioFirstRun shows the price of a run that must map them.
+// Each iteration builds and frees a whole Trajectory, as a loop of runs in a user's program does
+// (the columns are allocated for each run and freed with it). BM_ScenarioFirstRun runs each on a
+// new thread, as a process's first run or a batch worker's.
 
 #include <benchmark/benchmark.h>
 
@@ -40,8 +40,8 @@ void BM_Scenario(benchmark::State& state, const char* name, const char* target) 
   state.SetLabel(target);
 }
 
-// The same run on a new thread each time: its columns come from fresh memory (the pool is per
-// thread), as in a process's first run, so this adds the cost of mapping ~2.4 MB of new pages.
+// The same run on a new thread each time (a new thread's own allocator arena), as in a process's
+// first run: the difference to BM_Scenario is what a thread's start and first pages cost.
 void BM_ScenarioFirstRun(benchmark::State& state, const char* name) {
   const fl::Scenario s = example(name);
   for (auto _ : state) {

@@ -12,7 +12,6 @@
 #include <span>
 #include <string>
 
-#include "../src/models/sliding_batch.hpp"  // private to the library: one kernel set forced
 #include "frictionlab/models/friction_law.hpp"
 
 namespace {
@@ -57,7 +56,7 @@ void BM_FrictionLaw(benchmark::State& state, FrictionLaw law) {
 }
 
 // The batch call FrictionLaw::sliding(v, F) over the 1024 velocities: one dispatch per call,
-// vector kernels (8 wide on AVX-512, 4 on AVX2) for the laws with exp, log, tanh or atan. The
+// then the law's scalar formula in a loop (the compiler vectorises what it can). The
 // counter time_per_eval is the time per velocity (an inverted rate of 1024 per iteration:
 // seconds, printed with an SI prefix).
 template <class Evaluate>
@@ -77,16 +76,6 @@ void run_batch(benchmark::State& state, Evaluate evaluate) {
 
 void BM_FrictionLawBatch(benchmark::State& state, FrictionLaw law) {
   run_batch(state, [&](std::span<const double> v, std::span<double> F) { law.sliding(v, F); });
-}
-
-// The same with one kernel set of the dispatch forced (scalar, avx2 or avx512), to compare them
-// on one machine; skipped where the build or CPU lacks the set.
-void BM_FrictionLawBatchKernels(benchmark::State& state, FrictionLaw law, detail::BatchKernels kernels) {
-  if (!detail::batch_kernels_available(kernels)) {
-    state.SkipWithError((std::string(detail::name_of(kernels)) + " kernels: not in this build or CPU").c_str());
-    return;
-  }
-  run_batch(state, [&](std::span<const double> v, std::span<double> F) { detail::sliding_batch(law, v, F, kernels); });
 }
 
 // With stiction: friction_force(law, v, applied) at a velocity that is zero one call in four.
@@ -168,15 +157,3 @@ BENCHMARK_CAPTURE(BM_FrictionLawBatch, stribeck_asymmetric, FrictionLaw(Asymmetr
 BENCHMARK_CAPTURE(BM_FrictionLawBatch, stribeck_asymmetric_delta_1_5_2,
                   FrictionLaw(Asymmetric<Stribeck>{{1.0, 1.5, 1e-3, 1.5, 0.4}, {0.8, 1.1, 2e-3, 2.0, 0.3}}));
 
-// The laws with vector kernels, each kernel set forced.
-#define FRICTIONLAB_BATCH_KERNELS(name, law)                                                                 \
-  BENCHMARK_CAPTURE(BM_FrictionLawBatchKernels, name##_scalar, FrictionLaw(law), detail::BatchKernels::scalar); \
-  BENCHMARK_CAPTURE(BM_FrictionLawBatchKernels, name##_avx2, FrictionLaw(law), detail::BatchKernels::avx2);     \
-  BENCHMARK_CAPTURE(BM_FrictionLawBatchKernels, name##_avx512, FrictionLaw(law), detail::BatchKernels::avx512)
-FRICTIONLAB_BATCH_KERNELS(stribeck, (Stribeck{}));
-FRICTIONLAB_BATCH_KERNELS(stribeck_delta_1_5, (Stribeck{1.0, 1.5, 1e-3, 1.5, 0.4}));
-FRICTIONLAB_BATCH_KERNELS(smooth_tanh, (Smooth{1.0, 1.5, 1e-3, 2.0, 0.4, 1e-3, SmoothShape::tanh}));
-FRICTIONLAB_BATCH_KERNELS(smooth_atan, (Smooth{1.0, 1.5, 1e-3, 2.0, 0.4, 1e-3, SmoothShape::atan}));
-FRICTIONLAB_BATCH_KERNELS(smooth_tanh_delta_1_5, (Smooth{1.0, 1.5, 1e-3, 1.5, 0.4, 1e-3, SmoothShape::tanh}));
-FRICTIONLAB_BATCH_KERNELS(stribeck_asymmetric_delta_1_5_2,
-                          (Asymmetric<Stribeck>{{1.0, 1.5, 1e-3, 1.5, 0.4}, {0.8, 1.1, 2e-3, 2.0, 0.3}}));

@@ -67,7 +67,7 @@ std::string law_repr(const FrictionLaw& law) {
 
 // The sliding force (N or N m) at v (m/s or rad/s): a float for a number, an array of v's shape
 // for anything array-like, computed by one batch call (FrictionLaw::sliding(v, F): one dispatch,
-// vector kernels) on v itself when it is a C-contiguous float64 array, on a float64 copy otherwise.
+// then a loop) on v itself when it is a C-contiguous float64 array, on a float64 copy otherwise.
 py::object sliding_of(const FrictionLaw& law, const py::object& v) {
   if ((py::isinstance<py::float_>(v) || py::isinstance<py::int_>(v)) && !py::isinstance<py::bool_>(v))
     return py::float_(law.sliding(number_arg(v, "FrictionLaw.sliding", "v")));

@@ -18,7 +18,6 @@
 #include "frictionlab/signal/filtfilt.hpp"
 #include "frictionlab/signal/sampling.hpp"
 #include "../signal/all_finite.hpp"
-#include "../signal/scratch.hpp"
 
 namespace frictionlab {
 namespace {
@@ -176,14 +175,16 @@ bool regressors_from_velocity(const IdimData& d, const IdimOptions& o) {
   return o.source == IdimSource::velocity || (o.source == IdimSource::automatic && d.position.size() == 0);
 }
 
-// IDIM's work buffers for n samples, from a frame of the thread's scratch arena
-// (signal/scratch.hpp): the filter input with `pad` samples of odd extension each side, the
-// velocity and the acceleration. The columns of terms that fill a buffer come from the same
-// frame afterwards; a user's column function that runs IDIM again gets buffers above these.
-struct IdimWorkspace {
-  Eigen::Map<Vec> padded, qd, qdd;  // taken in this order
-  IdimWorkspace(detail::ScratchFrame& frame, Eigen::Index n, Eigen::Index pad)
-      : padded(frame.get(n + 2 * pad)), qd(frame.get(n)), qdd(frame.get(n)) {}
+// IDIM's work buffers for n samples in the caller's workspace (identify/idim_workspace.hpp):
+// the filter input with `pad` samples of odd extension each side (buffer 0), the velocity (1)
+// and the acceleration (2); the columns of terms that fill a buffer take 3, 4, ...
+constexpr std::size_t kFirstColumnBuffer = 3;
+struct IdimBuffers {
+  Eigen::Map<Vec> padded, qd, qdd;
+  IdimBuffers(IdimWorkspace& w, Eigen::Index n, Eigen::Index pad)
+      : padded(w.buffer(0, static_cast<std::size_t>(n + 2 * pad)).data(), n + 2 * pad),
+        qd(w.buffer(1, static_cast<std::size_t>(n)).data(), n),
+        qdd(w.buffer(2, static_cast<std::size_t>(n)).data(), n) {}
 };
 
 // One pass of steps 1-4 on options already resolved for the data's mean step dt (s); with
@@ -194,8 +195,8 @@ struct Pass {
   Vec velocity;  // decimated like the columns; empty unless asked for
 };
 
-Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt, bool want_velocity_column) {
-  detail::ScratchFrame frame;
+Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt, bool want_velocity_column,
+                     IdimWorkspace& workspace) {
   Pass pass;
   IdimRegression& reg = pass.reg;
   reg.terms = idim_terms(options);
@@ -217,7 +218,7 @@ Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt
                                 " and decimation = " + std::to_string(options.decimation));
   }
 
-  // 1-2: zero-phase low-pass and central differences, in this thread's work buffers.
+  // 1-2: zero-phase low-pass and central differences, in the workspace.
   const TransferFunction lp = butter(options.filter_order, normalized_cutoff(options.cutoff_hz, reg.dt));
   const Vec* measured = nullptr;
   pass.from_velocity = regressors_from_velocity(data, options);
@@ -235,7 +236,7 @@ Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt
     throw std::invalid_argument(where(data) + "neither position nor velocity given; IDIM needs one of them");
   }
   const Eigen::Index pad = filtfilt_padlen(lp, FiltfiltOptions{options.padlen}, n);
-  IdimWorkspace work(frame, n, pad);
+  IdimBuffers work(workspace, n, pad);
   auto& padded = work.padded;
   auto& qd = work.qd;
   auto& qdd = work.qdd;
@@ -277,7 +278,8 @@ Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt
       continue;
     }
     if (term.fill) {
-      auto column = frame.get(n);
+      const std::size_t index = kFirstColumnBuffer + static_cast<std::size_t>(j);
+      Eigen::Map<Vec> column(workspace.buffer(index, static_cast<std::size_t>(n)).data(), n);
       term.fill(k, column);
       views.emplace_back(column.data() + options.skip, used);
       continue;
@@ -306,7 +308,7 @@ Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt
     reduced.resize(used, ncols);
     for (Eigen::Index j = 0; j < ncols; ++j) reduced.col(j) = views[static_cast<std::size_t>(j)];
   } else {
-    reduced = decimate_columns(views, options.decimation);
+    reduced = decimate_columns(views, options.decimation, workspace.filter());
   }
   reg.y = reduced.col(0);
   reg.X = reduced.middleCols(1, p);
@@ -317,8 +319,13 @@ Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt
 }  // namespace
 
 IdimRegression idim_regression(const IdimData& data, const IdimOptions& options) {
+  IdimWorkspace workspace;
+  return idim_regression(data, options, workspace);
+}
+
+IdimRegression idim_regression(const IdimData& data, const IdimOptions& options, IdimWorkspace& workspace) {
   const double dt = checked_step(data);
-  return regression_pass(data, resolved(options, dt), dt, false).reg;
+  return regression_pass(data, resolved(options, dt), dt, false, workspace).reg;
 }
 
 namespace {
@@ -370,7 +377,8 @@ void attach_law(Result& r, const IdimOptions& o, double vs) {
   }
 }
 
-Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, double dt, Vec* velocity = nullptr);
+Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, double dt, IdimWorkspace& workspace,
+                           Vec* velocity = nullptr);
 
 }  // namespace
 
@@ -399,8 +407,12 @@ void add_idim_adequacy(Result& r, const IdimData& data, const IdimOptions& o) {
 }
 }  // namespace
 
-Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
-  const detail::ScratchFrame frame;  // the regressions of a vs search share the buffers
+Result identify_idim(const IdimData& data, const IdimOptions& options) {
+  IdimWorkspace workspace;  // the regressions of a vs search share it
+  return identify_idim(data, options, workspace);
+}
+
+Result identify_idim(const IdimData& data, const IdimOptions& options_in, IdimWorkspace& workspace) {
   const double dt = checked_step(data);
   const IdimOptions options = resolved(options_in, dt);
   const auto terms = idim_terms(options);
@@ -408,12 +420,12 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
   IdimOptions o = options;
   if (options.search_stribeck_vs && has_stribeck) {
     // Log grid over the speed range; the identification residual alone chooses (never the cross-test).
-    const double top = regression_pass(data, options, dt, false).reg.max_speed;
+    const double top = regression_pass(data, options, dt, false, workspace).reg.max_speed;
     double best = std::numeric_limits<double>::infinity(), best_vs = options.stribeck_vs;
     constexpr int kGrid = 40;
     for (int i = 0; i < kGrid; ++i) {
       o.stribeck_vs = top * std::pow(10.0, -4.0 + (4.0 - std::log10(2.0)) * i / (kGrid - 1));
-      const Result trial = identify_idim_fixed(data, o, dt);
+      const Result trial = identify_idim_fixed(data, o, dt, workspace);
       if (trial.ok() && trial.fit.relative_error_percent < best) {
         best = trial.fit.relative_error_percent;
         best_vs = o.stribeck_vs;
@@ -422,7 +434,7 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
     o.stribeck_vs = best_vs;
   }
   Vec v;  // the filtered velocity at the fitted samples, for the friction map
-  Result r = identify_idim_fixed(data, o, dt, &v);
+  Result r = identify_idim_fixed(data, o, dt, workspace, &v);
   if (has_stribeck) r.diagnostics.numbers["stribeck_vs"] = o.stribeck_vs;
   if (options.input_delay > 0) r.diagnostics.numbers["input_delay"] = static_cast<double>(options.input_delay);
   {
@@ -461,13 +473,14 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in) {
 namespace {
 // One identification at options resolved for the mean step dt (s); `velocity`, when given, gets
 // the filtered velocity at the fitted samples.
-Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, double dt, Vec* velocity) {
+Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, double dt, IdimWorkspace& workspace,
+                           Vec* velocity) {
   Result r = new_result(method_info("idim"), "", options.axis);
   r.method = "idim";
   r.data_file = data.file;
   r.data_sha256 = data.sha256;
   const bool custom = !options.extra_terms.empty();
-  Pass pass = regression_pass(data, options, dt, velocity != nullptr);
+  Pass pass = regression_pass(data, options, dt, velocity != nullptr, workspace);
   if (velocity != nullptr) *velocity = std::move(pass.velocity);
   const IdimRegression& reg = pass.reg;
   r.model = model_name(reg.terms, custom);
@@ -568,6 +581,12 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, dou
 }  // namespace
 
 ValidationFigures cross_test(const Result& identified, const IdimData& data, const IdimOptions& options) {
+  IdimWorkspace workspace;
+  return cross_test(identified, data, options, workspace);
+}
+
+ValidationFigures cross_test(const Result& identified, const IdimData& data, const IdimOptions& options,
+                             IdimWorkspace& workspace) {
   if (!identified.ok()) {
     throw std::invalid_argument("cross_test: the identification failed (" + identified.message + "); nothing to test");
   }
@@ -575,7 +594,7 @@ ValidationFigures cross_test(const Result& identified, const IdimData& data, con
   IdimOptions o = resolved(options, dt);
   if (const auto it = identified.diagnostics.numbers.find("stribeck_vs"); it != identified.diagnostics.numbers.end())
     o.stribeck_vs = it->second;  // the value the identification used (searched or given)
-  const IdimRegression reg = regression_pass(data, o, dt, false).reg;
+  const IdimRegression reg = regression_pass(data, o, dt, false, workspace).reg;
   Vec theta(reg.X.cols());
   for (std::size_t j = 0; j < reg.terms.size(); ++j) theta(static_cast<Eigen::Index>(j)) = identified.value(reg.terms[j].parameter);
   const Vec e = reg.y - reg.X * theta;

@@ -11,7 +11,6 @@
 
 #include "frictionlab/identify/least_squares.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
-#include "../signal/scratch.hpp"
 
 namespace frictionlab {
 
@@ -39,17 +38,9 @@ const double kLogNegligibleDecayExponent = std::log(kNegligibleDecayExponent) * 
 // point's residual and Jacobian row together, which leaves r'r, J'J and J'r (all the solver
 // uses) unchanged.
 struct FoldedPoints {
-  Eigen::Map<Eigen::ArrayXd> a, log_a, g;
-  // The three arrays are the thread's scratch buffers (signal/scratch.hpp), taken from the
-  // caller's frame: a repeated fit then maps no new memory (fresh arrays of 1e5 doubles cost page
-  // faults comparable to a pass over the points, and whether the allocator reuses or returns
-  // them depends on what else the process holds). log_a serves the start as scratch space first.
-  FoldedPoints(detail::ScratchFrame& frame, const Eigen::VectorXd& v, const Eigen::VectorXd& f)
-      : a(frame.get(v.size()).data(), v.size()), log_a(frame.get(v.size()).data(), v.size()),
-        g(frame.get(v.size()).data(), v.size()) {
-    a = v.array().abs();
-    g = f.array() * v.array().sign();
-  }
+  Eigen::ArrayXd a, log_a, g;  // log_a serves the start as work space first
+  FoldedPoints(const Eigen::VectorXd& v, const Eigen::VectorXd& f)
+      : a(v.array().abs()), log_a(v.size()), g(f.array() * v.array().sign()) {}
 };
 
 // One pass over points [b, e) at parameters p: the 6x6 Gram matrix G = [J r]'[J r] of the
@@ -270,8 +261,7 @@ OneSided fit_one_sided(const Eigen::VectorXd& v, const Eigen::VectorXd& f, const
   best.ssr = std::numeric_limits<double>::infinity();
   double start[kNp];
   // The guess works on the folded map (|v|, F sign(v)): both directions give the same levels.
-  detail::ScratchFrame frame;
-  FoldedPoints d(frame, v, f);
+  FoldedPoints d(v, f);
   initial_guess(d.a, d.g, o.fixed_delta, start, d.log_a);
   d.log_a = d.a.log();
   // Two exponent starts guard against the wrong minimum a single start can land in.

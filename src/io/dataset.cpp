@@ -4,13 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "../simulate/column_pool.hpp"
-
 namespace frictionlab {
-
-Dataset::~Dataset() {
-  for (auto& c : columns_) detail::recycle_vector(std::move(c));
-}
 
 void Dataset::add_column(const std::string& name, Eigen::VectorXd values) {
   const auto it = std::find(names_.begin(), names_.end(), name);

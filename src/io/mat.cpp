@@ -19,17 +19,20 @@
 #include "frictionlab/format.hpp"
 #include "frictionlab/io/sha256.hpp"
 #include "matio_library.hpp"
-#include "../signal/scratch.hpp"
-#include "../simulate/column_pool.hpp"
 
 namespace frictionlab {
 namespace {
 
+// matio and the HDF5 library under it (v7.3 files) are not thread-safe (Debian's HDF5 is built
+// without its thread-safe option): one MAT reader at a time holds this lock while it calls
+// matio, so that batches (frictionlab identify DIR --jobs N) may read files from several threads.
+std::mutex g_matio_mutex;
+
 // matio reports problems through a log function that prints to stderr by default; messages
-// are collected here instead, so the error we throw can quote them. (Thread-local: readers on
-// different threads keep their own messages.)
-thread_local std::string g_matio_log;
-thread_local bool g_matio_error = false;  // an error or critical message since the last clear
+// are collected here instead, so the error we throw can quote them. Written and read only under
+// g_matio_mutex: the one reader calling matio owns them.
+std::string g_matio_log;
+bool g_matio_error = false;  // an error or critical message since the last clear
 
 void matio_log(int level, char* message) {
   if (level == MATIO_LOG_LEVEL_ERROR || level == MATIO_LOG_LEVEL_CRITICAL) g_matio_error = true;
@@ -51,7 +54,7 @@ using VarPtr = std::unique_ptr<matvar_t, VarFreer>;
 template <typename T>
 Eigen::VectorXd convert(const void* data, std::size_t n) {
   const T* p = static_cast<const T*>(data);
-  Eigen::VectorXd out = detail::take_vector(static_cast<Eigen::Index>(n));  // a recycled column when one fits
+  Eigen::VectorXd out(static_cast<Eigen::Index>(n));
   for (std::size_t i = 0; i < n; ++i) out(static_cast<Eigen::Index>(i)) = static_cast<double>(p[i]);
   return out;
 }
@@ -384,8 +387,8 @@ V5Walk walk_v5(const std::string& path) {
 }
 
 // Inflates each compressed variable walk_v5 listed to its end (check_compressed): the first
-// damaged one's problem, or "". The inflated bytes go to one buffer from the thread's scratch
-// (signal/scratch.hpp), as long as the largest variable's declared size, reused for each.
+// damaged one's problem, or "". The inflated bytes go to one buffer as long as the largest
+// variable's declared size, reused for each.
 std::string check_v5_streams(const std::string& path, const V5Walk& walk) {
   if (walk.compressed.empty()) return "";
   std::ifstream in(path, std::ios::binary);
@@ -393,9 +396,8 @@ std::string check_v5_streams(const std::string& path, const V5Walk& walk) {
   const U32Reader u32 = u32_reader(walk.little_endian);
   std::size_t largest = 0;
   for (const V5Compressed& c : walk.compressed) largest = std::max(largest, c.inflated);
-  detail::ScratchFrame frame;
-  const auto doubles = static_cast<Eigen::Index>((largest + sizeof(double) - 1) / sizeof(double));
-  unsigned char* const out = reinterpret_cast<unsigned char*>(frame.get(std::max<Eigen::Index>(doubles, 1)).data());
+  std::vector<unsigned char> inflated(std::max<std::size_t>(largest, 1));
+  unsigned char* const out = inflated.data();
   const Decompressor decompressor(libdeflate_alloc_decompressor());  // null when out of memory: zlib checks alone
   std::vector<unsigned char> element;
   for (const V5Compressed& c : walk.compressed) {
@@ -426,11 +428,12 @@ Dataset read_mat(const std::string& path) {
   data.file = path;
   data.sha256 = sha256_file(path);
 
-  g_matio_log.clear();
+  // matio's messages, once this reader holds the lock (before that, there are none of its own).
+  const std::string* matio_messages = nullptr;
   const auto fail = [&](const std::string& what) {
     std::string msg = path + ": " + what;
-    if (!g_matio_log.empty()) msg += " (matio: " + g_matio_log + ")";
-    g_matio_log.clear();
+    if (matio_messages != nullptr && !matio_messages->empty()) msg += " (matio: " + *matio_messages + ")";
+    if (matio_messages != nullptr) g_matio_log.clear();
     throw std::invalid_argument(msg);
   };
 
@@ -442,13 +445,11 @@ Dataset read_mat(const std::string& path) {
   if (!walk.problem.empty()) fail("not a valid MATLAB MAT file: " + walk.problem);
   const std::string stream_problem = check_v5_streams(path, walk);
 
-  // matio and the HDF5 library under it (v7.3 files) are not thread-safe (Debian's HDF5 is built
-  // without its thread-safe option): one MAT reader at a time, so that batches (frictionlab
-  // identify DIR --jobs N) may read files from several threads.
-  static std::mutex matio_mutex;
-  const std::lock_guard matio_lock(matio_mutex);
+  const std::lock_guard matio_lock(g_matio_mutex);  // one reader in matio at a time (see above)
   detail::matio_library().LogInitFunc("frictionlab", &matio_log);
   g_matio_log.clear();
+  g_matio_error = false;
+  matio_messages = &g_matio_log;
   MatPtr mat(detail::matio_library().Open(path.c_str(), MAT_ACC_RDONLY));
   if (!mat) fail("not a MATLAB MAT file (v5 or v7.3) or corrupt; expected a file saved by MATLAB's save");
 

@@ -33,4 +33,8 @@ Eigen::MatrixXd decimate_columns(const ColumnViews& x, int q) {
   return sosfiltfilt_columns(decimation_filter(q), x, {}, q);
 }
 
+Eigen::MatrixXd decimate_columns(const ColumnViews& x, int q, FilterWorkspace& workspace) {
+  return sosfiltfilt_columns(decimation_filter(q), x, {}, q, workspace);
+}
+
 }  // namespace frictionlab

@@ -1,51 +1,14 @@
 #include "frictionlab/signal/filtfilt.hpp"
 
-#include "all_finite.hpp"
-#include "recursive_kernels.hpp"
-#include "scratch.hpp"
-
 #include <Eigen/LU>
 #include <algorithm>
 #include <array>
-#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace frictionlab {
-
-namespace detail {
-namespace {
-// The environment's FRICTIONLAB_FILTER_KERNELS: "portable", "avx2" or unset (the widest the CPU runs).
-std::string kernels_asked() {
-  const char* choice = std::getenv("FRICTIONLAB_FILTER_KERNELS");
-  return choice != nullptr ? choice : "";
-}
-}  // namespace
-
-bool fma_filters_available() {
-#if defined(FRICTIONLAB_FMA_FILTERS)  // recursive_kernels_fma.cpp built with -mavx2 -mfma
-  // FRICTIONLAB_FILTER_KERNELS=portable runs the portable loops on any CPU (what a CPU without
-  // AVX2 runs; the tests run both).
-  static const bool available =
-      kernels_asked() != "portable" && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return available;
-#else
-  return false;
-#endif
-}
-
-bool avx512_filters_available() {
-#if defined(FRICTIONLAB_AVX512_FILTERS)  // recursive_kernels_avx512.cpp built with -mavx512f
-  // FRICTIONLAB_FILTER_KERNELS=avx2 stops at AVX2 (what a CPU without AVX-512 runs).
-  static const bool available = fma_filters_available() && kernels_asked() != "avx2" && __builtin_cpu_supports("avx512f");
-  return available;
-#else
-  return false;
-#endif
-}
-}  // namespace detail
 
 namespace {
 
@@ -102,16 +65,8 @@ void lfilter_in_place(const TransferFunction& tf, double* z, double* x, Eigen::I
   }
 }
 
-// lfilter_in_place with the common orders' states in registers (see above); on a CPU with AVX2
-// and FMA, the fused multiply-add kernel (recursive_kernels.hpp).
+// lfilter_in_place with the common orders' states in registers (see above).
 void lfilter_dispatch(const TransferFunction& tf, double* z, double* x, Eigen::Index count, int step) {
-  const int order = static_cast<int>(tf.a.size() - 1);
-  // Blocks only over finite samples: a NaN must reach every later output, as in the serial recursion.
-  const auto finite = [&] { return detail::all_finite(Eigen::Map<const Eigen::VectorXd>(step > 0 ? x : x - (count - 1), count)); };
-  if (detail::fma_filters_available() &&
-      ((count > 0 && finite() && detail::lfilter_blocks_fma(tf.b.data(), tf.a.data(), order, z, x, count, step)) ||
-       detail::lfilter_fma(tf.b.data(), tf.a.data(), order, z, x, count, step)))
-    return;
   switch (tf.a.size() - 1) {
     case 2: return lfilter_in_place<2>(tf, z, x, count, step);
     case 4: return lfilter_in_place<4>(tf, z, x, count, step);
@@ -139,7 +94,8 @@ SectionCoefficients normalized_sections(const SecondOrderSections& sos, const ch
 
 // Columns filtered side by side: the recursion of one channel is a chain of dependent
 // multiply-adds, so W independent channels in lock-step fill the pipeline (and SIMD lanes)
-// that one channel leaves idle. Four suits SSE2/AVX registers and IDIM's few regressors.
+// that one channel leaves idle. Four lanes are two SSE2 registers (the x86-64 baseline the
+// library is built for) and suit IDIM's few regressors.
 constexpr Eigen::Index kLanes = 4;
 constexpr int kDecimationSections = 4;  // scipy's order-8 decimation filter
 
@@ -192,25 +148,15 @@ void cascade(const SectionCoefficients& s, double* z, double* x, Eigen::Index co
   }
 }
 
-// Whether a cascade of `sections` runs on the FMA kernels (four lanes; 1 to 8 sections).
-bool fma_cascade(Eigen::Index sections) { return detail::fma_filters_available() && sections >= 1 && sections <= 8; }
-
 // sosfiltfilt of columns c0 .. c0 + W - 1 of x (fewer at the right edge) into the same columns
 // of out, keeping samples 0, q, 2q, ...: odd extension, forward pass from the steady state of
 // the first sample, backward pass from the steady state of the last output.
 // `data` holds (n + 2 padlen) W doubles of work space.
-// `split`: the columns are finite, so a long record may run in halves (recursive_kernels.hpp);
-// a NaN must instead reach every later output, as in the serial recursion.
 template <int W>
 void filtfilt_block(const SectionCoefficients& s, const Eigen::MatrixX2d& zi, const ColumnViews& x,
-                    Eigen::Index c0, Eigen::Index padlen, Eigen::Index q, Eigen::MatrixXd& out, double* const data,
-                    bool split) {
+                    Eigen::Index c0, Eigen::Index padlen, Eigen::Index q, Eigen::MatrixXd& out, double* const data) {
   const Eigen::Index n = x.front().size(), m = n + 2 * padlen, ns = s.rows();
   const int used = static_cast<int>(std::min<Eigen::Index>(W, static_cast<Eigen::Index>(x.size()) - c0));
-  // With AVX2 and FMA: the fused multiply-add kernels, and the forward pass reads the signal
-  // from its columns (`gather`; the padding must hold the first sample the states start from).
-  const bool fma = W == 4 && fma_cascade(ns);
-  const bool gather = fma && used == W && padlen > 0;
   for (int c = used; c < W; ++c) {
     for (Eigen::Index i = 0; i < m; ++i) data[i * W + c] = 0.0;  // an idle lane
   }
@@ -221,7 +167,7 @@ void filtfilt_block(const SectionCoefficients& s, const Eigen::MatrixX2d& zi, co
       b[i * W] = 2.0 * col(0) - col(padlen - i);
       b[(padlen + n + i) * W] = 2.0 * col(n - 1) - col(n - 2 - i);
     }
-    if (!gather) for (Eigen::Index i = 0; i < n; ++i) b[(padlen + i) * W] = col(i);
+    for (Eigen::Index i = 0; i < n; ++i) b[(padlen + i) * W] = col(i);
   }
   std::vector<double> z(static_cast<std::size_t>(2 * ns * W));
   const auto start = [&](const double* sample) {
@@ -233,31 +179,12 @@ void filtfilt_block(const SectionCoefficients& s, const Eigen::MatrixX2d& zi, co
     }
   };
   // One pass over count samples from `from` (in place, interleaved).
-  const bool avx512 = fma && split && detail::avx512_filters_available();
   const auto pass = [&](double* from, Eigen::Index count, int step) {
-    if (avx512 && detail::cascade4_halves_avx512(s.data(), static_cast<int>(ns), z.data(), from, count, step)) return;
-    if (fma) detail::cascade4_fma(s.data(), static_cast<int>(ns), z.data(), from, count, step);
-    else if (ns == kDecimationSections) cascade<W, kDecimationSections>(s, z.data(), from, count, step);
+    if (ns == kDecimationSections) cascade<W, kDecimationSections>(s, z.data(), from, count, step);
     else cascade<W>(s, z.data(), from, count, step);
   };
-  if (gather) {
-    // Forward: the padding in place, the signal itself read from its columns and written
-    // interleaved by the filter (one pass over the memory instead of a copy and a pass).
-    start(data);
-    pass(data, padlen, 1);
-    const double* in[4];
-    for (int c = 0; c < W; ++c) in[c] = x[static_cast<std::size_t>(c0 + c)].data();
-    if (!(avx512 && detail::cascade4_gather_halves_avx512(s.data(), static_cast<int>(ns), z.data(), in, n, data + padlen * W)))
-      detail::cascade4_gather_fma(s.data(), static_cast<int>(ns), z.data(), in, n, data + padlen * W);
-    pass(data + (padlen + n) * W, padlen, 1);
-  } else {
-    // The same three stretches, so that the halves kernel (which needs a long stretch) decides
-    // alike whether the signal was gathered or copied: a column's numbers do not depend on it.
-    start(data);
-    pass(data, padlen, 1);
-    pass(data + padlen * W, n, 1);
-    pass(data + (padlen + n) * W, padlen, 1);
-  }
+  start(data);
+  pass(data, m, 1);
   start(data + (m - 1) * W);
   pass(data + (m - 1) * W, m, -1);
   for (int c = 0; c < used; ++c) {
@@ -377,6 +304,12 @@ Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Eigen:
 
 Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const ColumnViews& x, const FiltfiltOptions& options,
                                     Eigen::Index keep_every) {
+  FilterWorkspace workspace;
+  return sosfiltfilt_columns(sos, x, options, keep_every, workspace);
+}
+
+Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const ColumnViews& x, const FiltfiltOptions& options,
+                                    Eigen::Index keep_every, FilterWorkspace& workspace) {
   if (keep_every < 1) {
     throw std::invalid_argument("sosfiltfilt: keep_every = " + std::to_string(keep_every) + " must be >= 1");
   }
@@ -396,7 +329,6 @@ Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Column
   const Eigen::MatrixX2d zi = sosfilt_zi(sos);
   const Eigen::Index cols = static_cast<Eigen::Index>(x.size());
   Eigen::MatrixXd out((n + keep_every - 1) / keep_every, cols);
-  detail::ScratchFrame frame;  // the block buffer: reused by the next call (freed when huge and outermost)
   // A constant column (IDIM's offset) starts and stays in the steady state of both passes: it
   // comes out times the squared DC gain, so it needs no filtering.
   double dc_gain = 1.0;
@@ -418,18 +350,14 @@ Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Column
     }
   }
   Eigen::MatrixXd filtered(out.rows(), static_cast<Eigen::Index>(varying.size()));
-  // The widest block's work space (three columns run four lanes, one idle). With the FMA
-  // kernels every block runs four lanes, so that a column comes out the same (to the bit)
-  // whichever columns share its block.
-  const bool fma = fma_cascade(s.rows());
-  const bool split = std::all_of(varying.begin(), varying.end(), [](const auto& v) { return detail::all_finite(v); });
-  const Eigen::Index widest = filtered.cols() == 0 ? 0 : fma || filtered.cols() > 2 ? kLanes : filtered.cols();
-  double* const block = widest == 0 ? nullptr : frame.get((n + 2 * padlen) * widest).data();
+  // The widest block's work space (three columns run four lanes, one idle).
+  const Eigen::Index widest = filtered.cols() > 2 ? kLanes : filtered.cols();
+  double* const block = widest == 0 ? nullptr : workspace.block(static_cast<std::size_t>((n + 2 * padlen) * widest)).data();
   for (Eigen::Index c = 0; c < filtered.cols(); c += kLanes) {
-    const Eigen::Index lanes = fma ? kLanes : std::min<Eigen::Index>(kLanes, filtered.cols() - c);
-    if (lanes == 1) filtfilt_block<1>(s, zi, varying, c, padlen, keep_every, filtered, block, split);
-    else if (lanes == 2) filtfilt_block<2>(s, zi, varying, c, padlen, keep_every, filtered, block, split);
-    else filtfilt_block<kLanes>(s, zi, varying, c, padlen, keep_every, filtered, block, split);  // 3 columns: one idle lane
+    const Eigen::Index lanes = std::min<Eigen::Index>(kLanes, filtered.cols() - c);
+    if (lanes == 1) filtfilt_block<1>(s, zi, varying, c, padlen, keep_every, filtered, block);
+    else if (lanes == 2) filtfilt_block<2>(s, zi, varying, c, padlen, keep_every, filtered, block);
+    else filtfilt_block<kLanes>(s, zi, varying, c, padlen, keep_every, filtered, block);  // 3 columns: one idle lane
   }
   for (std::size_t j = 0; j < where.size(); ++j) out.col(where[j]) = filtered.col(static_cast<Eigen::Index>(j));
   return out;

@@ -9,7 +9,6 @@
 
 #include "frictionlab/models/parameter.hpp"
 #include "all_finite.hpp"
-#include "scratch.hpp"
 
 namespace frictionlab {
 namespace {
@@ -21,14 +20,14 @@ std::string step(double dt) { return detail::format_value(dt, 6); }
 
 std::string label_of(const RowLabeller& labeller, Eigen::Index k) { return labeller ? labeller(k) : sample_label(k); }
 
-// The k-th smallest of x[0..n) (0-based: the value std::nth_element puts at x + k), with `work`
-// holding n doubles; x is reordered. Why not std::nth_element alone: it was a tenth of an EMPS
+// The k-th smallest of x[0..n) (0-based: the value std::nth_element puts at x + k); x is not
+// changed (the values between the pivots are selected among in a copy of them). Why not std::nth_element alone: it was a tenth of an EMPS
 // identification. Two pivots from a sample of x bracket rank k (Floyd and Rivest's selection);
 // one branch-free pass counts the values below and above them and keeps those between, and
 // only those are selected among. A clock's steps repeat a few values, so the pivots are often
 // one value and the answer is that value, with no selection at all. nullopt when the bracket
 // missed rank k: the caller selects over all of x.
-std::optional<double> kth_bracketed(double* x, Eigen::Index n, Eigen::Index k, double* work) {
+std::optional<double> kth_bracketed(const double* x, Eigen::Index n, Eigen::Index k) {
   constexpr Eigen::Index kSample = 1024, kMargin = 48;  // margin ~1.5 sqrt(sample): misses are rare
   if (n < 4 * kSample) return std::nullopt;
   std::array<double, kSample> sample;
@@ -46,14 +45,15 @@ std::optional<double> kth_bracketed(double* x, Eigen::Index n, Eigen::Index k, d
   const Eigen::Index below = (a < lo).count(), between = (a >= lo && a <= hi).count();
   if (k < below || k >= below + between) return std::nullopt;
   if (lo == hi) return lo;
+  std::vector<double> work(static_cast<std::size_t>(n));
   Eigen::Index kept = 0;
   for (Eigen::Index i = 0; i < n; ++i) {
     const double v = x[i];
-    work[kept] = v;
+    work[static_cast<std::size_t>(kept)] = v;
     kept += (v >= lo) & (v <= hi);
   }
-  std::nth_element(work, work + (k - below), work + kept);
-  return work[k - below];
+  std::nth_element(work.begin(), work.begin() + (k - below), work.begin() + kept);
+  return work[static_cast<std::size_t>(k - below)];
 }
 
 }  // namespace
@@ -64,17 +64,12 @@ TimeSteps time_steps(const Eigen::VectorXd& t) {
   TimeSteps s;
   const Eigen::Index n = t.size();
   if (n < 2) return s;
-  // The steps go to the thread's scratch buffers (signal/scratch.hpp): every reader and method
-  // checks its time column, often twice per record, and a fresh array of a long record's size
-  // per check costs page faults on the virtual machines users run on.
-  detail::ScratchFrame frame;
-  Eigen::Map<Eigen::VectorXd> steps = frame.get(n - 1);
-  steps = t.tail(n - 1) - t.head(n - 1);
+  Eigen::VectorXd steps = t.tail(n - 1) - t.head(n - 1);
   s.min = steps.minCoeff();
   s.max = steps.maxCoeff();
   s.mean = (t(n - 1) - t(0)) / static_cast<double>(n - 1);
   const Eigen::Index mid = (n - 1) / 2;
-  const std::optional<double> fast = kth_bracketed(steps.data(), n - 1, mid, frame.get(n - 1).data());
+  const std::optional<double> fast = kth_bracketed(steps.data(), n - 1, mid);
   if (fast) {
     s.median = *fast;
   } else {  // any values (a NaN's place is unspecified either way)

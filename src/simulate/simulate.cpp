@@ -2,7 +2,6 @@
 #include "frictionlab/simulate/simulate.hpp"
 #include "frictionlab/simulate/output_size.hpp"
 #include "frictionlab/simulate/stiff_system.hpp"
-#include "column_pool.hpp"
 #include "small_vector.hpp"
 #include "step_interpolant.hpp"
 
@@ -206,16 +205,21 @@ class Engine {
   Trajectory run() {
     Trajectory tr;
     const std::size_t rows = last_row(o_) + 1;
-    // Columns come from this thread's pool of recycled ones (see column_pool.hpp).
-    tr.time = detail::take_column(rows);
+    // Each column reserves its rows up front: the run appends without reallocating.
+    const auto column = [rows] {
+      std::vector<double> c;
+      c.reserve(rows);
+      return c;
+    };
+    tr.time = column();
     tr.others.resize(static_cast<std::size_t>(nc_ - 1));
     for (int k = 0; k < nc_; ++k) {
       ContactColumns& c = column_set(tr, k);
       for (auto* col : {&c.position, &c.velocity, &c.friction, &c.applied, &c.current, &c.voltage, &c.reference, &c.stuck})
-        *col = detail::take_column(rows);
-      c.drive = detail::take_column(rows, k == 0 ? detail::Shelf::side : detail::Shelf::main);
+        *col = column();
+      c.drive = column();
       c.law_state.resize(static_cast<std::size_t>(bodies_[static_cast<std::size_t>(k)].nz));
-      for (auto& col : c.law_state) col = detail::take_column(rows);
+      for (auto& col : c.law_state) col = column();
       tr.contact_names.push_back(plant_.contact(k).name);
     }
     if (mode_ == SolverMode::fixed_step) {

@@ -1,7 +1,5 @@
 #include "frictionlab/simulate/trajectory.hpp"
 
-#include "column_pool.hpp"
-
 #include <array>
 #include <charconv>
 #include <stdexcept>
@@ -19,15 +17,6 @@ constexpr std::array<const char*, 9> kContactNames = {"position", "velocity",  "
                                                       "voltage",  "reference", "stuck",    "drive"};
 constexpr std::size_t kSingleColumns = 8;  // a 1-DOF CSV leaves out drive
 
-void recycle(ContactColumns& c, bool own) {
-  for (std::size_t k = 0; k < kContactColumns.size(); ++k) {
-    // A trajectory's own drive column lives on the side shelf (see column_pool.hpp).
-    const bool side = own && kContactColumns[k] == &ContactColumns::drive;
-    detail::recycle_column(std::move(c.*kContactColumns[k]), side ? detail::Shelf::side : detail::Shelf::main);
-  }
-  for (auto& z : c.law_state) detail::recycle_column(std::move(z));
-}
-
 // One unnamed contact: a 1-DOF plant's trajectory, with today's column names.
 bool single(const Trajectory& t) { return t.contact_names.empty() || (t.contact_names.size() == 1 && t.contact_names[0].empty()); }
 }  // namespace
@@ -39,29 +28,6 @@ const char* switch_kind_name(SwitchKind kind) {
     case SwitchKind::reversal: return "reversal";
   }
   return "?";
-}
-
-Trajectory& Trajectory::operator=(Trajectory&& other) noexcept {
-  Trajectory taken(std::move(other));
-  swap(taken);
-  return *this;  // taken, now holding the old contents, recycles them
-}
-
-void Trajectory::swap(Trajectory& other) noexcept {
-  using std::swap;
-  swap(static_cast<ContactColumns&>(*this), static_cast<ContactColumns&>(other));
-  swap(time, other.time);
-  swap(contact_names, other.contact_names);
-  swap(others, other.others);
-  swap(switches, other.switches);
-  swap(plant_events, other.plant_events);
-  swap(stats, other.stats);
-}
-
-Trajectory::~Trajectory() {
-  detail::recycle_column(std::move(time));
-  recycle(*this, true);
-  for (auto& c : others) recycle(c, false);
 }
 
 const ContactColumns& Trajectory::contact(int i) const {

@@ -86,24 +86,42 @@ TEST(IdimEmps, CrossTestOnPulses) {
   EXPECT_EQ(v.sha256, "0eab75bb1f6b16228ee78791343a88bf9bfd9a51036ac9807d7b5fc11c0e1704");
 }
 
-// The pipeline keeps its work buffers between calls: a repeat, and a repeat after a record of
-// another length, must give the same numbers to the last bit.
-TEST(IdimEmps, RepeatedIdentificationIsIdentical) {
+// A workspace held by the caller (identify/idim_workspace.hpp) and reused across calls, also after
+// a record of another length, gives the numbers of calls that make their own, to the last bit;
+// and it can be released and used again.
+TEST(IdimEmps, AReusedWorkspaceGivesTheNumbersOfFreshCalls) {
   const fl::IdimData ident = load("DATA_EMPS.mat"), pulses = load("DATA_EMPS_PULSES.mat");
-  const fl::Result first = fl::identify_idim(ident);
+  const fl::Result fresh = fl::identify_idim(ident);
   fl::IdimData shorter = pulses;
   for (Eigen::VectorXd* v : {&shorter.time, &shorter.position, &shorter.force}) *v = v->head(v->size() / 2).eval();
-  ASSERT_TRUE(fl::identify_idim(shorter).ok());
-  const fl::Result again = fl::identify_idim(ident);
-  ASSERT_EQ(first.parameters.size(), again.parameters.size());
-  for (std::size_t i = 0; i < first.parameters.size(); ++i) {
-    EXPECT_EQ(first.parameters[i].value, again.parameters[i].value) << first.parameters[i].name;
-    EXPECT_EQ(first.parameters[i].std, again.parameters[i].std) << first.parameters[i].name;
-  }
+  const fl::Result fresh_shorter = fl::identify_idim(shorter);
+  ASSERT_TRUE(fresh.ok() && fresh_shorter.ok()) << fresh.message << fresh_shorter.message;
+  const auto expect_same = [](const fl::Result& got, const fl::Result& want, const std::string& what) {
+    ASSERT_EQ(got.parameters.size(), want.parameters.size()) << what;
+    for (std::size_t i = 0; i < want.parameters.size(); ++i) {
+      EXPECT_EQ(got.parameters[i].value, want.parameters[i].value) << what << ": " << want.parameters[i].name;
+      EXPECT_EQ(got.parameters[i].std, want.parameters[i].std) << what << ": " << want.parameters[i].name;
+    }
+    EXPECT_EQ(got.fit.relative_error_percent, want.fit.relative_error_percent) << what;
+  };
+  fl::IdimWorkspace workspace;
+  expect_same(fl::identify_idim(ident, {}, workspace), fresh, "first call");
+  const std::size_t held = workspace.capacity();
+  EXPECT_GE(held, static_cast<std::size_t>(3 * ident.time.size())) << "the filter input, velocity and acceleration";
+  expect_same(fl::identify_idim(shorter, {}, workspace), fresh_shorter, "a shorter record after it");
+  expect_same(fl::identify_idim(ident, {}, workspace), fresh, "the first record again");
+  EXPECT_EQ(workspace.capacity(), held) << "grown once, to the largest record";
+  const fl::IdimOptions o;
+  EXPECT_EQ(fl::cross_test(fresh, pulses, o, workspace).relative_error_percent,
+            fl::cross_test(fresh, pulses, o).relative_error_percent);
+  EXPECT_EQ(fl::idim_regression(ident, o, workspace).X, fl::idim_regression(ident, o).X);
+  workspace.release();
+  EXPECT_EQ(workspace.capacity(), 0u);
+  expect_same(fl::identify_idim(ident, {}, workspace), fresh, "after release");
 }
 
-// A user's column function may run IDIM itself (the inner call must not reuse the outer one's
-// buffers, which are in use): same numbers as without the inner call.
+// A user's column function may run IDIM itself (the inner call makes its own workspace and
+// leaves the outer call's alone): same numbers as without the inner call.
 TEST(IdimEmps, ColumnFunctionMayRunIdimItself) {
   const fl::IdimData ident = load("DATA_EMPS.mat"), pulses = load("DATA_EMPS_PULSES.mat");
   fl::IdimOptions plain;

@@ -14,7 +14,6 @@
 #include "frictionlab/signal/decimate.hpp"
 #include "frictionlab/signal/differentiate.hpp"
 #include "frictionlab/signal/filtfilt.hpp"
-#include "signal/recursive_kernels.hpp"
 
 namespace fl = frictionlab;
 
@@ -283,13 +282,9 @@ TEST(Gradient, ExactOnAQuadraticInside) {
   for (Eigen::Index i = 1; i < 19; ++i) EXPECT_NEAR(d(i), 6.0 * i * dt, kTol);
 }
 
-// Long records: on a CPU with AVX2 and FMA the recursion runs fused multiply-adds, and a single
-// channel runs as four blocks at once whose initial states are added back over the samples the
-// filter takes to forget a state (src/signal/recursive_kernels.hpp). Either way the result must
-// be the textbook recursion's up to rounding, at lengths around the blocks' threshold (4096),
-// with a tail of 1 to 3 samples past four whole blocks, forward and backward, and for a filter
-// whose memory is too long for blocks (order 2 at 0.002: it declines and runs serially). The
-// filters are ones a transfer function holds well: at higher orders and lower cut-offs the
+// Long records: the recursion's loops (states held in local variables for the common orders)
+// must give the textbook recursion's result up to rounding, at even and odd lengths, forward and
+// backward, and for a filter with a long memory (order 2 at 0.002). The filters are ones a transfer function holds well: at higher orders and lower cut-offs the
 // direct form amplifies any change of rounding (order 6 at 0.05, or order 4 at 0.0005, differ by
 // 1e-10 between two correct loops), which is why the pipelines use order 4 at 0.2.
 TEST(Filtfilt, LongRecordsEqualTheTextbookRecursion) {
@@ -307,22 +302,6 @@ TEST(Filtfilt, LongRecordsEqualTheTextbookRecursion) {
       expect_close(fl::filtfilt(tf, x), textbook_filtfilt(tf, x), kSeriesRelTol, "filtfilt, " + what);
     }
   }
-}
-
-// The four-block kernel runs where it should (a record of 30001 samples through a filter that
-// forgets in a few hundred) and declines where it must (fewer than 4096 samples; a filter whose
-// memory exceeds an eighth of the record), so the test above covers both paths.
-TEST(Filtfilt, FourBlockKernelRunsOnLongRecordsOfShortMemoryFilters) {
-  if (!fl::detail::fma_filters_available()) GTEST_SKIP() << "this CPU lacks AVX2 or FMA: the portable loops run";
-  const auto attempt = [](const fl::TransferFunction& tf, Eigen::Index n) {
-    const Eigen::VectorXd b = tf.b / tf.a(0), a = tf.a / tf.a(0);
-    Eigen::VectorXd x = wandering(n, 7), z = Eigen::VectorXd::Zero(a.size() - 1);
-    return fl::detail::lfilter_blocks_fma(b.data(), a.data(), static_cast<int>(a.size() - 1), z.data(), x.data(), n, 1);
-  };
-  EXPECT_TRUE(attempt(fl::butter(4, 0.2), 30001));
-  EXPECT_TRUE(attempt(fl::butter(4, 0.2), 4096));
-  EXPECT_FALSE(attempt(fl::butter(4, 0.2), 4095));
-  EXPECT_FALSE(attempt(fl::butter(2, 0.002), 30001));
 }
 
 namespace {
@@ -348,8 +327,7 @@ Eigen::VectorXd textbook_sosfiltfilt(const fl::SecondOrderSections& sos, const E
 
 }  // namespace
 
-// Long records: on a CPU with AVX-512 the decimation filter runs each half of a record in its own
-// four lanes and adds the second half's initial-state response back (recursive_kernels.hpp).
+// Long records: the decimation filter runs four columns side by side (one lane each).
 // Columns must equal the textbook cascade up to rounding, with an even and an odd length, and
 // decimate must keep every q-th of them.
 TEST(Decimate, LongRecordsEqualTheTextbookCascade) {
@@ -370,23 +348,8 @@ TEST(Decimate, LongRecordsEqualTheTextbookCascade) {
   }
 }
 
-// The halves kernel runs on a long record (the test above covers it) and declines below 8192.
-TEST(Decimate, HalvesKernelRunsOnLongRecords) {
-  if (!fl::detail::avx512_filters_available()) GTEST_SKIP() << "this CPU lacks AVX-512: the AVX2 or portable loops run";
-  const fl::SecondOrderSections sos = fl::cheby1_sos(8, 0.05, 0.08);
-  Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor> s = sos;
-  for (Eigen::Index r = 0; r < s.rows(); ++r) s.row(r) /= s(r, 3);
-  const auto attempt = [&](Eigen::Index n) {
-    std::vector<double> x(static_cast<std::size_t>(4 * n), 1.0), z(static_cast<std::size_t>(8 * s.rows()), 0.0);
-    return fl::detail::cascade4_halves_avx512(s.data(), static_cast<int>(s.rows()), z.data(), x.data(), n, 1);
-  };
-  EXPECT_TRUE(attempt(20000));
-  EXPECT_FALSE(attempt(8191));
-}
-
 // A NaN reaches every later sample of a recursion, and filtfilt's backward pass carries it to all
-// of them, as scipy's does: the block and halves kernels, which start blocks from a zero state,
-// must not run on such a record (they would return finite numbers after the NaN's block).
+// of them, as scipy's does; the columns filtered beside it in the same lanes stay finite.
 TEST(Filtfilt, ANaNInALongRecordReachesEveryLaterOutput) {
   Eigen::VectorXd x = wandering(30001, 3);
   x(10000) = std::numeric_limits<double>::quiet_NaN();
@@ -403,9 +366,28 @@ TEST(Filtfilt, ANaNInALongRecordReachesEveryLaterOutput) {
   EXPECT_TRUE(f.col(0).allFinite());
 }
 
-// No sections at all: the identity, with every block width (the gathering forward pass included).
+// No sections at all: the identity, with every block width.
 TEST(Filtfilt, NoSectionsIsTheIdentity) {
   Eigen::MatrixXd m(20001, 5);
   for (Eigen::Index c = 0; c < m.cols(); ++c) m.col(c) = wandering(m.rows(), static_cast<unsigned>(40 + c));
   EXPECT_EQ(fl::sosfiltfilt_columns(fl::SecondOrderSections(0, 6), m), m);
+}
+
+// A workspace reused across calls (signal/filter_workspace.hpp) gives the numbers of fresh calls
+// to the bit, whichever size it was last grown to; a released one too.
+TEST(Filtfilt, AReusedWorkspaceGivesTheNumbersOfFreshCalls) {
+  const fl::SecondOrderSections sos = fl::cheby1_sos(8, 0.05, 0.08);
+  fl::FilterWorkspace workspace;
+  for (const Eigen::Index n : {Eigen::Index{30001}, Eigen::Index{500}, Eigen::Index{20000}}) {
+    Eigen::MatrixXd m(n, 5);
+    for (Eigen::Index c = 0; c < m.cols(); ++c) m.col(c) = wandering(n, static_cast<unsigned>(60 + c));
+    fl::ColumnViews views;
+    for (Eigen::Index c = 0; c < m.cols(); ++c) views.emplace_back(m.col(c).data(), n);
+    EXPECT_EQ(fl::sosfiltfilt_columns(sos, views, {}, 1, workspace), fl::sosfiltfilt_columns(sos, m)) << n << " samples";
+    EXPECT_EQ(fl::decimate_columns(views, 10, workspace), fl::decimate_columns(m, 10)) << n << " samples";
+  }
+  // It holds what the largest call needed (30001 samples and 2 x 27 of padding, four lanes) until released.
+  EXPECT_GE(workspace.capacity(), std::size_t{(30001 + 54) * 4});
+  workspace.release();
+  EXPECT_EQ(workspace.capacity(), 0u);
 }

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "frictionlab/identify/idim_workspace.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
 
@@ -143,6 +144,8 @@ std::vector<IdimTerm> idim_terms(const IdimOptions& options);
 ///         options.source asks for), a cut-off at or above Nyquist, or too few samples for the
 ///         padding, skip and decimation.
 IdimRegression idim_regression(const IdimData& data, const IdimOptions& options = {});
+/// The same in the caller's work space (identify/idim_workspace.hpp); the same numbers.
+IdimRegression idim_regression(const IdimData& data, const IdimOptions& options, IdimWorkspace& workspace);
 
 /// Identifies the parameters of the terms by the recipe. Status error (not an exception), with a
 /// message naming the cause, when the data cannot give an answer: a regressor column that is zero
@@ -153,11 +156,17 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options 
 /// diagnostics.texts["regressors_from"] is "position" or "velocity".
 /// \throws std::invalid_argument on bad input, as idim_regression.
 Result identify_idim(const IdimData& data, const IdimOptions& options = {});
+/// The same in the caller's work space (identify/idim_workspace.hpp), for identifications in a
+/// loop; the same result, to the bit. \throws as above; std::bad_alloc when it cannot grow.
+Result identify_idim(const IdimData& data, const IdimOptions& options, IdimWorkspace& workspace);
 
 /// Relative force error of an identified parameter set on a second run processed by the same
 /// pipeline (same options; terms are taken from `options`, values from `identified` by name).
 /// \throws std::invalid_argument when `identified` is not ok or lacks a parameter of a term, and
 ///         as idim_regression for bad data.
 ValidationFigures cross_test(const Result& identified, const IdimData& data, const IdimOptions& options = {});
+/// The same in the caller's work space (identify/idim_workspace.hpp); the same figures.
+ValidationFigures cross_test(const Result& identified, const IdimData& data, const IdimOptions& options,
+                             IdimWorkspace& workspace);
 
 }  // namespace frictionlab

@@ -42,15 +42,6 @@ class Dataset {
   /// one sentence each; commands pass them on as warnings.
   std::vector<std::string> warnings;
 
-  Dataset() = default;
-  Dataset(const Dataset&) = default;
-  Dataset(Dataset&&) noexcept = default;
-  Dataset& operator=(const Dataset&) = default;
-  Dataset& operator=(Dataset&&) noexcept = default;
-  /// Gives the columns' storage to this thread's pool, for the next file read on it (see
-  /// src/simulate/column_pool.hpp): a loop over many logs then maps no new memory per file.
-  ~Dataset();
-
   /// Adds a column (or replaces one of the same name). Shape: values of length rows() unless
   /// this is the first column. \throws std::invalid_argument naming the column, its length and
   /// the expected length.

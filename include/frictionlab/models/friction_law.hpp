@@ -76,17 +76,8 @@ class FrictionLaw {
   /// Force for v != 0 (N or N m). For dynamic laws: the steady-state (Stribeck) force at v.
   double sliding(double v) const;
   /// The same over an array, F[i] = sliding(v[i]): v in m/s or rad/s, F in N or N m, both of one
-  /// length. The law's type is resolved once per call, not per value. Stribeck,
-  /// stribeck-asymmetric and smooth run vector kernels on glibc's vector exp, log, expm1 and atan
-  /// (libmvec, at most 4 ulp each) where the library was built with them (x86-64, GCC or Clang,
-  /// glibc with libmvec): 8 values at a time on CPUs with AVX-512F, AVX2 and FMA, else 4 at a time
-  /// on CPUs with AVX2 and FMA; the values left over at the end of the array take the scalar
-  /// call. Their results equal the scalar call's to a relative 1e-12 at either width (the bound
-  /// the tests check; the exponent delta amplifies the vector functions' rounding), and exactly
-  /// at v = 0 (either sign of zero). Where the Stribeck decay is cut to 0 (|v/vs|^delta = 40)
-  /// rounding may move the cut: the force then differs by at most (Fs - Fc) e^-40 = 4e-18
-  /// (Fs - Fc). Every other law, and every law on other CPUs or builds, gives exactly the scalar
-  /// call's values. For dynamic laws: the steady-state force at each v, as sliding(v).
+  /// length. The law's type is resolved once per call, not per value; each value is exactly the
+  /// scalar call's, on every CPU. For dynamic laws: the steady-state force at each v, as sliding(v).
   /// \throws std::invalid_argument naming both sizes when F.size() != v.size().
   void sliding(std::span<const double> v, std::span<double> F) const;
   /// Largest applied force a stuck contact holds, pushed in + / - (N or N m); 0 for dynamic laws.

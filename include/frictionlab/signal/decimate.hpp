@@ -22,4 +22,9 @@ Eigen::MatrixXd decimate_columns(const Eigen::MatrixXd& x, int q);
 /// The same for columns held elsewhere, all of the same length (no copy into a matrix first).
 Eigen::MatrixXd decimate_columns(const ColumnViews& x, int q);
 
+/// The same with the caller's work space (signal/filter_workspace.hpp), for calls in a loop: the
+/// numbers equal those of the call without it.
+/// \throws std::invalid_argument as above; std::bad_alloc when the workspace cannot grow.
+Eigen::MatrixXd decimate_columns(const ColumnViews& x, int q, FilterWorkspace& workspace);
+
 }  // namespace frictionlab

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "frictionlab/signal/filter_workspace.hpp"
 #include "frictionlab/signal/transfer_function.hpp"
 
 namespace frictionlab {
@@ -75,5 +76,11 @@ Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const Eigen:
 /// std::invalid_argument naming the column).
 Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const ColumnViews& x,
                                     const FiltfiltOptions& options = {}, Eigen::Index keep_every = 1);
+
+/// The same with the caller's work space (filter_workspace.hpp), for calls in a loop: the
+/// numbers equal those of the call without it.
+/// 	hrows std::invalid_argument as above; std::bad_alloc when the workspace cannot grow.
+Eigen::MatrixXd sosfiltfilt_columns(const SecondOrderSections& sos, const ColumnViews& x, const FiltfiltOptions& options,
+                                    Eigen::Index keep_every, FilterWorkspace& workspace);
 
 }  // namespace frictionlab

@@ -62,9 +62,8 @@ struct ContactColumns {
 };
 
 /// Sampled simulation result. Its own ContactColumns are contact 0's (a 1-DOF plant's only
-/// contact); `others` holds contacts 1..N-1. All columns have rows() entries.
-/// Destroying a Trajectory keeps its large columns' storage (at most 64 MiB per thread) for the
-/// next simulate() on the same thread, so a loop of simulations maps no new memory.
+/// contact); `others` holds contacts 1..N-1. All columns have rows() entries. A plain value:
+/// its columns are its own and are freed with it.
 struct Trajectory : ContactColumns {
   std::vector<double> time;  ///< s
   /// Contact names (Contact::name), one per contact: {""} for a 1-DOF plant.
@@ -73,16 +72,6 @@ struct Trajectory : ContactColumns {
   std::vector<ModeSwitch> switches;    ///< hybrid mode: every mode switch, in time order
   std::vector<PlantEvent> plant_events;  ///< every event of the plant's own event functions, in time order
   SimulationStats stats;
-
-  Trajectory() = default;
-  Trajectory(const Trajectory&) = default;
-  Trajectory(Trajectory&&) noexcept = default;
-  Trajectory& operator=(const Trajectory&) = default;
-  /// Takes other's contents; this one's old columns go to the pool too (`t = simulate(s)` in a
-  /// loop reuses them).
-  Trajectory& operator=(Trajectory&& other) noexcept;
-  ~Trajectory();
-  void swap(Trajectory& other) noexcept;
 
   std::size_t rows() const { return time.size(); }
   /// Number of contacts (1 for a 1-DOF plant, and for an empty trajectory).
