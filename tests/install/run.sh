@@ -31,12 +31,14 @@ lib=$(ls "$prefix"/lib*/libfrictionlab.so.*.*.* 2>/dev/null | head -1)
 soname=$(objdump -p "$lib" | awk '/SONAME/ {print $2}')
 if [[ "$soname" =~ ^libfrictionlab\.so\.[0-9]+$ ]]; then pass "soname $soname"; else fail "soname '$soname' of $lib"; fi
 exported=$(nm -DC --defined-only "$lib" | grep -c ' frictionlab::' || true)
-detail=$(nm -DC --defined-only "$lib" | grep -c 'frictionlab::.*detail::' || true)
+# frictionlab::detail:: and frictionlab::<layer>::detail:: (not std::__detail:: in a signature).
+detail_re='frictionlab::([A-Za-z0-9_]+::)*detail::'
+detail=$(nm -DC --defined-only "$lib" | grep -cE "$detail_re" || true)
 if ((exported > 0 && detail == 0)); then
   pass "$exported frictionlab:: symbols exported, none of detail::"
 else
   fail "$exported frictionlab:: symbols exported, $detail of them detail:: (expected none)"
-  nm -DC --defined-only "$lib" | grep 'frictionlab::.*detail::' | head -20 >&2
+  nm -DC --defined-only "$lib" | grep -E "$detail_re" | head -20 >&2
 fi
 if [[ -d "$prefix/include/frictionlab" && -f "$prefix/include/frictionlab/export.hpp" ]] &&
    ! ls "$prefix/include/frictionlab/io/atomic_write.hpp" "$prefix/include/frictionlab/report" >/dev/null 2>&1; then
