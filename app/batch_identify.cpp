@@ -11,10 +11,10 @@
 #include <thread>
 
 #include "frictionlab/format.hpp"
-#include "frictionlab/io/atomic_write.hpp"
-#include "frictionlab/report/figure.hpp"
-#include "frictionlab/io/sha256.hpp"
-#include "frictionlab/fleet/shard.hpp"
+#include "io/atomic_write.hpp"
+#include "report/figure.hpp"
+#include "io/sha256.hpp"
+#include "fleet/shard.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {

@@ -17,7 +17,7 @@
 
 #include "frictionlab/analysis/drift.hpp"
 #include "frictionlab/identify/result.hpp"
-#include "frictionlab/fleet/shard.hpp"
+#include "fleet/shard.hpp"
 
 namespace frictionlab::cli {
 

@@ -15,7 +15,7 @@
 #include "data_options.hpp"
 #include "figures.hpp"
 #include "map_command.hpp"
-#include "frictionlab/report/figure.hpp"
+#include "report/figure.hpp"
 #include "output.hpp"
 #include "frictionlab/analysis/contour.hpp"
 #include "frictionlab/analysis/envelope.hpp"

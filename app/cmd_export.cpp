@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "commands.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "frictionlab/export/c_export.hpp"
 #include "output.hpp"
 

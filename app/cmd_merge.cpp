@@ -10,8 +10,8 @@
 
 #include "batch_identify.hpp"
 #include "commands.hpp"
-#include "frictionlab/report/figure.hpp"
-#include "frictionlab/fleet/shard.hpp"
+#include "report/figure.hpp"
+#include "fleet/shard.hpp"
 #include "map_command.hpp"
 #include "output.hpp"
 

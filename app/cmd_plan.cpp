@@ -8,7 +8,7 @@
 #include "commands.hpp"
 #include "frictionlab/analysis/plan/plan.hpp"
 #include "frictionlab/format.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "frictionlab/scenario/plan_files.hpp"
 #include "output.hpp"
 

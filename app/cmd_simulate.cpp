@@ -8,9 +8,9 @@
 #include "frictionlab/format.hpp"
 #include "contour_figure.hpp"
 #include "figures.hpp"
-#include "frictionlab/report/figure.hpp"
+#include "report/figure.hpp"
 #include "output.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 

@@ -19,7 +19,7 @@
 #include "figure_kit.hpp"
 #include "frictionlab/analysis/contour_validation.hpp"
 #include "frictionlab/identify/validate.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/scenario/scenario.hpp"

@@ -9,8 +9,8 @@
 
 #include "frictionlab/analysis/contour.hpp"
 #include "frictionlab/identify/result.hpp"
-#include "frictionlab/report/figure.hpp"
-#include "frictionlab/report/report.hpp"
+#include "report/figure.hpp"
+#include "report/report.hpp"
 #include "frictionlab/simulate/trajectory.hpp"
 
 namespace frictionlab::cli {

@@ -11,7 +11,7 @@
 
 #include "frictionlab/analysis/envelope.hpp"
 #include "frictionlab/identify/result.hpp"
-#include "frictionlab/report/figure.hpp"
+#include "report/figure.hpp"
 #include "frictionlab/models/parameter.hpp"
 
 namespace frictionlab::cli {

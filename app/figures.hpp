@@ -11,8 +11,8 @@
 #include "frictionlab/analysis/envelope.hpp"
 #include "frictionlab/analysis/stick_slip.hpp"
 #include "frictionlab/identify/result.hpp"
-#include "frictionlab/report/figure.hpp"
-#include "frictionlab/report/report.hpp"
+#include "report/figure.hpp"
+#include "report/report.hpp"
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/simulate/trajectory.hpp"
 

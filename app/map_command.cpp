@@ -12,12 +12,12 @@
 
 #include "frictionlab/analysis/map.hpp"
 #include "frictionlab/format.hpp"
-#include "frictionlab/io/atomic_write.hpp"
-#include "frictionlab/report/figure.hpp"
-#include "frictionlab/fleet/map_run.hpp"
+#include "io/atomic_write.hpp"
+#include "report/figure.hpp"
+#include "fleet/map_run.hpp"
 #include "frictionlab/scenario/scenario_grid.hpp"
-#include "frictionlab/io/sha256.hpp"
-#include "frictionlab/fleet/shard.hpp"
+#include "io/sha256.hpp"
+#include "fleet/shard.hpp"
 
 namespace frictionlab::cli {
 namespace {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "frictionlab/report/figure.hpp"
-#include "frictionlab/fleet/shard.hpp"
+#include "report/figure.hpp"
+#include "fleet/shard.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {

@@ -16,9 +16,9 @@
 #include "figures.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/identify/method.hpp"
-#include "frictionlab/io/atomic_write.hpp"
-#include "frictionlab/report/figure.hpp"
-#include "frictionlab/report/report.hpp"
+#include "io/atomic_write.hpp"
+#include "report/figure.hpp"
+#include "report/report.hpp"
 #include "frictionlab/version.hpp"
 
 #include <nlohmann/json.hpp>

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "frictionlab/identify/result.hpp"
-#include "frictionlab/report/report.hpp"
+#include "report/report.hpp"
 
 namespace frictionlab::cli {
 

@@ -15,7 +15,7 @@
 #include "../data_options.hpp"
 #include "../output.hpp"
 #include "frictionlab/identify/result.hpp"
-#include "frictionlab/report/figure.hpp"
+#include "report/figure.hpp"
 
 namespace frictionlab::cli {
 

@@ -9,7 +9,8 @@
 #include <string>
 #include <utility>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// A number for people: `digits` significant digits (1 to 17), no trailing zeros, exponent form
 /// for large and small magnitudes (printf's %g: 1e-05, 95.1, 1.234e+05). NaN prints "nan", the

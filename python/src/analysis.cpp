@@ -11,7 +11,7 @@
 #include "frictionlab/analysis/drift.hpp"
 #include "frictionlab/analysis/envelope.hpp"
 #include "frictionlab/analysis/stick_slip.hpp"
-#include "frictionlab/fleet/map_run.hpp"
+#include "fleet/map_run.hpp"
 
 namespace frictionlab::python {
 

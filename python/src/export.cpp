@@ -5,7 +5,7 @@
 
 #include "common.hpp"
 #include "frictionlab/identify/validate.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "frictionlab/export/c_export.hpp"
 
 namespace frictionlab::python {

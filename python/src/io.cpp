@@ -2,11 +2,11 @@
 #include <pybind11/stl.h>
 
 #include "common.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/io/load.hpp"
-#include "frictionlab/io/sha256.hpp"
+#include "io/sha256.hpp"
 
 namespace frictionlab::python {
 

@@ -3,7 +3,7 @@
 
 #include "common.hpp"
 #include "frictionlab/analysis/plan/plan.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "frictionlab/scenario/plan_files.hpp"
 
 namespace frictionlab::python {

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "frictionlab/format.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 
 namespace frictionlab::python {
 

@@ -1,4 +1,4 @@
-#include "frictionlab/fleet/map_run.hpp"
+#include "fleet/map_run.hpp"
 
 #include <cmath>
 
@@ -6,7 +6,7 @@
 
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/scenario/scenario_grid.hpp"
-#include "frictionlab/io/sha256.hpp"
+#include "io/sha256.hpp"
 
 namespace frictionlab {
 namespace {

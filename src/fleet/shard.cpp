@@ -1,4 +1,4 @@
-#include "frictionlab/fleet/shard.hpp"
+#include "fleet/shard.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 
 #include "frictionlab/format.hpp"
 

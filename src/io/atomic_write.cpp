@@ -1,4 +1,4 @@
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 
 #include <cerrno>
 #include <cstdio>

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "frictionlab/io/sha256.hpp"
+#include "io/sha256.hpp"
 
 namespace frictionlab {
 namespace {

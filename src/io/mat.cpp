@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "frictionlab/format.hpp"
-#include "frictionlab/io/sha256.hpp"
+#include "io/sha256.hpp"
 #include "matio_library.hpp"
 
 namespace frictionlab {

@@ -1,4 +1,4 @@
-#include "frictionlab/io/sha256.hpp"
+#include "io/sha256.hpp"
 
 #include <openssl/evp.h>
 

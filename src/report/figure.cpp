@@ -1,4 +1,4 @@
-#include "frictionlab/report/figure.hpp"
+#include "report/figure.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "frictionlab/report/report.hpp"
+#include "report/report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +20,7 @@
 
 #include "frictionlab/format.hpp"
 #include "frictionlab/identify/method.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 
 namespace frictionlab {
 namespace {

@@ -1,7 +1,7 @@
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "frictionlab/simulate/output_size.hpp"
-#include "frictionlab/simulate/stiff_system.hpp"
+#include "simulate/stiff_system.hpp"
 #include "small_vector.hpp"
 #include "step_interpolant.hpp"
 

@@ -1,4 +1,4 @@
-#include "frictionlab/simulate/stiff_system.hpp"
+#include "simulate/stiff_system.hpp"
 
 #include <ceres/jet.h>
 

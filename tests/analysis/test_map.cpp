@@ -13,7 +13,7 @@
 #include "frictionlab/analysis/describing_function.hpp"
 #include "frictionlab/analysis/map.hpp"
 #include "frictionlab/analysis/sliding_stability.hpp"
-#include "frictionlab/fleet/map_run.hpp"
+#include "fleet/map_run.hpp"
 #include "frictionlab/scenario/scenario_grid.hpp"
 #include <cstdio>
 

@@ -16,7 +16,7 @@
 #include <thread>
 
 #include "error_message.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/simulate/output_size.hpp"

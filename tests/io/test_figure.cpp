@@ -9,8 +9,8 @@
 #include <string>
 #include <unistd.h>
 
-#include "frictionlab/report/figure.hpp"
-#include "frictionlab/report/report.hpp"
+#include "report/figure.hpp"
+#include "report/report.hpp"
 
 namespace fs = std::filesystem;
 using namespace frictionlab;

@@ -13,12 +13,12 @@
 
 #include "error_message.hpp"
 #include "temp_dir.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/io/csv.hpp"
 #include "frictionlab/io/load.hpp"
 #include "frictionlab/io/mat.hpp"
-#include "frictionlab/io/sha256.hpp"
+#include "io/sha256.hpp"
 
 namespace fl = frictionlab;
 namespace fs = std::filesystem;

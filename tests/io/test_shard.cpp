@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "error_message.hpp"
-#include "frictionlab/fleet/shard.hpp"
+#include "fleet/shard.hpp"
 
 namespace frictionlab {
 namespace {

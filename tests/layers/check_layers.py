@@ -69,8 +69,11 @@ def main():
                     if inc.startswith("frictionlab/"):
                         parts = inc.split("/")
                         there = parts[1] if len(parts) > 2 else "root"
-                    else:
-                        there = layer_of(os.path.normpath(os.path.join(os.path.dirname(rel), inc)))
+                    else:  # beside the file, else from src/ (the library's private include folder)
+                        beside = os.path.normpath(os.path.join(os.path.dirname(rel), inc))
+                        if not os.path.exists(os.path.join(root, beside)):
+                            beside = os.path.normpath(os.path.join("src", inc))
+                        there = layer_of(beside)
                     if there is None or there == here:
                         continue
                     if there not in ALLOWED[here]:

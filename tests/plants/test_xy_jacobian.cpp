@@ -22,7 +22,7 @@
 #include "frictionlab/models/friction_law.hpp"
 #include "frictionlab/plants/xy_table.hpp"
 #include "frictionlab/simulate/simulate.hpp"
-#include "frictionlab/simulate/stiff_system.hpp"
+#include "simulate/stiff_system.hpp"
 #include "property_cases.hpp"
 #include "xy_loop.hpp"
 

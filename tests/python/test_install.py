@@ -1,6 +1,7 @@
 """Packaging (slow, marked `install`; CI runs it as the ctest python.install):
-pip install --no-build-isolation . into a --system-site-packages venv, and cmake --install of
-the build tree; each installed package must import and compute outside the source tree."""
+pip install --no-build-isolation . into a --system-site-packages venv (from the build tree that
+FRICTIONLAB_BUILD_DIR names, as ctest sets it, so nothing is compiled again), and cmake --install
+of the build tree; each installed package must import and compute outside the source tree."""
 import os
 import pathlib
 import shutil
@@ -26,7 +27,7 @@ def clean_env():
 
 @pytest.mark.install
 def test_pip_install_into_system_site_packages_venv(tmp_path, source_dir):
-    # Copy the sources so the build leaves nothing in the checkout (setup.py builds in build/).
+    # Copy the sources so the build leaves nothing in the checkout (setup.py stages in build/).
     src = tmp_path / "src"
     shutil.copytree(source_dir, src, ignore=shutil.ignore_patterns("build*", ".git", "__pycache__", "*.egg-info"))
     venv = tmp_path / "venv"
@@ -38,6 +39,14 @@ def test_pip_install_into_system_site_packages_venv(tmp_path, source_dir):
     out = subprocess.run([str(py), "-c", SMOKE], check=True, env=clean_env(), cwd=tmp_path, capture_output=True,
                          text=True)
     assert out.stdout.strip()
+    # The package carries the library under its soname and finds it beside the extension: no
+    # path of a build tree in the extension's run-time search path.
+    core = list(venv.rglob("frictionlab/_core*.so"))
+    assert len(core) == 1, core
+    assert list(core[0].parent.glob("libfrictionlab.so.*")), list(core[0].parent.iterdir())
+    dynamic = subprocess.run(["readelf", "-d", str(core[0])], check=True, capture_output=True, text=True).stdout
+    runpath = [line for line in dynamic.splitlines() if "RUNPATH" in line or "RPATH" in line]
+    assert runpath and "$ORIGIN" in runpath[0] and "build" not in runpath[0], runpath
 
 
 @pytest.mark.install

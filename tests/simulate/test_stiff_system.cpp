@@ -10,7 +10,7 @@
 #include "frictionlab/plants/axis.hpp"
 #include "frictionlab/plants/dc_motor.hpp"
 #include "frictionlab/plants/spring_base.hpp"
-#include "frictionlab/simulate/stiff_system.hpp"
+#include "simulate/stiff_system.hpp"
 
 using namespace frictionlab;
 

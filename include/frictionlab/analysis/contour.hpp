@@ -9,7 +9,8 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Options of analyze_contour.
 struct ContourOptions {

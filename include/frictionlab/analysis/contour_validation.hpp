@@ -14,7 +14,8 @@
 #include "frictionlab/identify/validate.hpp"
 #include "frictionlab/simulate/scenario.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Result of validate_contour.
 struct ContourValidation {

@@ -32,7 +32,8 @@
 
 #include <string>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The loop of predict_hunting. SI units; a rotary axis reads kg m^2, N m, rad.
 struct HuntingLoop {

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The date (and time) a log was taken.
 struct LogDate {

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// How the envelope decays.
 enum class DecayKind {

@@ -18,7 +18,8 @@
 
 #include "frictionlab/simulate/scenario.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// One varied key: `count` values from `start` to `stop`, evenly spaced (or log-spaced).
 struct MapAxis {

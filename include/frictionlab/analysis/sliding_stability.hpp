@@ -15,7 +15,8 @@
 
 #include "frictionlab/models/stribeck.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Slope dF/dv of the Stribeck law's sliding force at velocity v (N s/m or N m s/rad):
 /// Fv - (Fs - Fc) delta |v|^(delta-1) / vs^delta exp(-|v/vs|^delta) for v != 0 (even in v).

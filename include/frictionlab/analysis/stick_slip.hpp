@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Options of detect_stick_slip.
 struct StickSlipOptions {

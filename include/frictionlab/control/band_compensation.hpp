@@ -8,7 +8,8 @@
 #include "frictionlab/control/compensator.hpp"
 #include "frictionlab/models/friction_law.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Output = the law's sliding force F(s) (steady-state force for dynamic laws; each direction its
 /// own parameters for asymmetric laws) for |s| > b, and the derived class's formula inside.

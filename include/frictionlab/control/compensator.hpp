@@ -11,7 +11,8 @@
 #include <span>
 #include <string>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The signals a compensator sees at one instant. Units: m, m/s, m/s^2 and N on a linear axis;
 /// rad, rad/s, rad/s^2 and N m on a rotary one.

@@ -7,7 +7,8 @@
 
 #include "frictionlab/control/compensator.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Options of the disturbance observer.
 struct DisturbanceObserverParams {

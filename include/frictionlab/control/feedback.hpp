@@ -6,7 +6,8 @@
 
 #include "frictionlab/control/band_compensation.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Options of the feedback compensation.
 struct FeedbackParams {

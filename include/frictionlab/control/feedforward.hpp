@@ -7,7 +7,8 @@
 
 #include "frictionlab/control/band_compensation.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Options of the feedforward compensation.
 struct FeedforwardParams {

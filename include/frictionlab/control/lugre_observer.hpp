@@ -9,7 +9,8 @@
 #include "frictionlab/control/compensator.hpp"
 #include "frictionlab/models/friction_law.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Options of the LuGre observer.
 struct LuGreObserverParams {

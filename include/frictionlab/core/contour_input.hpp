@@ -15,7 +15,8 @@
 
 #include "frictionlab/core/input.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// A circular contour.
 struct CircleContour {

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The shapes an input signal can take.
 enum class InputShape { constant, step, ramp, trapezoid, sine, table };

@@ -37,7 +37,8 @@
 #include "frictionlab/control/lugre_observer.hpp"
 #include "frictionlab/models/friction_law.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The compensation to export beside the law, with its parameters (their units in control/*.hpp);
 /// std::monostate: the law alone.

@@ -11,7 +11,8 @@
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Samples of a trapezoid experiment. Shapes: all of length N, time strictly increasing and
 /// regularly sampled (s). `force` is the drive torque or force (N m or N: Kt times current).

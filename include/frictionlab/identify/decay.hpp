@@ -12,7 +12,8 @@
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 struct DecayData {
   Eigen::VectorXd time;      ///< s, strictly increasing, regular

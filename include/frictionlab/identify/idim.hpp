@@ -19,7 +19,8 @@
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Measured signals of one run (SI units).
 struct IdimData {

@@ -6,7 +6,8 @@
 #include "frictionlab/identify/idim.hpp"
 #include "frictionlab/io/dataset.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Where the signals of an IDIM record are in a data file. The EMPS benchmark files use
 /// {"t", "qm", "vir", "gtau"}.

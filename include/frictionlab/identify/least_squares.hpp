@@ -13,7 +13,8 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 struct LeastSquaresOptions {
   /// Refuse (ok false, message naming the parameters) when the condition number of the

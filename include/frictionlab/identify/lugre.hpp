@@ -21,7 +21,8 @@
 #include "frictionlab/models/friction_law.hpp"
 #include "frictionlab/models/parameter.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Samples of an experiment on a rigid axis. Shapes: all of length N >= 3, time strictly
 /// increasing and regularly sampled. The record should start at rest (bristles unloaded) and

@@ -13,7 +13,8 @@
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// One identification method (or validation) of the library.
 struct MethodInfo {

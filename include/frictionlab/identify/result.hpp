@@ -12,7 +12,8 @@
 
 #include "frictionlab/models/friction_law.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// How well the identified model reproduces the data it was identified on.
 struct FitFigures {

@@ -10,7 +10,8 @@
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/friction_law.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The static laws a friction-velocity map can be fitted with.
 enum class StaticFitModel { coulomb_viscous, coulomb_viscous_asymmetric, stribeck, stribeck_asymmetric };

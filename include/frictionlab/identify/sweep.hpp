@@ -10,7 +10,8 @@
 #include "frictionlab/identify/static_fit.hpp"
 #include "frictionlab/models/parameter.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Samples of a sweep run. Shapes: all of length N; time strictly increasing (s).
 struct SweepData {

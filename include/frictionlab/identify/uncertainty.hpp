@@ -25,7 +25,8 @@
 
 #include "frictionlab/identify/result.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// What a method knows about each parameter before the uncertainty is assessed.
 struct ParameterState {

@@ -19,7 +19,8 @@
 #include "frictionlab/plants/axis.hpp"
 #include "frictionlab/simulate/scenario.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The identified model a validation simulates.
 struct IdentifiedModel {

@@ -10,7 +10,8 @@
 #include "frictionlab/io/dataset.hpp"
 #include "frictionlab/signal/sampling.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The column `name` of `data`. `role` says what it is used as, for the message (e.g. "time",
 /// "--position"). \throws std::invalid_argument "FILE: no column 'NAME' (ROLE); the file has

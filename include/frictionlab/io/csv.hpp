@@ -7,7 +7,8 @@
 
 #include "frictionlab/io/dataset.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Whether a CSV file must start with a header row.
 enum class CsvHeader {

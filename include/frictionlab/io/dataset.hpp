@@ -12,7 +12,8 @@
 
 #include "frictionlab/signal/sampling.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Named columns of doubles (all of the same length), named scalars, and the source file.
 /// Units are whatever the file holds; io/columns.hpp converts to SI (scale factors).

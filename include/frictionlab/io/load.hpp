@@ -6,7 +6,8 @@
 #include "frictionlab/io/csv.hpp"
 #include "frictionlab/io/dataset.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// `.csv` (any case) -> read_csv(path, csv_options), `.mat` -> read_mat(path).
 /// \throws std::invalid_argument naming the file and the accepted extensions for any other

@@ -5,7 +5,8 @@
 
 #include "frictionlab/io/dataset.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Reads every real numeric variable of a MAT file: vectors (1xN or Nx1) become columns, 1x1
 /// values become scalars; any numeric class (double, single, integers) is converted to double.

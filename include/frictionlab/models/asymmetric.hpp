@@ -8,7 +8,8 @@
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/models/scalar.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Direction-asymmetric form of a symmetric static law `Law`: `pos` acts for v > 0 (and a stuck
 /// contact pushed in +), `neg` for v < 0. Both are stored with positive levels.

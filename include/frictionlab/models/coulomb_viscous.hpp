@@ -6,7 +6,8 @@
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/models/scalar.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// F = Fc sign(v) + Fv v. A stuck contact holds up to Fc.
 template <class S = double>

@@ -9,7 +9,8 @@
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/models/scalar.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Dahl model: stiffness sigma0 at rest, saturating at Fc while sliding. No stiction peak.
 template <class S = double>

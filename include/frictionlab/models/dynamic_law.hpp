@@ -6,7 +6,8 @@
 #include <concepts>
 #include <span>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// A dynamic law with `num_states()` states:
 /// - `derivative(z, v, dz)`: dz/dt (m/s or rad/s per state) for the continuous model (the integrators);

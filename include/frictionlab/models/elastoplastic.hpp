@@ -16,7 +16,8 @@
 #include "frictionlab/models/scalar.hpp"
 #include "frictionlab/models/stribeck.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 template <class S = double>
 struct ElastoPlasticT {

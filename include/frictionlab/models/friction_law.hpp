@@ -26,7 +26,8 @@
 #include "frictionlab/models/table.hpp"
 #include "frictionlab/models/viscous.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// A law as written in a file: its name and named values. Scalars are parameters (SI units);
 /// arrays serve `table` (velocity, force) and `gms` (k, alpha); strings serve `smooth` (shape).

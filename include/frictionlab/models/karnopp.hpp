@@ -8,7 +8,8 @@
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/models/scalar.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Karnopp model. Trade-off of `dv`: wider sticks more reliably at large steps, but lets a
 /// body creep at speeds below dv; narrower needs smaller steps. The hybrid engine of

@@ -12,7 +12,8 @@
 #include "frictionlab/models/scalar.hpp"
 #include "frictionlab/models/stribeck.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Outcome of a passivity check: a set that is not passive is still accepted (the 1995 paper's
 /// Table I set is not), but energy may then grow locally in simulation.

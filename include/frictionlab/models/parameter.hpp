@@ -11,7 +11,8 @@
 
 #include "frictionlab/format.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The kind of axis decides the units printed: N, N s/m, kg, m/s or N m, N m s/rad, kg m^2, rad/s.
 enum class Axis { linear, rotary };
@@ -79,7 +80,7 @@ struct Parameter {
   static std::string unit_text(Quantity q, Axis axis) { return std::string(::frictionlab::unit(q, axis)); }
 };
 
-namespace detail {
+namespace FRICTIONLAB_NO_EXPORT detail {
 /// The name the laws' checks use for format_number (format.hpp) with 10 significant digits,
 /// enough to tell values apart.
 inline std::string format_value(double value, int digits = 10) { return format_number(value, digits); }

@@ -6,7 +6,8 @@
 #include <cmath>
 #include <type_traits>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The plain value of a scalar: the value itself for arithmetic types, the real part of a Jet.
 template <class T>

@@ -13,7 +13,8 @@
 #include "frictionlab/models/scalar.hpp"
 #include "frictionlab/models/stribeck.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// 2|x| beyond which tanh(x) rounds to +-1 in double precision (1 - tanh(20) = 8e-18).
 inline constexpr double kTanhSaturation = 40.0;

@@ -7,7 +7,8 @@
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/models/scalar.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Static + Coulomb + viscous: stuck while |applied| <= Fs; sliding force Fc sign(v) + Fv v.
 template <class S = double>

@@ -9,7 +9,8 @@
 
 #include "frictionlab/models/scalar.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// A static friction law: `sliding(v)` is the force for v != 0 (N or N m, sign of v);
 /// `breakaway_positive()` / `breakaway_negative()` are the largest applied force (magnitude)

@@ -6,7 +6,8 @@
 
 #include "frictionlab/models/scalar.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Friction as a measured function of velocity, interpolated monotonically between the points
 /// (piecewise cubic Hermite with Fritsch-Carlson slopes: no overshoot between measured points).

@@ -6,7 +6,8 @@
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/models/scalar.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Linear viscous friction F = Fv v. A stuck contact holds no force.
 template <class S = double>

@@ -8,7 +8,8 @@
 #include "frictionlab/control/compensator.hpp"
 #include "frictionlab/plants/plant.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// What the loop controls.
 enum class ControlLoop {

@@ -6,7 +6,8 @@
 
 #include "frictionlab/plants/plant.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// How the input drives the motor.
 enum class MotorDrive {

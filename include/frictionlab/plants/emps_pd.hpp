@@ -14,7 +14,8 @@
 #include "frictionlab/plants/plant.hpp"
 #include "frictionlab/core/input.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Gains, limits and timing of the EMPS controller (EMPS values in brackets).
 struct EmpsPdParams {

@@ -11,7 +11,8 @@
 #include "frictionlab/plants/axis.hpp"
 #include "frictionlab/plants/plant.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// One axis of a MultiAxis.
 struct NamedAxis {

@@ -3,7 +3,8 @@
 
 #include "frictionlab/plants/plant.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Parameters of a point-mass pendulum; the angle th (rad) is measured from the hanging position.
 struct PendulumParams {

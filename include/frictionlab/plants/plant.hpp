@@ -13,7 +13,8 @@
 
 #include "frictionlab/core/input.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 class FrictionLaw;  // models/friction_law.hpp
 

@@ -4,7 +4,8 @@
 
 #include "frictionlab/plants/plant.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Parameters of the mass-spring with moving base.
 struct SpringBaseParams {

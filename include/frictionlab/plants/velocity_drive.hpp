@@ -5,7 +5,8 @@
 
 #include "frictionlab/plants/plant.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Parameters of a velocity drive.
 struct VelocityDriveParams {

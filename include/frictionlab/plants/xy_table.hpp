@@ -22,7 +22,8 @@
 #include "frictionlab/plants/closed_loop.hpp"
 #include "frictionlab/plants/plant.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// One axis of an XyTable: body, friction, drive and controller gains.
 struct XyAxis {

@@ -24,7 +24,8 @@ namespace YAML {
 class Node;
 }
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Reads a law from a YAML mapping. `where` names the place for messages (file and key path,
 /// e.g. "scenario.yaml: friction"). Throws std::invalid_argument naming `where` and the key

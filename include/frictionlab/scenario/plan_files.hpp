@@ -6,7 +6,8 @@
 
 #include "frictionlab/analysis/plan/rig.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Reads the prior (its "law", or the file as a law; parameters.M, when present, replaces an
 /// axis plant's inertia; "axis" sets the units) and the scenario (its friction section may be

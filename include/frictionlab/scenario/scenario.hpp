@@ -93,7 +93,8 @@ namespace YAML {
 class Node;
 }
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// An identified model of one axis: its friction law, inertia M (kg or kg m^2) and offset (N or N m).
 struct AxisModel {

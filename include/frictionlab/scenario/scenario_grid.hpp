@@ -11,7 +11,8 @@
 
 #include "frictionlab/scenario/scenario.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The scenario file, read once, and the keys varied in it.
 class ScenarioGrid {

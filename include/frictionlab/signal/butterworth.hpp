@@ -7,7 +7,8 @@
 
 #include "frictionlab/signal/transfer_function.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Zeros, poles and gain of an order-`order` digital Butterworth low-pass with cut-off `wn`
 /// (normalised: 1 is the Nyquist frequency; -3 dB at wn). scipy.signal.butter(..., output='zpk').

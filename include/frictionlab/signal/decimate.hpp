@@ -5,7 +5,8 @@
 
 #include "frictionlab/signal/filtfilt.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Low-pass with an order-8 Chebyshev type I filter (0.05 dB ripple, cut-off 0.8 / q of the
 /// Nyquist frequency, second-order sections) run forward and backward (sosfiltfilt, odd

@@ -3,7 +3,8 @@
 
 #include <Eigen/Core>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Central differences (x(k+1) - x(k-1)) / (2 dt) inside, one-sided first differences at the
 /// two ends, as numpy.gradient(x, dt) (edge_order=1). Units: those of x per second when dt is

@@ -10,7 +10,8 @@
 #include "frictionlab/signal/filter_workspace.hpp"
 #include "frictionlab/signal/transfer_function.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Columns of equal length that live elsewhere (filtered without first copying them into a matrix).
 using ColumnViews = std::vector<Eigen::Map<const Eigen::VectorXd>>;

@@ -11,7 +11,8 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Names sample k (0-based) in messages, e.g. "line 17" for a CSV row or "sample 18".
 using RowLabeller = std::function<std::string(Eigen::Index)>;

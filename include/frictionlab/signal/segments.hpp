@@ -7,7 +7,8 @@
 #include <optional>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// A run of samples [begin, end) and the time it covers, from time(begin) to time(end - 1).
 struct IndexRange {

@@ -5,7 +5,8 @@
 
 #include <Eigen/Core>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Transfer function H(z) = (b0 + b1 z^-1 + ...) / (a0 + a1 z^-1 + ...), coefficients in
 /// descending powers of z as scipy.signal returns them (a0 = 1 for the designs here).

@@ -12,7 +12,8 @@
 #include "frictionlab/simulate/scenario.hpp"
 #include "frictionlab/simulate/trajectory.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The outcome of one run of a batch: a trajectory, or the exception simulate() threw.
 struct BatchResult {

@@ -3,7 +3,8 @@
 
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// How the engine integrates.
 enum class SolverMode {

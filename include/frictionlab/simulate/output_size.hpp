@@ -7,7 +7,8 @@
 
 #include "frictionlab/simulate/options.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Rows a run outputs: floor(duration * output_rate) + 1, as a double (it may not fit a size_t).
 double output_rows(const SimulationOptions& o);

@@ -9,7 +9,8 @@
 #include "frictionlab/core/input.hpp"
 #include "frictionlab/simulate/options.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Everything simulate() needs. Scenario files (scenario/scenario.hpp) produce one.
 struct Scenario {

@@ -37,7 +37,8 @@
 
 #include <span>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Simulates `plant` with friction `law` driven by `input`.
 /// \returns rows at t = k / output_rate (see SimulationOptions).

@@ -5,7 +5,8 @@
 #include <string_view>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// What kind of mode switch an event was (hybrid mode).
 enum class SwitchKind {

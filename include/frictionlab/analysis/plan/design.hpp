@@ -24,7 +24,8 @@
 #include "frictionlab/analysis/plan/profile.hpp"
 #include "frictionlab/analysis/plan/rig.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// The methods a plan can be made for.
 enum class PlanMethod { breakaway, sweep, idim, lugre };

@@ -22,7 +22,8 @@
 #include "frictionlab/analysis/plan/design.hpp"
 #include "frictionlab/simulate/trajectory.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// A-priori std of a method's parameters, in the method's parameter order.
 struct AprioriSpread {

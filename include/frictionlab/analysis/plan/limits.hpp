@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Limits of the rig (SI units; force means torque on a rotary axis). An infinite value (the
 /// default) is no limit.

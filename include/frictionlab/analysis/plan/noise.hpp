@@ -7,7 +7,8 @@
 #include <string>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Standard deviations of white Gaussian measurement noise (SI units), and the encoder step.
 /// All >= 0; 0 (the default) is a clean signal.

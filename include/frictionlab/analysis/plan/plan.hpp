@@ -9,7 +9,8 @@
 #include "frictionlab/analysis/plan/design.hpp"
 #include "frictionlab/analysis/plan/predict.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 struct PlanOptions {
   PlanDesignOptions design;

@@ -19,7 +19,8 @@
 #include "frictionlab/identify/sweep.hpp"
 #include "frictionlab/simulate/trajectory.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// What the rig would record: samples at the profile's rate (SI units, length N each).
 struct PlanMeasurement {

@@ -7,7 +7,8 @@
 
 #include "frictionlab/core/input.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// One figure of a plan's design ("ramp_rate" = 0.0023 A/s), with its unit and what it is.
 struct PlanFigure {

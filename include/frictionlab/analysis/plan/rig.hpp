@@ -10,7 +10,8 @@
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/simulate/scenario.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// What the plan commands.
 enum class PlanDrive {

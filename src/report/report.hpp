@@ -10,9 +10,10 @@
 #include <vector>
 
 #include "frictionlab/identify/result.hpp"
-#include "frictionlab/report/figure.hpp"
+#include "report/figure.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// A figure of the report: drawn to DIR/NAME.svg (plus NAME.svg.dat and NAME.svg.gp).
 struct ReportFigure {

@@ -7,7 +7,8 @@
 #include <string>
 #include <string_view>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Lowercase hex SHA-256 (64 characters) of the given bytes.
 std::string sha256_hex(std::string_view bytes);

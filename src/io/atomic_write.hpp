@@ -14,7 +14,8 @@
 #include <string>
 #include <string_view>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Options of write_file_atomic.
 struct AtomicWriteOptions {

@@ -24,9 +24,10 @@
 #include <vector>
 
 #include "frictionlab/analysis/map.hpp"
-#include "frictionlab/fleet/shard.hpp"
+#include "fleet/shard.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Options of map_scenario.
 struct MapRunOptions {

@@ -29,7 +29,8 @@
 #include <variant>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Shard K of N (1 <= K <= N).
 struct ShardSpec {
