@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "io/atomic_write.hpp"
 #include "frictionlab/export/c_export.hpp"
+#include "frictionlab/scenario/model_file.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {
@@ -34,7 +35,7 @@ void flag_belongs(const std::optional<double>& flag, const char* name, const std
                                 "; pass --compensation " + owner + " or drop " + name);
 }
 
-CompensationParams compensation(const ExportArgs& a, const ExportModel& m) {
+CompensationParams compensation(const ExportArgs& a, const ModelFile& m) {
   const std::string& type = a.compensation;
   flag_belongs(a.band, "--band", type, "feedforward");
   flag_belongs(a.dead_band, "--dead-band", type, "feedback");
@@ -90,7 +91,7 @@ Handler register_export(CLI::App& app) {
       throw std::invalid_argument("--c " + a->output + " is the model file " + a->model +
                                   "; the header never replaces its input: give it its own file");
     check_output_file(a->output, a->overwrite, "--c");
-    const ExportModel m = read_export_model(a->model);
+    const ModelFile m = read_model_file(a->model);
     CExportOptions o;
     o.prefix = a->prefix;
     o.single_precision = a->single;

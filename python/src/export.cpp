@@ -7,26 +7,27 @@
 #include "frictionlab/identify/validate.hpp"
 #include "io/atomic_write.hpp"
 #include "frictionlab/export/c_export.hpp"
+#include "frictionlab/scenario/model_file.hpp"
 
 namespace frictionlab::python {
 namespace {
 
 // The law and, where known, the identified inertia M (the disturbance observer's default).
-ExportModel model_arg(const py::handle& model) {
+ModelFile model_arg(const py::handle& model) {
   if (py::isinstance<Result>(model)) {
     const IdentifiedModel m = model_from_result(py::cast<const Result&>(model));
     return {m.law, m.axis.M > 0 ? std::optional<double>(m.axis.M) : std::nullopt};
   }
   if (py::isinstance<FrictionLaw>(model) || py::isinstance<py::dict>(model)) return {law_arg(model), std::nullopt};
   if (py::isinstance<py::str>(model) || py::hasattr(model, "__fspath__"))
-    return read_export_model(path_arg(model, "export_c", "model"));
+    return read_model_file(path_arg(model, "export_c", "model"));
   throw argument_type_error(
       "export_c: argument model: expected a FrictionLaw, a law dict, an identification Result or the path of a "
       "MODEL.json, got " + py::cast<std::string>(py::str(py::type::of(model).attr("__name__"))));
 }
 
 // None, a type name, or {"type": TYPE, parameter: value, ...}.
-CompensationParams compensation_arg(const py::handle& c, const ExportModel& model) {
+CompensationParams compensation_arg(const py::handle& c, const ModelFile& model) {
   if (c.is_none()) return {};
   std::string type;
   std::map<std::string, double> values;
@@ -64,7 +65,7 @@ void init_export(py::module_& m) {
       "export_c",
       [](const py::handle& model, const py::handle& compensation, bool single, const std::string& prefix,
          const py::handle& path, bool overwrite) {
-        const ExportModel em = model_arg(model);
+        const ModelFile em = model_arg(model);
         CExportOptions o;
         o.compensation = compensation_arg(compensation, em);
         o.single_precision = single;

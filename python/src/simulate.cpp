@@ -6,10 +6,12 @@
 #include <sstream>
 
 #include "common.hpp"
+#include "frictionlab/control/compensation_spec.hpp"
 #include "frictionlab/scenario/scenario.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
-#include "frictionlab/plants/xy_table.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
+#include "frictionlab/simulate/emps_pd_loop.hpp"
 #include "frictionlab/simulate/simulate.hpp"
+#include "frictionlab/simulate/xy_table.hpp"
 
 namespace frictionlab::python {
 
@@ -43,6 +45,88 @@ YAML::Node to_yaml(const py::handle& x, const std::string& where) {
   } catch (const py::error_already_set&) {
     throw std::invalid_argument(where + ": expected a number, text, list or dict, got " +
                                 py::cast<std::string>(py::str(py::type::of(x).attr("__name__"))));
+  }
+}
+
+// What the scenario's loop compensates with: the type, per axis on an xy-table; None without one.
+py::object compensation_of(const Scenario& s) {
+  auto type_of = [](const Compensator* c) -> py::object { return c ? py::object(py::str(c->type())) : py::none(); };
+  if (const auto* loop = dynamic_cast<const ClosedLoop*>(s.plant.get())) return type_of(loop->compensator());
+  if (const auto* loop = dynamic_cast<const EmpsPdLoop*>(s.plant.get())) return type_of(loop->compensator());
+  if (const auto* xy = dynamic_cast<const XyTable*>(s.plant.get())) {
+    py::dict d;
+    d["x"] = type_of(xy->axis(0).compensator.get());
+    d["y"] = type_of(xy->axis(1).compensator.get());
+    return d;
+  }
+  return py::none();
+}
+
+constexpr const char* kSetWhere = "Scenario.compensation";
+
+// None, a type name or {"type": TYPE, parameter: value, ...} (control/compensation_spec.hpp), as
+// the compensator of a body of inertia M (kg or kg m^2, the disturbance observer's default)
+// whose friction `law` is (the exact model); null for None.
+std::shared_ptr<const Compensator> compensator_arg(const py::handle& c, const FrictionLaw& law, double M) {
+  if (c.is_none()) return nullptr;
+  std::string type;
+  std::map<std::string, double> values;
+  if (py::isinstance<py::str>(c)) {
+    type = py::cast<std::string>(c);
+  } else if (py::isinstance<py::dict>(c)) {
+    for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(c)) {
+      const std::string k = py::cast<std::string>(py::str(key));
+      if (k != "type") {
+        values[k] = number_arg(value, "Scenario", "compensation['" + k + "']");
+      } else if (py::isinstance<py::str>(value)) {
+        type = py::cast<std::string>(value);
+      } else {
+        throw argument_type_error(std::string(kSetWhere) + ": ['type']: expected a compensation name");
+      }
+    }
+    if (type.empty())
+      throw std::invalid_argument(std::string(kSetWhere) +
+                                  ": missing 'type' (feedforward, feedback, lugre-observer or disturbance-observer)");
+  } else {
+    throw argument_type_error(std::string(kSetWhere) +
+                              ": expected None, a compensation name or a dict {'type': NAME, parameter: value}");
+  }
+  try {
+    return make_compensator(make_compensation(type, values, M > 0 ? std::optional<double>(M) : std::nullopt), &law);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string(kSetWhere) + ": " + e.what());
+  }
+}
+
+// Rebuilds the scenario's loop with the compensation `c` (see the property's doc).
+void set_compensation(Scenario& s, const py::object& c) {
+  const std::shared_ptr<const Plant>& plant = s.plant;
+  if (const auto* loop = dynamic_cast<const ClosedLoop*>(plant.get())) {
+    const std::shared_ptr<const Plant> inner(plant, &loop->inner());  // shares the loop's ownership
+    s.plant = close_loop(inner, loop->controller(), compensator_arg(c, s.law, loop->inertia()));
+  } else if (const auto* pd = dynamic_cast<const EmpsPdLoop*>(plant.get())) {
+    const std::shared_ptr<const Plant> inner(plant, &pd->inner());
+    s.plant = close_loop(inner, pd->params(), compensator_arg(c, s.law, pd->inertia()));
+  } else if (const auto* xy = dynamic_cast<const XyTable*>(plant.get())) {
+    XyAxis axes[2] = {xy->axis(0), xy->axis(1)};
+    const bool per_axis = py::isinstance<py::dict>(c) && !c.contains("type");
+    for (int i = 0; i < 2; ++i) {
+      const char* name = i == 0 ? "x" : "y";
+      if (per_axis && !c.contains(name)) continue;  // an axis left out keeps its compensation
+      const py::object spec = per_axis ? py::object(c[name]) : c;
+      axes[i].compensator = compensator_arg(spec, axes[i].law ? *axes[i].law : s.law, xy->inertia(i));
+    }
+    if (per_axis)
+      for (auto item : py::reinterpret_borrow<py::dict>(c)) {
+        const std::string k = py::cast<std::string>(py::str(item.first));
+        if (k != "x" && k != "y")
+          throw std::invalid_argument(std::string(kSetWhere) + ": unknown key '" + k +
+                                      "'; expected 'type' (both axes) or the axes 'x' and 'y'");
+      }
+    s.plant = std::make_shared<const XyTable>(axes[0], axes[1], xy->timing());
+  } else {
+    throw std::invalid_argument(std::string(kSetWhere) + ": plant '" + (plant ? plant->type() : std::string()) +
+                                "' has no controller to compensate in (give the scenario a controller)");
   }
 }
 
@@ -81,19 +165,14 @@ A simulation problem: plant, friction law, input and options, read from a scenar
                     [](Scenario& s, double v) { s.options.initial_position = v; }, "Initial position, m or rad.")
       .def_property("initial_velocity", [](const Scenario& s) { return s.options.initial_velocity; },
                     [](Scenario& s, double v) { s.options.initial_velocity = v; }, "Initial velocity, m/s or rad/s.")
-      .def_property_readonly("compensation", [](const Scenario& s) -> py::object {
-        // What the scenario's `compensation:` blocks built: the type, per axis on an xy-table.
-        auto type_of = [](const Compensator* c) -> py::object { return c ? py::object(py::str(c->type())) : py::none(); };
-        if (const auto* loop = dynamic_cast<const ClosedLoop*>(s.plant.get())) return type_of(loop->compensator());
-        if (const auto* xy = dynamic_cast<const XyTable*>(s.plant.get())) {
-          py::dict d;
-          d["x"] = type_of(xy->axis(0).compensator.get());
-          d["y"] = type_of(xy->axis(1).compensator.get());
-          return d;
-        }
-        return py::none();
-      }, "The friction compensation the scenario's `compensation:` block built: its type ('feedforward', 'feedback', "
-         "'lugre-observer', 'disturbance-observer') or None; for an xy-table a dict {'x': type or None, 'y': ...}.")
+      .def_property("compensation", &compensation_of, &set_compensation,
+                    "The friction compensation of the scenario's controller (pid or emps-pd): its type "
+                    "('feedforward', 'feedback', 'lugre-observer', 'disturbance-observer') or None; for an xy-table a "
+                    "dict {'x': type or None, 'y': ...}. Set it to None, a type name or a dict {'type': NAME, "
+                    "parameter: value} (band, dead_band, gain, bandwidth, inertia in SI units) to compensate with the "
+                    "scenario's own law (the exact model; an xy-table axis: its own law) and the plant's inertia as "
+                    "the disturbance observer's default; on an xy-table a dict {'x': ..., 'y': ...} sets the axes "
+                    "one by one. ValueError naming the parameter for a bad value or a law that does not fit.")
       .def_property_readonly("solver", [](const Scenario& s) { return std::string(solver_mode_name(s.options.mode)); },
                              "Requested solver mode ('auto', 'hybrid', 'stiff', 'fixed-step').")
       .def("__copy__", [](const Scenario& s) { return s; })

@@ -10,7 +10,7 @@
 #include "frictionlab/analysis/stick_slip.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/plants/axis.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
 #include "frictionlab/plants/spring_base.hpp"
 #include "frictionlab/simulate/batch.hpp"
 
@@ -227,8 +227,8 @@ MapTheory map_theory(const Scenario& scenario) {
   }
   if (const auto* cl = dynamic_cast<const ClosedLoop*>(scenario.plant.get())) {
     const auto* axis = dynamic_cast<const RigidAxis*>(&cl->inner());
-    const ControllerParams& c = cl->controller();
-    if (!axis || cl->compensator() || c.loop != ControlLoop::position || c.limit != 0) return th;
+    const PidParams& c = cl->controller();
+    if (!axis || cl->compensator() || c.loop != ControlLoop::position || c.limit != 0 || c.Ts != 0) return th;
     if (law.name != "coulomb" && !(law.name == "static-coulomb-viscous" && value("Fv", 0) == 0)) return th;
     th.kind = "pid-hunting";
     HuntingLoop h;

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <variant>
 
+#include "frictionlab/models/relaxation.hpp"
+
 namespace frictionlab {
 namespace {
 
@@ -67,11 +69,10 @@ bool LuGreObserver::jacobian(const CompensatorInput& in, std::span<const double>
 double LuGreObserver::update(const CompensatorInput& in, std::span<double> z, double dt) const {
   // dz^/dt = c - rate z^ with c = v - k e and rate = sigma0 |v| / g(v), both held over the step.
   const double v = in.velocity;
-  const double rate = law_.sigma0 * std::abs(v) / law_.level(v);  // 1/s
-  const double c = v - p_.gain * (in.position - in.reference);     // m/s or rad/s
+  const double rate = bristle_relaxation(law_, v).rate;         // 1/s
+  const double c = v - p_.gain * (in.position - in.reference);  // m/s or rad/s
   if (rate > 0) {
-    const double zss = c / rate;
-    z[0] = zss + (z[0] - zss) * std::exp(-rate * dt);
+    z[0] = relax(z[0], c / rate, std::exp(-rate * dt));
   } else {
     z[0] += c * dt;
   }

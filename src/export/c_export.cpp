@@ -3,14 +3,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
-#include <filesystem>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
-
-#include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/version.hpp"
 #include "../models/table_knots.hpp"
 
@@ -584,61 +580,6 @@ std::string upper(std::string s) {
 }
 
 }  // namespace
-
-const std::vector<std::string>& compensation_types() {
-  static const std::vector<std::string> types = {"feedforward", "feedback", "lugre-observer", "disturbance-observer"};
-  return types;
-}
-
-CompensationParams make_compensation(std::string_view type, const std::map<std::string, double>& values,
-                                     std::optional<double> model_inertia) {
-  CompensationParams c;
-  std::vector<std::pair<const char*, double*>> fields;  // the type's parameter names and slots
-  if (type == "feedforward") {
-    auto& p = c.emplace<FeedforwardParams>();
-    fields = {{"band", &p.band}};
-  } else if (type == "feedback") {
-    auto& p = c.emplace<FeedbackParams>();
-    fields = {{"dead_band", &p.dead_band}};
-  } else if (type == "lugre-observer") {
-    auto& p = c.emplace<LuGreObserverParams>();
-    fields = {{"gain", &p.gain}};
-  } else if (type == "disturbance-observer") {
-    auto& p = c.emplace<DisturbanceObserverParams>();
-    p.inertia = model_inertia.value_or(0.0);
-    fields = {{"bandwidth", &p.bandwidth}, {"inertia", &p.inertia}};
-  } else {
-    std::string valid;
-    for (const auto& t : compensation_types()) valid += (valid.empty() ? "" : ", ") + t;
-    throw std::invalid_argument("compensation '" + std::string(type) + "' is not known; valid types: " + valid);
-  }
-  for (const auto& entry : values) {
-    const auto& name = entry.first;  // not a structured binding: clang (the fuzz build) cannot capture one
-    const auto value = entry.second;
-    const auto it = std::find_if(fields.begin(), fields.end(), [&](const auto& f) { return name == f.first; });
-    if (it == fields.end()) {
-      std::string has;
-      for (const auto& f : fields) has += (has.empty() ? "" : ", ") + std::string(f.first);
-      throw std::invalid_argument("compensation " + std::string(type) + " has no parameter '" + name + "'; it has " + has);
-    }
-    *it->second = value;
-  }
-  return c;
-}
-
-ExportModel read_export_model(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".yaml" || ext == ".yml") return {load_law(path), std::nullopt};
-  const nlohmann::json j = read_model_json(path);
-  ExportModel m{law_from_json(j, path), std::nullopt};
-  m.inertia = model_inertia(j, path);
-  return m;
-}
-
-std::string compensation_type(const CompensationParams& c) {
-  if (c.index() == 0) return "";
-  return compensation_types()[c.index() - 1];
-}
 
 std::string c_header(const FrictionLaw& law, const CExportOptions& options) {
   check_prefix(options.prefix);

@@ -17,6 +17,7 @@
 #include "frictionlab/identify/static_fit.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 #include "frictionlab/models/lugre.hpp"
+#include "frictionlab/models/relaxation.hpp"
 #include "frictionlab/models/scalar.hpp"
 #include "frictionlab/signal/differentiate.hpp"
 #include "method_support.hpp"
@@ -74,18 +75,16 @@ LuGreT<T> trial_law(const T* dyn, const S* sta, const Record& r) {
 }
 
 // Bristle state at the middle and the end of one substep h at constant velocity v, from z: the
-// exact solution of dz/dt = v - rate z, rate = sigma0 |v| / g(v) (as LuGreT::step, which serves
-// doubles only). One g(v) and one exponential serve both: exp(-rate h) = exp(-rate h / 2)^2.
+// exact relaxation of models/relaxation.hpp (as LuGreT::step, which serves doubles only). One g(v)
+// and one exponential serve both: exp(-rate h) = exp(-rate h / 2)^2.
 template <class T>
-std::pair<T, T> relax(const LuGreT<T>& lg, const T& z, const T& v, double h) {
-  using std::abs;
+std::pair<T, T> relax_substep(const LuGreT<T>& lg, const T& z, const T& v, double h) {
   using std::exp;
   if (value_of(v) == 0.0) return {z, z};
-  const T g = lg.level(v);
-  const T rate = lg.sigma0 * abs(v) / g;
-  const T zss = sgn(v) * g / lg.sigma0;
-  const T e_half = exp(-rate * (0.5 * h));
-  return {zss + (z - zss) * e_half, zss + (z - zss) * (e_half * e_half)};
+  const BristleRelaxation<T> r = bristle_relaxation(lg, v);
+  const T e_half = exp(-r.rate * (0.5 * h));
+  const T e_full = e_half * e_half;
+  return {relax(z, r.target, e_half), relax(z, r.target, e_full)};
 }
 
 // Simulates M x'' = u - F_lugre over window w and writes (x_sim[k] - x[k]) / scale for
@@ -115,7 +114,7 @@ void simulate_residuals(const LuGreT<T>& lg, const Record& r, const Window& w, c
       const double um = u0 + du * ((j + 0.5) / r.substeps);
       const T vp = v + h * inv_m * (ua - lg.force(z, v));
       const T vm = 0.5 * (v + vp);
-      const auto [z_mid, z_end] = relax(lg, z, vm, h);
+      const auto [z_mid, z_end] = relax_substep(lg, z, vm, h);
       const T vn = v + h * inv_m * (um - lg.force(z_mid, vm));
       x += (0.5 * h) * (v + vn);
       v = vn;

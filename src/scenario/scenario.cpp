@@ -17,20 +17,20 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "frictionlab/export/c_export.hpp"
+#include "frictionlab/control/compensation_spec.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/scenario/law_file.hpp"
+#include "frictionlab/scenario/model_file.hpp"
 #include "frictionlab/io/load.hpp"
 #include "frictionlab/plants/axis.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
 #include "frictionlab/plants/dc_motor.hpp"
-#include "frictionlab/plants/emps_pd.hpp"
 #include "frictionlab/plants/pendulum.hpp"
 #include "frictionlab/plants/spring_base.hpp"
 #include "frictionlab/plants/velocity_drive.hpp"
-#include "frictionlab/plants/xy_table.hpp"
 #include "frictionlab/core/contour_input.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
 #include "frictionlab/simulate/simulate.hpp"
+#include "frictionlab/simulate/xy_table.hpp"
 #include "frictionlab/simulate/output_size.hpp"
 #include "yaml_keys.hpp"
 
@@ -271,7 +271,7 @@ std::shared_ptr<const Compensator> read_compensation(const Section& s, const Com
   if (s.has("model")) {
     std::filesystem::path path(s.text("model", ""));
     if (path.is_relative() && !ctx.base_dir.empty()) path = std::filesystem::path(ctx.base_dir) / path;
-    const ExportModel m = with_context(s.at("model"), [&] { return read_export_model(path.string()); });
+    const ModelFile m = with_context(s.at("model"), [&] { return read_model_file(path.string()); });
     law = m.law;
     law_key = "model";
     if (observer && m.inertia && !values.count("inertia")) inertia = m.inertia;
@@ -286,19 +286,10 @@ std::shared_ptr<const Compensator> read_compensation(const Section& s, const Com
     throw std::invalid_argument(s.at("scale") + ": " + detail::format_value(scale) + " must be > 0 (factor on the law's forces)");
   if (law && scale != 1.0) law = with_context(s.at("scale"), [&] { return scaled_law(*law, scale); });
   auto build = [&]() -> std::shared_ptr<const Compensator> {
-    return std::visit(
-        [&](const auto& p) -> std::shared_ptr<const Compensator> {
-          using P = std::decay_t<decltype(p)>;
-          if constexpr (std::is_same_v<P, FeedforwardParams>) return std::make_shared<const FeedforwardCompensation>(*law, p);
-          else if constexpr (std::is_same_v<P, FeedbackParams>) return std::make_shared<const FeedbackCompensation>(*law, p);
-          else if constexpr (std::is_same_v<P, LuGreObserverParams>) return std::make_shared<const LuGreObserver>(*law, p);
-          else if constexpr (std::is_same_v<P, DisturbanceObserverParams>) {
-            DisturbanceObserverParams q = p;
-            if (inertia && !values.count("inertia")) q.inertia = *inertia;
-            return std::make_shared<const DisturbanceObserver>(q);
-          } else return nullptr;
-        },
-        params);
+    CompensationParams q = params;
+    if (auto* dob = std::get_if<DisturbanceObserverParams>(&q); dob && inertia && !values.count("inertia"))
+      dob->inertia = *inertia;
+    return make_compensator(q, law ? &*law : nullptr);
   };
   try {
     return build();
@@ -367,7 +358,7 @@ PlantPtr read_velocity_drive(const Section& s, const PlantContext&) {
 
 // Position-loop gains and force limit of an xy-table axis (N per m, m/s, m/s^2; N): the plant's
 // `controller` gives both axes' values, an axis's `drive` overrides any of them.
-void read_xy_gains(const Section& s, ControllerParams& c) {
+void read_xy_gains(const Section& s, PidParams& c) {
   c.Kp = s.number("Kp", c.Kp);
   c.Ki = s.number("Ki", c.Ki);
   c.Kd = s.number("Kd", c.Kd);
@@ -379,7 +370,7 @@ void read_xy_gains(const Section& s, ControllerParams& c) {
 // `shared`: the plant's `compensation` block (null when none), which the axis's own replaces.
 // An identified model of the axis (ScenarioOptions::axis_models) replaces its law, mass and
 // offset; its inertia and lead go (the model's M is the equivalent mass).
-XyAxis read_xy_axis(const Section& s, const std::string& name, const ControllerParams& common, const PlantContext& ctx,
+XyAxis read_xy_axis(const Section& s, const std::string& name, const PidParams& common, const PlantContext& ctx,
                     const Section* shared) {
   s.allow({"mass", "inertia", "lead", "offset", "friction", "drive", "compensation"});
   XyAxis a;
@@ -434,7 +425,7 @@ PlantPtr read_xy_table(const Section& s, const PlantContext& ctx) {
   axes.allow({"x", "y"});
   for (const char* name : {"x", "y"})
     if (!axes.has(name)) throw std::invalid_argument(axes.path() + ": missing '" + name + "' (the " + name + " axis)");
-  ControllerParams common;
+  PidParams common;
   XyTiming timing;
   if (s.has("controller")) {
     const Section c(s.node("controller"), s.at("controller"));
@@ -716,9 +707,9 @@ EmpsPdParams read_emps_pd(const Section& s, DataSource& src) {
   return p;
 }
 
-ControllerParams read_controller(const Section& s) {
+PidParams read_controller(const Section& s) {
   s.allow({"type", "loop", "Kp", "Ki", "Kd", "limit", "compensation", "compensation_gain"});
-  ControllerParams c;
+  PidParams c;
   static constexpr std::pair<const char*, ControlLoop> kLoops[] = {{"position", ControlLoop::position}, {"velocity", ControlLoop::velocity}};
   c.loop = choose(s, "loop", "position", kLoops, "loop", "loops");
   c.Kp = s.number("Kp", c.Kp);
@@ -739,15 +730,15 @@ std::shared_ptr<const Compensator> loop_compensation(const Section& s, const Pla
 }
 
 PlantPtr close_pid(const Section& s, DataSource&, const PlantPtr& plant, const CompensationContext& cc) {
-  const ControllerParams c = read_controller(s);
+  const PidParams c = read_controller(s);
   const std::shared_ptr<const Compensator> comp = loop_compensation(s, plant, cc);
-  return with_context(s.path(), [&] { return std::make_shared<const ClosedLoop>(plant, c, comp); });
+  return with_context(s.path(), [&] { return close_loop(plant, c, comp); });
 }
 
 PlantPtr close_emps_pd(const Section& s, DataSource& src, const PlantPtr& plant, const CompensationContext& cc) {
   const EmpsPdParams p = read_emps_pd(s, src);
   const std::shared_ptr<const Compensator> comp = loop_compensation(s, plant, cc);
-  return with_context(s.path(), [&] { return std::make_shared<const EmpsPdLoop>(plant, p, comp); });
+  return with_context(s.path(), [&] { return close_loop(plant, p, comp); });
 }
 
 constexpr std::pair<const char*, PlantPtr (*)(const Section&, DataSource&, const PlantPtr&, const CompensationContext&)>

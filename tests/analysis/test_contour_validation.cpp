@@ -18,7 +18,7 @@
 #include "frictionlab/analysis/contour_validation.hpp"
 #include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/scenario/scenario.hpp"
-#include "frictionlab/plants/xy_table.hpp"
+#include "frictionlab/simulate/xy_table.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 using namespace frictionlab;

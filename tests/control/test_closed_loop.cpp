@@ -17,7 +17,7 @@
 #include "frictionlab/control/feedforward.hpp"
 #include "frictionlab/control/lugre_observer.hpp"
 #include "frictionlab/plants/axis.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
 #include "frictionlab/models/viscous.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 

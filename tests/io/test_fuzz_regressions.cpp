@@ -18,9 +18,9 @@
 #include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/io/load.hpp"
 #include "frictionlab/scenario/scenario.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
-#include "frictionlab/plants/emps_pd.hpp"
-#include "frictionlab/plants/xy_table.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
+#include "frictionlab/simulate/emps_pd_loop.hpp"
+#include "frictionlab/simulate/xy_table.hpp"
 
 namespace fl = frictionlab;
 namespace fs = std::filesystem;

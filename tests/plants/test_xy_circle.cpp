@@ -14,7 +14,7 @@
 #include "frictionlab/core/contour_input.hpp"
 #include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/models/viscous.hpp"
-#include "frictionlab/plants/xy_table.hpp"
+#include "frictionlab/simulate/xy_table.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 using namespace frictionlab;

@@ -20,7 +20,7 @@
 #include "frictionlab/control/lugre_observer.hpp"
 #include "frictionlab/core/contour_input.hpp"
 #include "frictionlab/models/friction_law.hpp"
-#include "frictionlab/plants/xy_table.hpp"
+#include "frictionlab/simulate/xy_table.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "simulate/stiff_system.hpp"
 #include "property_cases.hpp"

@@ -9,7 +9,7 @@
 
 #include "error_message.hpp"
 #include "frictionlab/scenario/scenario.hpp"
-#include "frictionlab/plants/xy_table.hpp"
+#include "frictionlab/simulate/xy_table.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "temp_dir.hpp"
 

@@ -1,4 +1,4 @@
-// The two-axis table (plants/xy_table.hpp): axis equations, each axis's loop against the 1-DOF
+// The two-axis table (simulate/xy_table.hpp): axis equations, each axis's loop against the 1-DOF
 // ClosedLoop, the sampled loop's arithmetic, a compensator wired in, and the checks of its parameters.
 #include <gtest/gtest.h>
 
@@ -17,8 +17,8 @@
 #include "frictionlab/models/stribeck.hpp"
 #include "frictionlab/models/viscous.hpp"
 #include "frictionlab/plants/axis.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
-#include "frictionlab/plants/xy_table.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
+#include "frictionlab/simulate/xy_table.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 using namespace frictionlab;

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "frictionlab/plants/closed_loop.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
 
 namespace frictionlab::testing {
 

@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "frictionlab/plants/axis.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
 #include "frictionlab/plants/dc_motor.hpp"
 #include "frictionlab/plants/pendulum.hpp"
 #include "frictionlab/plants/spring_base.hpp"

@@ -9,7 +9,7 @@
 #include "frictionlab/analysis/envelope.hpp"
 #include "frictionlab/analysis/stick_slip.hpp"
 #include "frictionlab/scenario/scenario.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 using namespace frictionlab;

@@ -13,7 +13,7 @@
 #include "frictionlab/models/lugre.hpp"
 #include "frictionlab/models/viscous.hpp"
 #include "frictionlab/plants/axis.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 using namespace frictionlab;

@@ -1,4 +1,4 @@
-// The EMPS discrete PD loop (plants/emps_pd.hpp) in the engine, and the `data` input of
+// The EMPS discrete PD loop (simulate/emps_pd_loop.hpp) in the engine, and the `data` input of
 // scenario files.
 
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 
 #include "frictionlab/io/mat.hpp"
 #include "frictionlab/scenario/scenario.hpp"
-#include "frictionlab/plants/emps_pd.hpp"
+#include "frictionlab/simulate/emps_pd_loop.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "temp_dir.hpp"
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "frictionlab/scenario/scenario.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
 #include "frictionlab/plants/dc_motor.hpp"
 
 using namespace frictionlab;

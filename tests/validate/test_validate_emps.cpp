@@ -13,7 +13,7 @@
 #include "frictionlab/identify/idim_record.hpp"
 #include "frictionlab/io/mat.hpp"
 #include "frictionlab/scenario/scenario.hpp"
-#include "frictionlab/plants/emps_pd.hpp"
+#include "frictionlab/simulate/emps_pd_loop.hpp"
 
 namespace fl = frictionlab;
 

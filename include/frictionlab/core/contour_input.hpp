@@ -1,6 +1,6 @@
 #pragma once
 // Two-axis contours as input signals: the x and y position references of a two-axis machine
-// (plants/xy_table.hpp), for the circular (ballbar) test or any sampled 2-D path.
+// (simulate/xy_table.hpp), for the circular (ballbar) test or any sampled 2-D path.
 //
 // A circle of radius R (m) about (cx, cy) (m), run at the feed rate F (m/s, the tangential speed)
 // counter-clockwise or clockwise from the start angle theta0 (rad, from +x towards +y):

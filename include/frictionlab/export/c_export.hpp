@@ -24,26 +24,13 @@
 // dt in s. Sign convention: friction has the sign of the velocity and is subtracted
 // (M a = drive - F); a compensation's output estimates F and is ADDED to the drive's command.
 
-#include <map>
-#include <optional>
 #include <string>
-#include <string_view>
-#include <variant>
-#include <vector>
 
-#include "frictionlab/control/disturbance_observer.hpp"
-#include "frictionlab/control/feedback.hpp"
-#include "frictionlab/control/feedforward.hpp"
-#include "frictionlab/control/lugre_observer.hpp"
+#include "frictionlab/control/compensation_spec.hpp"
 #include "frictionlab/models/friction_law.hpp"
 
 #include "frictionlab/export.hpp"
 namespace FRICTIONLAB_API frictionlab {
-
-/// The compensation to export beside the law, with its parameters (their units in control/*.hpp);
-/// std::monostate: the law alone.
-using CompensationParams =
-    std::variant<std::monostate, FeedforwardParams, FeedbackParams, LuGreObserverParams, DisturbanceObserverParams>;
 
 /// Options of c_header.
 struct CExportOptions {
@@ -53,41 +40,11 @@ struct CExportOptions {
   /// Single precision: `float` states, constants and math (expf, ...) for FPUs without double;
   /// the results then agree with the library's to float's precision only. Default false (double).
   bool single_precision = false;
-  /// The compensation, if any. Default none.
+  /// The compensation, if any (control/compensation_spec.hpp: make_compensation). Default none.
   CompensationParams compensation;
   /// Where the law came from (a MODEL.json path), quoted in the header's first comment. Optional.
   std::string source;
 };
-
-/// The compensation types c_header knows, as a scenario and the CLI name them:
-/// "feedforward", "feedback", "lugre-observer", "disturbance-observer".
-const std::vector<std::string>& compensation_types();
-
-/// The compensation named `type` (one of compensation_types()) with the parameters in `values`,
-/// named as the fields of its options struct (SI units): feedforward: band (m/s or rad/s);
-/// feedback: dead_band (m/s or rad/s); lugre-observer: gain (1/s); disturbance-observer:
-/// bandwidth (rad/s), inertia (kg or kg m^2). A parameter left out keeps its default; the
-/// disturbance observer's inertia has none: `model_inertia` (the model's identified M, kg or
-/// kg m^2) when given, else 0, which c_header refuses. Values are checked by c_header.
-/// \throws std::invalid_argument "compensation 'TYPE' is not known; valid types: ..." and
-///         "compensation feedforward has no parameter 'gain'; it has band".
-CompensationParams make_compensation(std::string_view type, const std::map<std::string, double>& values = {},
-                                     std::optional<double> model_inertia = std::nullopt);
-
-/// A model file as the export reads it: its law and, when the file has one (the MODEL.json of
-/// `identify idim` or `decay`), the identified inertia M (kg or kg m^2), the disturbance
-/// observer's default.
-struct ExportModel {
-  FrictionLaw law;
-  std::optional<double> inertia;
-};
-
-/// Reads MODEL.json (read_model_json, law_from_json: the strict model reader) or a law file
-/// (.yaml/.yml through load_law). \throws std::invalid_argument naming the file.
-ExportModel read_export_model(const std::string& path);
-
-/// The type name of `c` ("" for std::monostate).
-std::string compensation_type(const CompensationParams& c);
 
 /// The C99 header text (see the top of this file) for `law` and options.compensation.
 /// Every static and dynamic law of the library is supported (GMS with its N elements).

@@ -14,7 +14,8 @@
 
 #include "frictionlab/identify/result.hpp"
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Settings of the residual checks.
 struct AdequacyOptions {

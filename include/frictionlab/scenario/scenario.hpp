@@ -27,14 +27,14 @@
 // so that a sampled controller with the same dt reads sample k exactly at its instant k.
 // Without `duration`, a data input sets it to the data's span (N - 1) dt.
 //
-// emps-pd (plants/emps_pd.hpp): kp (1/s), kv (V/(m/s)), gtau (N/V) each a number or the name of
+// emps-pd (simulate/emps_pd_loop.hpp): kp (1/s), kv (V/(m/s)), gtau (N/V) each a number or the name of
 // a scalar of the data file; limit (V, 10); dt (s; default the data input's step); delay (0|1,
 // default 1); pulses: COLUMN, or {column, scale (1), optional (false)}: volts added to the
 // saturated output, read from the data file on the same grid (optional: none when absent).
 // initial.position may name a column of the data file: its first sample (m).
 // Relative file names are resolved from the scenario file's directory.
 //
-// xy-table (plants/xy_table.hpp), two axes with their own laws and drives:
+// xy-table (simulate/xy_table.hpp), two axes with their own laws and drives:
 //   plant:
 //     type: xy-table
 //     axes:

@@ -5,7 +5,8 @@
 #include <span>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// Work space of sosfiltfilt_columns and decimate_columns: the padded, interleaved copy of up to
 /// four columns that the forward and backward passes run over ((N + 2 padlen) x 4 doubles for

@@ -7,7 +7,7 @@
 
 #include "frictionlab/format.hpp"
 #include "frictionlab/plants/axis.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
 #include "frictionlab/plants/dc_motor.hpp"
 
 namespace frictionlab {

@@ -1,5 +1,5 @@
-// Two-axis table: see include/frictionlab/plants/xy_table.hpp.
-#include "frictionlab/plants/xy_table.hpp"
+// Two-axis table: see include/frictionlab/simulate/xy_table.hpp.
+#include "frictionlab/simulate/xy_table.hpp"
 
 #include <algorithm>
 #include <array>
@@ -23,6 +23,15 @@ void require(bool ok, int i, const char* name, double value, const char* rule) {
   detail::require(ok, who(i), name, value, rule);
 }
 
+void check_timing(const XyTiming& timing) {
+  PidParams t;
+  t.Ts = timing.Ts;
+  t.delay = timing.delay;
+  t.validate_timing("xy-table");
+}
+
+// The axis's checks beyond its PID's (Pid checks the gains): its body, and a gain set that fits
+// the table (a position loop on a force-driven carriage, the timing the table's).
 void check_axis(const XyAxis& a, int i) {
   require(std::isfinite(a.mass) && a.mass >= 0, i, "mass", a.mass, ">= 0 (kg)");
   require(std::isfinite(a.inertia) && a.inertia >= 0, i, "inertia", a.inertia, ">= 0 (kg m^2)");
@@ -31,17 +40,23 @@ void check_axis(const XyAxis& a, int i) {
   require(a.inertia == 0 || a.lead > 0, i, "lead", a.lead, "> 0 (m/rev) when an inertia is given");
   const double M = a.equivalent_mass();
   require(std::isfinite(M) && M > 0, i, "equivalent mass", M, "> 0 (kg): give mass, or inertia and lead");
-  const ControllerParams& c = a.gains;
+  const PidParams& c = a.gains;
   if (c.loop != ControlLoop::position)
     throw std::invalid_argument(who(i) + ": the axis runs a position loop; a velocity loop is not supported");
-  require(std::isfinite(c.Kp) && c.Kp >= 0, i, "Kp", c.Kp, ">= 0 (N/m)");
-  require(std::isfinite(c.Ki) && c.Ki >= 0, i, "Ki", c.Ki, ">= 0 (N/(m s))");
-  require(std::isfinite(c.Kd) && c.Kd >= 0, i, "Kd", c.Kd, ">= 0 (N/(m/s))");
-  require(std::isfinite(c.Kvff) && c.Kvff >= 0, i, "Kvff", c.Kvff, ">= 0 (N/(m/s))");
-  require(std::isfinite(c.Kaff) && c.Kaff >= 0, i, "Kaff", c.Kaff, ">= 0 (N/(m/s^2))");
-  require(std::isfinite(c.limit) && c.limit >= 0, i, "limit", c.limit, ">= 0 (N; 0 = no saturation)");
   require(c.compensation_gain == 1.0, i, "compensation_gain", c.compensation_gain,
           "1 (the drive takes a force: the compensator's N go straight to the command)");
+  require(c.Ts == 0.0, i, "Ts", c.Ts, "0 (the table's timing, XyTiming, sets the axes' sample period)");
+  require(c.delay == 0, i, "delay", c.delay, "0 (the table's timing, XyTiming, sets the axes' delay)");
+}
+
+// Axis i's PID, after the table's and the axis's checks, with the table's timing.
+Pid axis_pid(const XyAxis& a, int i, const XyTiming& timing) {
+  if (i == 0) check_timing(timing);
+  check_axis(a, i);
+  PidParams p = a.gains;
+  p.Ts = timing.Ts;
+  p.delay = timing.delay;
+  return Pid(p, who(i), PidUnits::force_on_linear_axis());
 }
 
 }  // namespace
@@ -52,15 +67,11 @@ double XyAxis::equivalent_mass() const {
   return mass + inertia * ratio * ratio;
 }
 
-XyTable::XyTable(XyAxis x, XyAxis y, XyTiming timing) : axes_{std::move(x), std::move(y)}, timing_(timing) {
-  if (!(std::isfinite(timing_.Ts) && timing_.Ts >= 0))
-    detail::require(false, "xy-table", "Ts", timing_.Ts, ">= 0 (s; 0 = continuous controller)");
-  if (timing_.delay != 0 && timing_.delay != 1)
-    detail::require(false, "xy-table", "delay", timing_.delay, "0 or 1 (samples)");
-  if (timing_.delay == 1 && timing_.Ts == 0)
-    throw std::invalid_argument("xy-table: delay = 1 needs a sampled controller (Ts > 0 s)");
+XyTable::XyTable(XyAxis x, XyAxis y, XyTiming timing)
+    : axes_{std::move(x), std::move(y)},
+      pids_{axis_pid(axes_[0], 0, timing), axis_pid(axes_[1], 1, timing)},
+      timing_(timing) {
   for (int i = 0; i < 2; ++i) {
-    check_axis(axes_[i], i);
     mass_[i] = axes_[i].equivalent_mass();
     const int nc = axes_[i].compensator ? axes_[i].compensator->num_states() : 0;
     own_[i] = static_cast<int>(comp_offset()) + nc;
@@ -94,18 +105,8 @@ CompensatorInput XyTable::measured(int i, double t, std::span<const double> x, c
   return in;
 }
 
-// ClosedLoop's position law (derivative on the measurement), compensation before the saturation.
-double XyTable::unsaturated(int i, std::span<const double> x, const InputValue& r, double compensation) const {
-  const ControllerParams& c = axes_[i].gains;
-  const double pos = x[static_cast<std::size_t>(2 * i)], vel = x[static_cast<std::size_t>(2 * i + 1)];
-  const double integral = x[block(i) + kIntegral];
-  return c.Kp * (r.value - pos) + c.Ki * integral - c.Kd * vel + c.Kvff * r.rate + c.Kaff * r.accel + compensation;
-}
-
-double XyTable::pid(int i, std::span<const double> x, const InputValue& r, double compensation) const {
-  const double out = unsaturated(i, x, r, compensation);
-  const double limit = axes_[i].gains.limit;
-  return limit > 0 ? std::clamp(out, -limit, limit) : out;
+PidInput XyTable::pid_input(int i, std::span<const double> x, const InputValue& r) const {
+  return {x[static_cast<std::size_t>(2 * i)], x[static_cast<std::size_t>(2 * i + 1)], r.value, r.rate, r.accel};
 }
 
 double XyTable::command(int i, double t, std::span<const double> x, const InputValue& r) const {
@@ -113,7 +114,7 @@ double XyTable::command(int i, double t, std::span<const double> x, const InputV
   if (sampled()) return x[block(i) + kApplied];
   const Compensator* comp = axes_[i].compensator.get();
   const double c = comp ? comp->output(measured(i, t, x, r), x.subspan(block(i) + comp_offset(), comp->num_states())) : 0.0;
-  return pid(i, x, r, c);
+  return pids_[i].output(pid_input(i, x, r), integral(i, x), c);
 }
 
 void XyTable::initial_extras(std::span<double> x) const {
@@ -147,15 +148,15 @@ void XyTable::derivatives(double t, std::span<const double> x, Inputs u, std::sp
       dx[b + kIntegral] = dx[b + kApplied] = dx[b + kComputed] = 0.0;  // discrete: change only at samples
       for (std::size_t j = 0; j < nz; ++j) dx[b + comp_offset() + j] = 0.0;
     } else if (!comp) {
-      drive = pid(i, x, r, 0.0);
-      dx[b + kIntegral] = r.value - x[p];
+      drive = pids_[i].output(pid_input(i, x, r), integral(i, x), 0.0);
+      dx[b + kIntegral] = pids_[i].error(pid_input(i, x, r));
     } else {
       CompensatorInput in = measured(i, t, x, r);
       const auto z = x.subspan(b + comp_offset(), nz);
-      drive = pid(i, x, r, comp->output(in, z));
+      drive = pids_[i].output(pid_input(i, x, r), integral(i, x), comp->output(in, z));
       in.drive = drive;  // the force applied, the compensation in it
       comp->derivatives(in, z, dx.subspan(b + comp_offset(), nz));
-      dx[b + kIntegral] = r.value - x[p];
+      dx[b + kIntegral] = pids_[i].error(pid_input(i, x, r));
     }
     dx[p] = x[p + 1];
     dx[p + 1] = (drive + axes_[i].offset - friction[static_cast<std::size_t>(i)]) / mass_[i];
@@ -207,12 +208,12 @@ bool XyTable::jacobian(double t, std::span<const double> x, Inputs u, std::span<
       continue;
     }
     // Continuous: drive = sat(raw), raw = Kp (r - p) + Ki I - Kd v + feedforward + c(p, v, z).
-    const ControllerParams& g = axes_[i].gains;
+    const PidParams& g = pids_[i].params();
     const Compensator* comp = axes_[i].compensator.get();
     const std::size_t nz = comp ? static_cast<std::size_t>(comp->num_states()) : 0, w = 3 + nz, zc = b + comp_offset();
-    const double raw = unsaturated(i, x, u[static_cast<std::size_t>(i)], comp_out[i]);
+    const double raw = pids_[i].unsaturated(pid_input(i, x, u[static_cast<std::size_t>(i)]), integral(i, x), comp_out[i]);
     // Slope of the saturation: 1 inside (clamp is the identity at |raw| = limit too), 0 beyond.
-    const double s = g.limit > 0 && std::abs(raw) > g.limit ? 0.0 : 1.0;
+    const double s = pids_[i].saturation_slope(raw);
     // d drive / d(p, v, I, z_j): the compensator's output enters raw (it never reads the drive).
     const double dp = s * (-g.Kp + (comp ? dout[i][0] : 0.0));
     const double dv = s * (-g.Kd + (comp ? dout[i][1] : 0.0));
@@ -248,18 +249,15 @@ void XyTable::sample(double t, std::span<double> x, Inputs u) const {
   // The engine samples at t = j Ts from t = 0: the first sample closes no step.
   const double h = t < 0.5 * timing_.Ts ? 0.0 : timing_.Ts;
   for (int i = 0; i < 2; ++i) {
-    const std::size_t p = static_cast<std::size_t>(2 * i), b = block(i);
+    const std::size_t b = block(i);
     const InputValue& r = u[static_cast<std::size_t>(i)];
-    x[b + kIntegral] += timing_.Ts * (r.value - x[p]);
     double c = 0.0;
     if (const Compensator* comp = axes_[i].compensator.get()) {
       CompensatorInput in = measured(i, t, x, r);
       in.drive = x[b + kApplied];  // the force held over the step just ended
       c = comp->update(in, x.subspan(b + comp_offset(), static_cast<std::size_t>(comp->num_states())), h);
     }
-    const double v = pid(i, x, r, c);
-    x[b + kApplied] = timing_.delay == 1 ? x[b + kComputed] : v;
-    x[b + kComputed] = v;
+    pids_[i].sample(pid_input(i, x, r), x.subspan(b, 3), c);
   }
 }
 

@@ -4,22 +4,23 @@
 // plant of a circular (ballbar) test: as one axis reverses, static friction holds it for a moment
 // while the other moves on, and the contour shows a glitch at each of the four quadrant crossings.
 //
-// Axis k (k = x, y), force-driven (the drive's force on the carriage, N):
+// Axis k (k = x, y), force-driven (the drive's force on the carriage, N), its PID the one of
+// control/pid.hpp:
 //   M_k a_k = u_k + offset_k - F_k(v_k)          (M_k: equivalent mass, F_k: its own law, offset_k a constant force)
 //   u_k = sat_k(Kp e + Ki int(e) - Kd v + Kvff dr/dt + Kaff d2r/dt2 + c_k),  e = r_k - x_k
 // with c_k an optional friction compensator's force (control/compensator.hpp), added before the
 // saturation |u_k| <= limit_k. Continuous (Ts = 0): exactly ClosedLoop's position loop per axis.
 // Sampled (Ts > 0): u_k is computed at t = j Ts from the sampled position, velocity and reference,
 // the integral accumulates Ts e(j) (rectangle rule, e(j) included), and u_k is held until the next
-// sample (delay 0) or applied one sample later (delay 1), as the EMPS loop (plants/emps_pd.hpp).
+// sample (delay 0) or applied one sample later (delay 1), as the EMPS loop (simulate/emps_pd_loop.hpp).
 
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "frictionlab/control/compensator.hpp"
+#include "frictionlab/control/pid.hpp"
 #include "frictionlab/models/friction_law.hpp"
-#include "frictionlab/plants/closed_loop.hpp"
 #include "frictionlab/plants/plant.hpp"
 
 #include "frictionlab/export.hpp"
@@ -38,8 +39,9 @@ struct XyAxis {
   std::optional<FrictionLaw> law;
   /// Position-loop gains in N: Kp (N/m), Ki (N/(m s)), Kd (N/(m/s)), Kvff (N/(m/s)), Kaff
   /// (N/(m/s^2)) and the drive's force limit `limit` (N, 0 = none): the saturation. `loop` must be
-  /// position and compensation_gain 1 (the drive takes a force). Defaults: all 0.
-  ControllerParams gains;
+  /// position and compensation_gain 1 (the drive takes a force); Ts and delay stay 0 (the timing
+  /// is XyTiming's, shared by both axes). Defaults: all 0.
+  PidParams gains;
   /// Constant force on the carriage (N), added to the drive's: a cable chain's pull, gravity on
   /// an inclined axis, or an identified model's offset. Default 0.
   double offset = 0.0;
@@ -78,8 +80,8 @@ class XyTable : public Plant {
   /// \throws std::invalid_argument naming the axis, the parameter, its value and unit when a mass,
   ///         inertia, lead or gain is negative or not finite, an offset is not finite, the equivalent mass is not > 0, an
   ///         inertia is given without a lead, a gain set is not a position loop with
-  ///         compensation_gain 1, Ts is negative or not finite, or delay is not 0 or 1 (1 only
-  ///         when sampled).
+  ///         compensation_gain 1 or has a Ts or delay of its own, Ts is negative or not finite, or
+  ///         delay is not 0 or 1 (1 only when sampled).
   XyTable(XyAxis x, XyAxis y, XyTiming timing = {});
 
   std::string type() const override { return "xy-table"; }
@@ -124,11 +126,11 @@ class XyTable : public Plant {
   std::size_t block(int i) const { return static_cast<std::size_t>(i == 0 ? 4 : 4 + own_[0]); }
   std::size_t comp_offset() const { return sampled() ? 3 : 1; }
   CompensatorInput measured(int i, double t, std::span<const double> x, const InputValue& r) const;
-  double pid(int i, std::span<const double> x, const InputValue& r, double compensation) const;
-  // The PID terms' value before the saturation (N), compensation included.
-  double unsaturated(int i, std::span<const double> x, const InputValue& r, double compensation) const;
+  PidInput pid_input(int i, std::span<const double> x, const InputValue& r) const;
+  double integral(int i, std::span<const double> x) const { return x[block(i)]; }
 
   XyAxis axes_[2];
+  Pid pids_[2];
   XyTiming timing_;
   double mass_[2];
   int own_[2];

@@ -1,40 +1,23 @@
-#include "frictionlab/plants/closed_loop.hpp"
+// A plant closed by a controller: see include/frictionlab/simulate/closed_loop.hpp.
+#include "frictionlab/simulate/closed_loop.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <stdexcept>
+#include <type_traits>
 
-#include "frictionlab/models/parameter.hpp"
+#include "frictionlab/simulate/emps_pd_loop.hpp"
 
 namespace frictionlab {
-namespace {
 
-void require(bool ok, const char* name, double value, const char* rule) {
-  detail::require(ok, "controller", name, value, rule);
-}
-
-}  // namespace
-
-ClosedLoop::ClosedLoop(std::shared_ptr<const Plant> inner, ControllerParams c,
-                       std::shared_ptr<const Compensator> compensator)
-    : inner_(std::move(inner)), c_(c), compensator_(std::move(compensator)) {
+ClosedLoop::ClosedLoop(std::shared_ptr<const Plant> inner, PidParams c, std::shared_ptr<const Compensator> compensator)
+    : inner_(std::move(inner)), pid_(c, "controller"), compensator_(std::move(compensator)) {
   require_loop_plant(inner_.get(), "controller");
-  require(std::isfinite(c.Kp) && c.Kp >= 0, "Kp", c.Kp, ">= 0");
-  require(std::isfinite(c.Ki) && c.Ki >= 0, "Ki", c.Ki, ">= 0");
-  require(std::isfinite(c.Kd) && c.Kd >= 0, "Kd", c.Kd, ">= 0");
-  if (c.loop == ControlLoop::velocity)
-    require(c.Kd == 0.0, "Kd", c.Kd, "0 in a velocity loop (it would need the acceleration)");
-  require(std::isfinite(c.limit) && c.limit >= 0, "limit", c.limit, ">= 0 (0 = no saturation)");
-  require(std::isfinite(c.Kvff) && c.Kvff >= 0, "Kvff", c.Kvff, ">= 0 (output unit per m/s or rad/s)");
-  require(std::isfinite(c.Kaff) && c.Kaff >= 0, "Kaff", c.Kaff, ">= 0 (output unit per m/s^2 or rad/s^2)");
-  require(std::isfinite(c.compensation_gain) && c.compensation_gain > 0, "compensation_gain", c.compensation_gain,
-          "> 0 (plant input unit per N or N m of compensation)");
   n_inner_ = inner_->num_states();
+  n_pid_ = pid_.num_states();
   n_comp_ = compensator_ ? compensator_->num_states() : 0;
 }
 
 std::span<const double> ClosedLoop::own_states(std::span<const double> x) const {
-  return x.subspan(static_cast<std::size_t>(n_inner_ + 1), static_cast<std::size_t>(n_comp_));
+  return x.subspan(static_cast<std::size_t>(n_inner_ + n_pid_), static_cast<std::size_t>(n_comp_));
 }
 
 CompensatorInput ClosedLoop::measured(double t, std::span<const double> x, const InputValue& r) const {
@@ -42,7 +25,7 @@ CompensatorInput ClosedLoop::measured(double t, std::span<const double> x, const
   in.t = t;
   in.position = x[0];
   in.velocity = x[1];
-  if (c_.loop == ControlLoop::position) {
+  if (pid_.params().loop == ControlLoop::position) {
     in.reference = r.value;
     in.reference_rate = r.rate;
     in.reference_accel = r.accel;
@@ -52,6 +35,10 @@ CompensatorInput ClosedLoop::measured(double t, std::span<const double> x, const
     in.reference_accel = r.rate;
   }
   return in;
+}
+
+PidInput ClosedLoop::pid_input(std::span<const double> x, const InputValue& r) const {
+  return {x[0], x[1], r.value, r.rate, r.accel};
 }
 
 void ClosedLoop::initial_extras(std::span<double> x) const {
@@ -65,21 +52,22 @@ void ClosedLoop::initial_extras(std::span<double> x, Inputs u) const {
   // from a zero input.
   const InputValue no_output{};
   inner_->initial_extras(x.first(n), Inputs(&no_output, 1));
-  x[n] = 0.0;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(n_pid_); ++i) x[n + i] = 0.0;
   if (compensator_)
-    compensator_->initial_states(measured(0.0, x, u[0]), x.subspan(n + 1, static_cast<std::size_t>(n_comp_)));
+    compensator_->initial_states(measured(0.0, x, u[0]),
+                                 x.subspan(n + static_cast<std::size_t>(n_pid_), static_cast<std::size_t>(n_comp_)));
 }
 
 void ClosedLoop::fixed_step_update(double t, double dt, std::span<const double> before, Inputs u_before,
                                    std::span<double> x, Inputs u) const {
-  if (!compensator_) return;
+  if (!compensator_ || pid_.sampled()) return;
   const std::size_t n = static_cast<std::size_t>(n_inner_);
   const double t0 = t - dt;
   // The force the drive held over the step: the inner plant's drive at the output of the step's start.
   const InputValue held{control(t0, before, u_before[0])};
   CompensatorInput in = measured(t, x, u[0]);
   in.drive = signals_of(*inner_, t0, before.first(n), held).drive;
-  const auto z = x.subspan(n + 1, static_cast<std::size_t>(n_comp_));
+  const auto z = x.subspan(n + static_cast<std::size_t>(n_pid_), static_cast<std::size_t>(n_comp_));
   const auto z0 = own_states(before);
   std::copy(z0.begin(), z0.end(), z.begin());  // from the step's start, not the engine's Euler value
   compensator_->update(in, z, dt);
@@ -90,19 +78,11 @@ double ClosedLoop::compensation(double t, std::span<const double> x, const Input
 }
 
 double ClosedLoop::control(std::span<const double> x, const InputValue& r, double compensation) const {
-  const double integral = x[static_cast<std::size_t>(n_inner_)];
-  double out;
-  if (c_.loop == ControlLoop::position) {
-    out = c_.Kp * (r.value - x[0]) + c_.Ki * integral - c_.Kd * x[1] + c_.Kvff * r.rate + c_.Kaff * r.accel;
-  } else {
-    out = c_.Kp * (r.value - x[1]) + c_.Ki * integral + c_.Kvff * r.value + c_.Kaff * r.rate;
-  }
-  out += c_.compensation_gain * compensation;  // before the saturation: the limit holds with it
-  if (c_.limit > 0) out = std::clamp(out, -c_.limit, c_.limit);
-  return out;
+  return pid_.output(pid_input(x, r), x[static_cast<std::size_t>(n_inner_)], compensation);
 }
 
 double ClosedLoop::control(double t, std::span<const double> x, const InputValue& r) const {
+  if (pid_.sampled()) return Pid::held(x.subspan(static_cast<std::size_t>(n_inner_), 3));
   return control(x, r, compensation(t, x, r));
 }
 
@@ -115,6 +95,12 @@ void ClosedLoop::derivatives(double t, std::span<const double> x, const InputVal
                              std::span<double> dx) const {
   const std::size_t n = static_cast<std::size_t>(n_inner_);
   const auto inner_x = x.first(n);
+  if (pid_.sampled()) {
+    const InputValue u{control(t, x, r)};
+    derivatives_of(*inner_, t, inner_x, u, friction, dx.first(n));
+    for (std::size_t i = n; i < x.size(); ++i) dx[i] = 0.0;  // discrete: change only at samples
+    return;
+  }
   if (!compensator_) {
     const InputValue u{control(x, r, 0.0)};
     derivatives_of(*inner_, t, inner_x, u, friction, dx.first(n));
@@ -126,7 +112,7 @@ void ClosedLoop::derivatives(double t, std::span<const double> x, const InputVal
     in.drive = signals_of(*inner_, t, inner_x, u).drive;  // the force applied, the compensation in it
     compensator_->derivatives(in, z, dx.subspan(n + 1, static_cast<std::size_t>(n_comp_)));
   }
-  dx[n] = c_.loop == ControlLoop::position ? r.value - x[0] : r.value - x[1];
+  dx[n] = pid_.error(pid_input(x, r));
 }
 
 PlantSignals ClosedLoop::signals(double t, std::span<const double> x, const InputValue& r) const {
@@ -136,15 +122,43 @@ PlantSignals ClosedLoop::signals(double t, std::span<const double> x, const Inpu
   return s;
 }
 
+void ClosedLoop::sample(double t, std::span<double> x, const InputValue& r) const {
+  if (!pid_.sampled()) return;
+  const std::size_t n = static_cast<std::size_t>(n_inner_);
+  const auto s = x.subspan(n, static_cast<std::size_t>(n_pid_));
+  double c = 0.0;
+  if (compensator_) {
+    // The engine samples at t = j Ts from t = 0: the first sample closes no step.
+    const double h = t < 0.5 * pid_.params().Ts ? 0.0 : pid_.params().Ts;
+    CompensatorInput in = measured(t, x, r);
+    in.drive = signals_of(*inner_, t, x.first(n), InputValue{Pid::held(s)}).drive;  // held over the step just ended
+    c = compensator_->update(in, x.subspan(n + static_cast<std::size_t>(n_pid_), static_cast<std::size_t>(n_comp_)), h);
+  }
+  pid_.sample(pid_input(x, r), s, c);
+}
+
 void ClosedLoop::events(double t, std::span<const double> x, Inputs u, std::span<double> g) const {
-  if (compensator_) compensator_->events(measured(t, x, u[0]), own_states(x), g);
+  if (compensator_ && !pid_.sampled()) compensator_->events(measured(t, x, u[0]), own_states(x), g);
 }
 
 void ClosedLoop::on_event(double t, std::span<double> x, Inputs u, int k) const {
-  if (compensator_)
-    compensator_->on_event(measured(t, x, u[0]), x.subspan(static_cast<std::size_t>(n_inner_ + 1),
+  if (compensator_ && !pid_.sampled())
+    compensator_->on_event(measured(t, x, u[0]), x.subspan(static_cast<std::size_t>(n_inner_ + n_pid_),
                                                            static_cast<std::size_t>(n_comp_)),
                            k);
+}
+
+std::shared_ptr<const Plant> close_loop(std::shared_ptr<const Plant> plant, const Controller& controller,
+                                        std::shared_ptr<const Compensator> compensator) {
+  return std::visit(
+      [&](const auto& c) -> std::shared_ptr<const Plant> {
+        using C = std::decay_t<decltype(c)>;
+        if constexpr (std::is_same_v<C, PidParams>)
+          return std::make_shared<const ClosedLoop>(std::move(plant), c, std::move(compensator));
+        else
+          return std::make_shared<const EmpsPdLoop>(std::move(plant), c, std::move(compensator));
+      },
+      controller);
 }
 
 }  // namespace frictionlab
