@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "frictionlab/io/json_text.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/io/atomic_write.hpp"
 #include "frictionlab/report/figure.hpp"
@@ -44,11 +45,10 @@ const std::vector<std::string> kTailColumns = {"relative_error_percent", "rmse",
 Part table_part(const std::string& kind, RowTable table) {
   Part p;
   p.command = "identify";
-  p.envelope = nlohmann::ordered_json{{"schema", 1},
-                                      {"kind", kind},
-                                      {"columns", nlohmann::ordered_json::array()},
-                                      {"rows", nlohmann::ordered_json::array()}}
-                   .dump();
+  p.envelope = json_text(nlohmann::ordered_json{{"schema", 1},
+                                                {"kind", kind},
+                                                {"columns", nlohmann::ordered_json::array()},
+                                                {"rows", nlohmann::ordered_json::array()}});
   p.rows_at = "/rows";
   p.columns_at = "/columns";
   p.total = table.rows.size();
@@ -300,7 +300,7 @@ std::string batch_key(const std::vector<BatchJob>& jobs, const BatchOptions& o) 
                                      {"options", row_options(o.command, kBatchGroup)},
                                      {"date_from", o.date_from},
                                      {"files", files}};
-  return sha256_hex(id.dump());
+  return sha256_hex(json_text(id));
 }
 
 std::vector<DriftRow> table_drift(const RowTable& table, double threshold) {

@@ -16,7 +16,9 @@
 #include "figures.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/identify/method.hpp"
+#include "frictionlab/error.hpp"
 #include "frictionlab/io/atomic_write.hpp"
+#include "frictionlab/io/json_text.hpp"
 #include "frictionlab/report/figure.hpp"
 #include "frictionlab/report/report.hpp"
 #include "frictionlab/version.hpp"
@@ -257,22 +259,34 @@ void print_error(const std::string& message, bool internal) {
   std::cerr << "frictionlab: " << (internal ? "internal error: " : "error: ") << one_line(message) << std::endl;
 }
 
-int fail(const std::string& message, int status, bool internal) {
+int fail(const std::string& message, int status, bool internal, const std::string& code, const ErrorFields& fields) {
   try {
-    print_error(message, internal);
+    print_error(valid_utf8(message), internal);
     const JsonOutput* out = chosen_output();
     if (!out || !out->json || out->json->count() == 0 || out->json->results().empty()) return status;
     const std::string path = out->json->results().back();
     if (path.empty()) return status;
+    const std::string text = one_line(message);
+    nlohmann::json error = {{"code", code.empty() ? (status == 2 ? errc::input_invalid : errc::internal) : code},
+                            {"message", text}};
+    for (const auto& [name, value] : fields.items()) {
+      if (name == "row") error[name] = *fields.row;
+      else error[name] = value;
+    }
     const nlohmann::json j = {{"schema", 1},
                               {"status", "error"},
-                              {"message", one_line(message)},
-                              {"method", out->method ? out->method() : std::string()}};
-    if (path == "-") std::cout << j.dump() << std::endl;
+                              {"message", text},
+                              {"method", out->method ? out->method() : std::string()},
+                              {"error", error}};
+    if (path == "-") std::cout << json_text(j) << std::endl;
   } catch (...) {
     // Reporting an error must not raise another one; the line on stderr is out already.
   }
   return status;
+}
+
+int fail(const std::exception& e, int status, bool internal) {
+  return fail(e.what(), status, internal, error_code(e), error_fields(e));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "frictionlab/error.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/report/report.hpp"
 
@@ -37,9 +38,16 @@ void register_json_output(CLI::App* cmd, CLI::Option* json, std::function<std::s
 /// result whose data gave no answer): one line "frictionlab: error: MESSAGE" (or "internal
 /// error" when `internal`) on stderr; and when the subcommand that ran was given `--json -`, the
 /// JSON {"schema": 1, "status": "error", "message": MESSAGE, "method": ...} as one line on stdout.
-/// A --json FILE is not written: a run that failed leaves no file behind. Never throws. Returns
-/// `status`.
-int fail(const std::string& message, int status, bool internal = false);
+/// The JSON also has "error": {"code": CODE, "message": MESSAGE, and the fields that apply: file,
+/// row, column, key, option, value, other_file, other_option} (codes: frictionlab/error.hpp; an
+/// empty `code` is input.invalid for status 2, internal otherwise). Bytes that are not UTF-8 are
+/// escaped as \xNN. A --json FILE is not written: a run that failed leaves no file behind. Never
+/// throws. Returns `status`.
+int fail(const std::string& message, int status, bool internal = false, const std::string& code = "",
+         const ErrorFields& fields = {});
+
+/// fail() with the message, code and fields of `e` (error_code and error_fields of error.hpp).
+int fail(const std::exception& e, int status, bool internal = false);
 
 /// The error line alone: "frictionlab: error: MESSAGE" on stderr (the progress line cleared).
 void print_error(const std::string& message, bool internal = false);
