@@ -210,7 +210,7 @@ Handler register_analyze(CLI::App& app) {
     if (!a->map.vary.empty() || !a->map.shard.empty() || !a->map.out.empty() || !a->map.contact.empty())
       throw std::invalid_argument("--vary, --shard, --contact and -o belong to analyze map; analyze " + a->method +
                                   " writes --json and --plot");
-    check_outputs(a->output);
+    check_outputs(a->output, command_inputs(a->output.command));
     const Dataset d = load_data(a->data, a->read, a->time);
     // The analysis goes out as identify's results do (emit): its figures as JSON under "result",
     // the data file, its digest and the data notes (resampling, warnings) in the usual places.

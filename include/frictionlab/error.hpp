@@ -92,14 +92,14 @@ inline constexpr const char* output_write_failed = "output.write_failed";
 
 /// Where an error lies. Empty strings and an empty row mean "does not apply".
 struct ErrorFields {
-  std::string file;                 ///< the file the fault is in (output.*: the output path)
-  std::optional<std::size_t> row;   ///< 1-based line of a CSV file (or sample number)
-  std::string column;               ///< column or variable name
-  std::string key;                  ///< dotted scenario / MODEL.json key, e.g. "plant.M"
-  std::string option;               ///< command-line option or Python keyword, e.g. "--json"
-  std::string value;                ///< the offending value, as text
-  std::string other_file;           ///< output.is_input / output.duplicate: the other file
-  std::string other_option;         ///< ... and its option or role ("scenario", "data:", "--json")
+  std::string file{};                 ///< the file the fault is in (output.*: the output path)
+  std::optional<std::size_t> row{};   ///< 1-based line of a CSV file (or sample number)
+  std::string column{};               ///< column or variable name
+  std::string key{};                  ///< dotted scenario / MODEL.json key, e.g. "plant.M"
+  std::string option{};               ///< command-line option or Python keyword, e.g. "--json"
+  std::string value{};                ///< the offending value, as text
+  std::string other_file{};           ///< output.is_input / output.duplicate: the other file
+  std::string other_option{};         ///< ... and its option or role ("scenario", "data:", "--json")
 
   /// The fields that apply, as (name, text) pairs in the order above (row as a decimal number).
   std::vector<std::pair<std::string, std::string>> items() const;

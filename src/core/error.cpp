@@ -97,7 +97,7 @@ namespace {
 template <class Json>
 void make_valid(Json& j) {
   if (j.is_string()) {
-    auto& s = j.get_ref<std::string&>();
+    auto& s = j.template get_ref<std::string&>();
     std::string fixed = valid_utf8(s);
     if (fixed != s) s = std::move(fixed);
   } else if (j.is_array()) {

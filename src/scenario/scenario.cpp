@@ -185,7 +185,11 @@ std::string names_of(const Entry (&table)[N]) {
 // (each read once), resolved from the scenario's directory.
 class DataSource {
  public:
-  DataSource(const ScenarioOptions& o, std::string default_file) : o_(o), default_file_(std::move(default_file)) {}
+  DataSource(const ScenarioOptions& o, std::string default_file) : o_(o), default_file_(std::move(default_file)) {
+    // The top-level data file is an input of the run even when no section reads it (or the
+    // caller's data set replaces it).
+    if (o_.files_read && !default_file_.empty()) o_.files_read->push_back(resolve(default_file_));
+  }
 
   // The data set of a section: options.data, else the section's `file`, else the top-level one.
   // Null when there is none (the caller decides whether that is an error).
@@ -193,10 +197,12 @@ class DataSource {
     if (o_.data) return o_.data;
     const std::string name = file.empty() ? default_file_ : file;
     if (name.empty()) return nullptr;
-    std::filesystem::path path(name);
-    if (path.is_relative() && !o_.base_dir.empty()) path = std::filesystem::path(o_.base_dir) / path;
+    const std::filesystem::path path(resolve(name));
     auto& slot = cache_[path.string()];
-    if (!slot) slot = std::make_shared<const Dataset>(load_dataset(path.string()));
+    if (!slot) {
+      if (o_.files_read) o_.files_read->push_back(path.string());
+      slot = std::make_shared<const Dataset>(load_dataset(path.string()));
+    }
     return slot;
   }
 
@@ -214,6 +220,12 @@ class DataSource {
       throw std::invalid_argument(s.at(key) + ": '" + name +
                                   "' is not a number, and the scenario names no data file to read a scalar from (top-level 'data')");
     return with_context(s.at(key), [&] { return resolve_constant(*d, name, key); });
+  }
+
+  std::string resolve(const std::string& name) const {
+    std::filesystem::path path(name);
+    if (path.is_relative() && !o_.base_dir.empty()) path = std::filesystem::path(o_.base_dir) / path;
+    return path.string();
   }
 
   std::optional<double> data_step;  // s: step of the data input's grid, when there is one
@@ -244,6 +256,7 @@ struct PlantContext {
 // the inertia of the body (kg or kg m^2, the disturbance observer's default).
 struct CompensationContext {
   std::string base_dir;
+  std::vector<std::string>* files_read = nullptr;  // ScenarioOptions::files_read
   std::function<FrictionLaw()> law;
   double inertia = 0.0;
 };
@@ -305,6 +318,7 @@ std::shared_ptr<const Compensator> read_compensation(const Section& s, const Com
   if (s.has("model")) {
     std::filesystem::path path(s.text("model", ""));
     if (path.is_relative() && !ctx.base_dir.empty()) path = std::filesystem::path(ctx.base_dir) / path;
+    if (ctx.files_read) ctx.files_read->push_back(path.string());
     const ExportModel m = with_context(s.at("model"), [&] { return read_export_model(path.string()); });
     law = m.law;
     law_key = "model";
@@ -454,6 +468,7 @@ XyAxis read_xy_axis(const Section& s, const std::string& name, const ControllerP
   if (own || shared) {
     CompensationContext cc;
     cc.base_dir = ctx.base_dir;
+    cc.files_read = ctx.options ? ctx.options->files_read : nullptr;
     cc.law = a.law ? std::function<FrictionLaw()>([law = *a.law] { return law; }) : ctx.fallback;
     cc.inertia = with_context(s.path(), [&] { return a.equivalent_mass(); });
     a.compensator = own ? read_compensation(Section(own, s.at("compensation")), cc) : read_compensation(*shared, cc);
@@ -883,6 +898,7 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
     const Section cs = section("controller");
     CompensationContext cc;
     cc.base_dir = options.base_dir;
+    cc.files_read = options.files_read;
     cc.law = [&] { return sc.law; };
     sc.plant = choose(cs, "type", "pid", kControllerReaders, "controller type", "")(cs, src, sc.plant, cc);
   }
