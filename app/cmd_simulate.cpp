@@ -85,12 +85,13 @@ Handler register_simulate(CLI::App& app) {
   return [args]() -> int {
     // Every output path is checked before the (possibly long) simulation; the figure, which
     // runs gnuplot and may fail, is written before the CSV.
-    // The files the scenario names (data, compensation models) are inputs too: known once it
-    // is read, so the outputs are checked again then.
+    // What the output paths are is checked first (a bad path is named before a bad scenario);
+    // the files the scenario names (data, compensation models) are inputs too, known once it is
+    // read: then every rule, before the simulation.
     const std::vector<RunFile> outputs{{"-o", args->output, RunFile::Kind::file},
                                        {"--plot", args->plot, RunFile::Kind::figure}};
     std::vector<RunFile> inputs{{"scenario", args->scenario, RunFile::Kind::file}};
-    check_run_files(inputs, outputs, args->overwrite);
+    check_run_files(inputs, outputs, true);
     progress_start("frictionlab simulate");
     std::vector<std::string> named;
     ScenarioOptions options;

@@ -562,10 +562,7 @@ std::vector<RunFile> command_inputs(const CLI::App* cmd, const std::vector<std::
         if (v.empty() || v == "-") continue;
         std::error_code ec;
         const fs::file_status st = fs::status(v, ec);
-        if (fs::is_directory(st) && opt->get_positional()) {
-          for (const auto& entry : fs::directory_iterator(v, ec))
-            if (entry.is_regular_file(ec)) out.push_back({role, entry.path().string(), RunFile::Kind::file});
-        } else if (fs::is_regular_file(st)) {
+        if (fs::is_regular_file(st)) {
           out.push_back({role, v, RunFile::Kind::file});
         }
       }

@@ -98,7 +98,7 @@ void check_run_files(const std::vector<RunFile>& inputs, const std::vector<RunFi
 std::vector<RunFile> scenario_inputs(const std::string& scenario);
 
 /// The inputs a parsed subcommand names: its positional arguments and every option value that
-/// is an existing file (a folder: its regular files), except the options in `outputs` (their
+/// is an existing file (a folder's files are the batch's own inputs), except the options in `outputs` (their
 /// long names, "--json"). A method's own input files (--validate, --static) are found this way.
 std::vector<RunFile> command_inputs(const CLI::App* cmd, const std::vector<std::string>& outputs = {"--json", "--plot", "--report", "--table", "--drift", "-o", "--output", "--c", "--mjcf"});
 

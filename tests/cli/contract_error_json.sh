@@ -31,8 +31,8 @@ PY
 sweep=(identify sweep "$tmp/sweep.csv" --kt 0.039)
 
 # Data: a missing column (with its option), a text cell (its line and column), a missing file.
-error_json data.column_missing "e['file'] == '$tmp/sweep.csv' and e['column'] == 'speed' and e['option'] == '--velocity'" \
-  "${sweep[@]}" --velocity speed --json -
+error_json data.column_missing "e['file'] == '$tmp/sweep.csv' and e['column'] == 'clock' and e['option'] == '--time'" \
+  "${sweep[@]}" --time clock --json -
 printf 'time,velocity,current\n0,1,0.1\n0.1,1,0.1\n0.2,1,0.1\n0.3,1,0.1\n0.4,abc,0.1\n' > "$tmp/text.csv"
 error_json data.not_a_number "e['row'] == 6 and e['value'] == 'abc' and e['file'] == '$tmp/text.csv' and e['column'] == 'velocity'" \
   identify sweep "$tmp/text.csv" --kt 0.039 --json -
@@ -47,7 +47,7 @@ error_json scenario.key_unknown "e['file'] == '$tmp/s.yaml' and e['key'] == 'pla
 
 # Outputs: an existing file without --overwrite.
 touch "$tmp/exists.json"
-error_json output.exists "e['file'] == '$tmp/exists.json' and e['option'] == '--json'" \
+error_json output.exists "e['file'] == '$tmp/exists.json' and e['option'] == '-o'" \
   analyze map "$src/examples/craig_pendulum_coulomb.yaml" --vary friction.Fs=0.2:0.3:2 -o "$tmp/exists.json" --json -
 
 # Bad input without a code of its own yet: input.invalid.
@@ -66,5 +66,5 @@ assert j["status"] == "ok", j
 assert j["data"]["file"].endswith("sweep\\xE9.csv"), j["data"]["file"]
 PY
 error_json data.column_missing "'temp\\\\xE9rature' in e['message'] and e['file'].endswith('sweep\\\\xE9.csv')" \
-  identify sweep "$tmp/$name" --kt 0.039 --velocity speed --json -
+  identify sweep "$tmp/$name" --kt 0.039 --time clock --json -
 echo "ok"
