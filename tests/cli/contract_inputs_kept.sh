@@ -57,7 +57,7 @@ kept "$pendulum" output.is_input simulate "$pendulum" -o "$tmp/../$(basename "$t
 kept "$tmp/sweep.csv" output.is_input identify sweep "$tmp/sweep.csv" --kt 0.039 --json "$tmp/sweep.csv" --overwrite
 cp "$emps" "$tmp/P.mat"
 kept "$tmp/P.mat" output.is_input identify idim "$emps" "${cols[@]}" --validate "$tmp/P.mat" --json "$tmp/P.mat" --overwrite
-kept "$tmp/static.json" output.is_input identify lugre "$tmp/sweep.csv" --kt 0.039 --static "$tmp/static.json" \
+kept "$tmp/static.json" output.is_input identify lugre "$tmp/sweep.csv" --kt 0.039 --inertia 1e-5 --static "$tmp/static.json" \
   --json "$tmp/static.json" --overwrite
 
 # identify on a folder: --table and --drift at one of its logs (--drift used to replace it while
