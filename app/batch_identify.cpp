@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "frictionlab/io/json_text.hpp"
 #include "frictionlab/format.hpp"
 #include "io/atomic_write.hpp"
 #include "report/figure.hpp"
@@ -44,11 +45,10 @@ const std::vector<std::string> kTailColumns = {"relative_error_percent", "rmse",
 Part table_part(const std::string& kind, RowTable table) {
   Part p;
   p.command = "identify";
-  p.envelope = nlohmann::ordered_json{{"schema", 1},
-                                      {"kind", kind},
-                                      {"columns", nlohmann::ordered_json::array()},
-                                      {"rows", nlohmann::ordered_json::array()}}
-                   .dump();
+  p.envelope = json_text(nlohmann::ordered_json{{"schema", 1},
+                                                {"kind", kind},
+                                                {"columns", nlohmann::ordered_json::array()},
+                                                {"rows", nlohmann::ordered_json::array()}});
   p.rows_at = "/rows";
   p.columns_at = "/columns";
   p.total = table.rows.size();
@@ -300,7 +300,7 @@ std::string batch_key(const std::vector<BatchJob>& jobs, const BatchOptions& o) 
                                      {"options", row_options(o.command, kBatchGroup)},
                                      {"date_from", o.date_from},
                                      {"files", files}};
-  return sha256_hex(id.dump());
+  return sha256_hex(json_text(id));
 }
 
 std::vector<DriftRow> table_drift(const RowTable& table, double threshold) {
@@ -350,7 +350,8 @@ void write_drift(const std::vector<DriftRow>& drift, const std::string& drift_fi
 int run_identify_batch(const std::vector<std::string>& data, const BatchOptions& o, const std::string& json,
                        const std::string& report, const std::string& plot, bool overwrite,
                        const std::function<Result(const std::string& file)>& identify,
-                       const std::function<double(const std::string&, const std::string&)>& date_of_column) {
+                       const std::function<double(const std::string&, const std::string&)>& date_of_column,
+                       const std::vector<RunFile>& inputs) {
   const std::vector<BatchJob> all = batch_jobs(data);  // first: a folder without data names itself
   if (!json.empty())
     throw std::invalid_argument("--json writes one file's result; with several files or a folder use --table OUT.json");
@@ -374,18 +375,13 @@ int run_identify_batch(const std::vector<std::string>& data, const BatchOptions&
   if (!dated && !o.drift.empty()) throw std::invalid_argument("--drift needs --date-from (the logs' dates)");
   if (!dated && !plot.empty())
     throw std::invalid_argument("--plot with several files draws the drift figure: it needs --date-from");
-  if (o.table != "-" && !o.table.empty()) check_output_file(o.table, overwrite, "--table");
-  if (!o.drift.empty()) check_output_file(o.drift, overwrite, "--drift");
-  std::vector<std::pair<std::string, std::string>> outputs = {{"--table", o.table}, {"--drift", o.drift}};
-  if (!plot.empty()) {
-    check_plot(plot, overwrite);
-    find_gnuplot();
-    const FigureFiles ff = figure_files(plot);
-    outputs.insert(outputs.end(), {{"--plot", ff.figure}, {"--plot data", ff.data}, {"--plot script", ff.script}});
-  }
-  outputs.erase(std::remove_if(outputs.begin(), outputs.end(), [](const auto& p) { return p.second.empty() || p.second == "-"; }),
-                outputs.end());
-  check_distinct_outputs(outputs);
+  std::vector<RunFile> run_inputs = inputs;
+  for (const BatchJob& job : all) run_inputs.push_back({"DATA", job.file, RunFile::Kind::file});
+  check_run_files(run_inputs,
+                  {{"--table", o.table, RunFile::Kind::file},
+                   {"--drift", o.drift, RunFile::Kind::file},
+                   {"--plot", plot, RunFile::Kind::figure}},
+                  overwrite);
 
   std::vector<BatchJob> jobs;
   for (std::size_t i : shard_jobs(all.size(), shard)) jobs.push_back(all[i]);

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "output.hpp"
 #include "frictionlab/analysis/drift.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "fleet/shard.hpp"
@@ -106,11 +107,14 @@ void write_drift(const std::vector<DriftRow>& drift, const std::string& drift_fi
 /// and prints "N files: K ok, F failed" on stderr, one line per failure. With --shard K/N: the
 /// shard's jobs only, written as a part file (fleet/shard.hpp, command "identify", key batch_key) to
 /// --table PART.json; --drift and --plot are refused (the drift needs every file).
+/// `inputs`: the run's other input files (the method's own, e.g. --static); every job's file is
+/// an input too (check_run_files of output.hpp).
 /// \returns 0 when at least one file gave a result (or the shard has no files), 2 when every
 /// file failed (the table or part is still written).
 int run_identify_batch(const std::vector<std::string>& data, const BatchOptions& o, const std::string& json,
                        const std::string& report, const std::string& plot, bool overwrite,
                        const std::function<Result(const std::string& file)>& identify,
-                       const std::function<double(const std::string& file, const std::string& column)>& date_of_column);
+                       const std::function<double(const std::string& file, const std::string& column)>& date_of_column,
+                       const std::vector<RunFile>& inputs = {});
 
 }  // namespace frictionlab::cli

@@ -15,6 +15,7 @@
 #include "data_options.hpp"
 #include "figures.hpp"
 #include "map_command.hpp"
+#include "frictionlab/io/json_text.hpp"
 #include "report/figure.hpp"
 #include "output.hpp"
 #include "frictionlab/analysis/contour.hpp"
@@ -155,7 +156,7 @@ void contour_diagnostics(Result& r, const ContourResult& c) {
   nlohmann::json d = nlohmann::json::parse(to_json(r, -1))["diagnostics"];
   d["quadrant_glitch_m"] = nlohmann::json::array();
   for (const auto& g : c.glitches) d["quadrant_glitch_m"].push_back(num(g.peak_m));
-  r.json_sections["diagnostics"] = d.dump();
+  r.json_sections["diagnostics"] = json_text(d);
 }
 
 }  // namespace
@@ -209,7 +210,7 @@ Handler register_analyze(CLI::App& app) {
     if (!a->map.vary.empty() || !a->map.shard.empty() || !a->map.out.empty() || !a->map.contact.empty())
       throw std::invalid_argument("--vary, --shard, --contact and -o belong to analyze map; analyze " + a->method +
                                   " writes --json and --plot");
-    check_outputs(a->output);
+    check_outputs(a->output, command_inputs(a->output.command));
     const Dataset d = load_data(a->data, a->read, a->time);
     // The analysis goes out as identify's results do (emit): its figures as JSON under "result",
     // the data file, its digest and the data notes (resampling, warnings) in the usual places.
@@ -228,7 +229,7 @@ Handler register_analyze(CLI::App& app) {
       } catch (const std::invalid_argument& ex) {
         throw std::invalid_argument(d.where() + ex.what());
       }
-      r.json_sections["result"] = envelope_json(e).dump();
+      r.json_sections["result"] = json_text(envelope_json(e));
       if (!a->output.plot.empty()) figures.push_back({"fit", "", envelope_figure(t, x, e, name)});
       text = envelope_text(e);
     } else if (a->method == "contour") {
@@ -270,7 +271,7 @@ Handler register_analyze(CLI::App& app) {
         r.message = d.where() + ss.message;
         return emit(r, a->output);
       }
-      r.json_sections["result"] = stick_slip_json(ss).dump();
+      r.json_sections["result"] = json_text(stick_slip_json(ss));
       if (!a->output.plot.empty()) figures.push_back({"fit", "", stick_slip_figure(t, v, f, ss, name)});
       text = stick_slip_text(ss, !f.empty());
     }

@@ -88,9 +88,11 @@ Handler register_export(CLI::App& app) {
   cmd->add_flag("--overwrite", a->overwrite, "replace an existing header file");
   return [a]() -> int {
     if (a->output != "-" && same_file(a->model, a->output))
-      throw std::invalid_argument("--c " + a->output + " is the model file " + a->model +
-                                  "; the header never replaces its input: give it its own file");
-    check_output_file(a->output, a->overwrite, "--c");
+      throw InputError(errc::output_is_input,
+                       "--c " + a->output + " is the model file " + a->model +
+                           "; the header never replaces its input: give it its own file",
+                       {.file = a->output, .option = "--c", .other_file = a->model, .other_option = "MODEL"});
+    check_run_files({{"MODEL", a->model, RunFile::Kind::file}}, {{"--c", a->output, RunFile::Kind::file}}, a->overwrite);
     const ModelFile m = read_model_file(a->model);
     CExportOptions o;
     o.prefix = a->prefix;

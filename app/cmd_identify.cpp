@@ -42,7 +42,7 @@ Handler register_identify(CLI::App& app) {
       MethodIO& io = *c.io;
       if (!is_batch(io.inputs, io.batch)) {
         io.data = io.inputs.front();
-        check_outputs(io.output);
+        check_outputs(io.output, command_inputs(c.cmd));
         return emit(c.run(io, *c.cmd), io.output);
       }
       // Each file on its own copy of the options (the runs may be on several threads).
@@ -59,7 +59,7 @@ Handler register_identify(CLI::App& app) {
                                     "'; the file has: " + d.describe_contents());
       };
       return run_identify_batch(io.inputs, io.batch, io.output.json, io.output.report, io.output.plot,
-                                io.output.overwrite, identify_file, date_of_column);
+                                io.output.overwrite, identify_file, date_of_column, command_inputs(c.cmd));
     }
     return 2;
   };

@@ -57,15 +57,14 @@ Handler register_merge(CLI::App& app) {
     const std::string ext = std::filesystem::path(a->out).extension().string();
     if (ext != ".csv" && ext != ".json")
       throw std::invalid_argument("-o " + a->out + ": expected a .csv or .json file");
-    check_output_file(a->out, a->overwrite, "-o");
-    check_output_file(a->drift, a->overwrite, "--drift");
-    check_plot(a->plot, a->overwrite);
-    std::vector<std::pair<std::string, std::string>> outputs = {{"-o", a->out}, {"--drift", a->drift}};
-    if (!a->plot.empty()) {
-      const FigureFiles ff = figure_files(a->plot);
-      outputs.insert(outputs.end(), {{"--plot", ff.figure}, {"--plot data", ff.data}, {"--plot script", ff.script}});
-    }
-    check_distinct_outputs(outputs);
+    std::vector<RunFile> inputs;
+    for (const auto& part : a->parts) inputs.push_back({"PART", part, RunFile::Kind::file});
+    if (!a->scenario.empty()) inputs.push_back({"--scenario", a->scenario, RunFile::Kind::file});
+    check_run_files(inputs,
+                    {{"-o", a->out, RunFile::Kind::file},
+                     {"--drift", a->drift, RunFile::Kind::file},
+                     {"--plot", a->plot, RunFile::Kind::figure}},
+                    a->overwrite);
 
     std::vector<Part> parts;
     for (const auto& p : a->parts) parts.push_back(read_part(p));

@@ -67,10 +67,10 @@ std::string text_of(const PlanResult& r) {
 }
 
 int run(const PlanArgs& a) {
-  check_output_file(a.profile, a.overwrite, "-o");
-  check_output_file(a.json, a.overwrite, "--json");
-  check_distinct_outputs({{"-o", a.profile}, {"--json", a.json}});
   if (a.profile == "-") throw std::invalid_argument("-o -: the profile is written to a file (PROFILE.csv), not stdout");
+  std::vector<RunFile> inputs{{"--prior", a.prior, RunFile::Kind::file}, {"--scenario", a.scenario, RunFile::Kind::file}};
+  for (RunFile& f : scenario_inputs(a.scenario)) inputs.push_back(std::move(f));
+  check_run_files(inputs, {{"-o", a.profile, RunFile::Kind::file}, {"--json", a.json, RunFile::Kind::file}}, a.overwrite);
   const PlanMethod method = parse_plan_method(a.method);
   PlanOptions o;
   o.noise = parse_sensor_noise(a.noise, "--noise");

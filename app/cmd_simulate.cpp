@@ -85,15 +85,20 @@ Handler register_simulate(CLI::App& app) {
   return [args]() -> int {
     // Every output path is checked before the (possibly long) simulation; the figure, which
     // runs gnuplot and may fail, is written before the CSV.
-    check_output_file(args->output, args->overwrite, "-o");
-    check_plot(args->plot, args->overwrite);
-    if (!args->plot.empty()) {
-      const FigureFiles files = figure_files(args->plot);
-      check_distinct_outputs(
-          {{"-o", args->output}, {"--plot", files.figure}, {"--plot data", files.data}, {"--plot script", files.script}});
-    }
+    // What the output paths are is checked first (a bad path is named before a bad scenario);
+    // the files the scenario names (data, compensation models) are inputs too, known once it is
+    // read: then every rule, before the simulation.
+    const std::vector<RunFile> outputs{{"-o", args->output, RunFile::Kind::file},
+                                       {"--plot", args->plot, RunFile::Kind::figure}};
+    std::vector<RunFile> inputs{{"scenario", args->scenario, RunFile::Kind::file}};
+    check_run_files(inputs, outputs, true);
     progress_start("frictionlab simulate");
-    const Scenario sc = load_scenario(args->scenario);
+    std::vector<std::string> named;
+    ScenarioOptions options;
+    options.files_read = &named;
+    const Scenario sc = load_scenario(args->scenario, options);
+    for (const auto& f : named) inputs.push_back({"named by the scenario", f, RunFile::Kind::file});
+    check_run_files(inputs, outputs, args->overwrite);
     progress_stage("simulating");
     const Trajectory tr = simulate(sc);
     if (!args->plot.empty()) {

@@ -192,8 +192,10 @@ int run_two_axis(const ValidateArgs& a, const std::map<std::string, IdentifiedMo
 }
 
 int run(const ValidateArgs& a) {
-  check_outputs(a.output);
   const auto named = axis_models(a.model);
+  std::vector<RunFile> inputs = command_inputs(a.output.command);
+  for (const auto& [axis, file] : named) inputs.push_back({"MODEL " + axis, file, RunFile::Kind::file});
+  check_outputs(a.output, inputs);
   ScenarioOptions so;
   std::map<std::string, IdentifiedModel> models;
   ModelFile mf;
@@ -212,7 +214,13 @@ int run(const ValidateArgs& a) {
   auto data = std::make_shared<const Dataset>(load_data(a.data, a.columns));
   so.data = data;
   so.model_source = named.size() == 1 ? named.front().second : a.model;
+  std::vector<std::string> scenario_files;
+  so.files_read = &scenario_files;
   const Scenario sc = load_scenario(a.scenario, so);
+  for (const auto& f : scenario_files) inputs.push_back({"named by the scenario", f, RunFile::Kind::file});
+  check_run_files(inputs, {{"--json", a.output.json}, {"--plot", a.output.plot, RunFile::Kind::figure},
+                           {"--report", a.output.report, RunFile::Kind::report}},
+                  a.output.overwrite);
   if (sc.plant->num_contacts() > 1) return run_two_axis(a, models, sc, data, mf.data_file, mf.data_sha256);
   ValidationData v;
   v.time = time_column(*data, a.columns);

@@ -1,5 +1,6 @@
 #include "data_options.hpp"
 
+#include "frictionlab/error.hpp"
 #include "frictionlab/format.hpp"
 
 #include <charconv>
@@ -28,9 +29,11 @@ double parse_step(const std::string& text) {
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, v);
   if (ec != std::errc() || ptr != end || !std::isfinite(v) || v <= 0) {
-    throw std::invalid_argument("--resample '" + text +
-                                "': expected the grid step in seconds (> 0, e.g. 0.001), or no value for the median "
-                                "step (put --resample after DATA, or write --resample=DT)");
+    throw InputError(errc::option_out_of_range,
+                     "--resample '" + text +
+                         "': expected the grid step in seconds (> 0, e.g. 0.001), or no value for the median "
+                         "step (put --resample after DATA, or write --resample=DT)",
+                     {.option = "--resample", .value = text});
   }
   return v;
 }
@@ -96,8 +99,10 @@ Dataset load_data(const std::string& path, const ReadOptions& o, const std::stri
   const double dt = o.resample_given() ? parse_step(o.resample) : 0.0;  // a bad DT is named before the file is read
   Dataset d = load_dataset(path, csv);
   if (!o.names.empty() && d.lines.empty()) {
-    throw std::invalid_argument(d.where() + "--names names the columns of a CSV file; a MAT file's variables have their "
-                                "own names: " + d.describe_contents());
+    throw InputError(errc::option_conflict,
+                     d.where() + "--names names the columns of a CSV file; a MAT file's variables have their "
+                                 "own names: " + d.describe_contents(),
+                     {.file = d.file, .option = "--names"});
   }
   if (o.resample_given()) {
     select_column(d, time_column, "--time");  // a missing time column is named with its option
@@ -152,7 +157,12 @@ std::string data_note(const Dataset& d) {
 void require_finite(const Dataset& d, const Eigen::VectorXd& x, const std::string& column) {
   for (Eigen::Index k = 0; k < x.size(); ++k)
     if (!std::isfinite(x[k]))
-      throw std::invalid_argument(d.where() + d.row_label(k) + ", column '" + column + "': value is not a finite number");
+      throw InputError(errc::data_not_finite,
+                       d.where() + d.row_label(k) + ", column '" + column + "': value is not a finite number",
+                       {.file = d.file,
+                        .row = !d.resampling && static_cast<std::size_t>(k) < d.lines.size() ? d.lines[static_cast<std::size_t>(k)]
+                                                                                             : static_cast<std::size_t>(k + 1),
+                        .column = column});
 }
 
 Eigen::VectorXd time_column(const Dataset& d, const DataOptions& o) {
@@ -160,12 +170,17 @@ Eigen::VectorXd time_column(const Dataset& d, const DataOptions& o) {
   try {
     check_time(d, t);
   } catch (const SamplingError& e) {
+    const ErrorFields fields{.file = d.file, .column = o.time, .option = "--time"};
     if (e.problem() == SamplingProblem::irregular)
-      throw std::invalid_argument(std::string(e.what()) +
-                                  "; --resample [DT] interpolates every column onto a uniform grid (default DT: the median step)");
+      throw InputError(errc::data_time,
+                       std::string(e.what()) +
+                           "; --resample [DT] interpolates every column onto a uniform grid (default DT: the median step)",
+                       fields);
     if (e.problem() == SamplingProblem::repeated)
-      throw std::invalid_argument(std::string(e.what()) + "; --resample merges repeated time stamps (and puts the record on a uniform grid)");
-    throw;
+      throw InputError(errc::data_time,
+                       std::string(e.what()) + "; --resample merges repeated time stamps (and puts the record on a uniform grid)",
+                       fields);
+    throw InputError(errc::data_time, e.what(), fields);
   }
   return t;
 }
@@ -183,19 +198,25 @@ Eigen::VectorXd force_column(const Dataset& d, const DataOptions& o) {
   if (force_given || (!input_given && !current_given && d.has_column(o.force))) return checked(d, o.force, "--force");
   if (input_given || (!current_given && d.has_column(o.input))) {
     if (o.gain.empty())
-      throw std::invalid_argument(d.where() + "--gain is needed to turn the drive input '" + o.input +
-                                  "' into force (a number, N per unit of input, or a scalar variable of the file)");
+      throw InputError(errc::option_invalid,
+                       d.where() + "--gain is needed to turn the drive input '" + o.input +
+                           "' into force (a number, N per unit of input, or a scalar variable of the file)",
+                       {.file = d.file, .column = o.input, .option = "--gain"});
     return resolve_constant(d, o.gain, "--gain") * checked(d, o.input, "--input");
   }
   if (d.has_column(o.current) || current_given) {
     if (o.kt.empty())
-      throw std::invalid_argument(d.where() + "--kt is needed to turn the current '" + o.current +
-                                  "' into torque (a number in N m/A, or a scalar variable of the file)");
+      throw InputError(errc::option_invalid,
+                       d.where() + "--kt is needed to turn the current '" + o.current +
+                           "' into torque (a number in N m/A, or a scalar variable of the file)",
+                       {.file = d.file, .column = o.current, .option = "--kt"});
     return resolve_constant(d, o.kt, "--kt") * checked(d, o.current, "--current");
   }
-  throw std::invalid_argument(d.where() + "no applied force: expected a column '" + o.force + "' (--force), '" + o.input +
-                              "' with --gain (--input), or '" + o.current + "' with --kt (--current); the file has columns: " +
-                              d.describe_contents());
+  throw InputError(errc::data_column_missing,
+                   d.where() + "no applied force: expected a column '" + o.force + "' (--force), '" + o.input +
+                       "' with --gain (--input), or '" + o.current + "' with --kt (--current); the file has columns: " +
+                       d.describe_contents(),
+                   {.file = d.file, .column = o.force, .option = "--force"});
 }
 
 Eigen::VectorXd velocity_column(const Dataset& d, const DataOptions& o) { return checked(d, o.velocity, "--velocity"); }

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "output.hpp"
+#include "frictionlab/error.hpp"
 #include "frictionlab/version.hpp"
 
 int main(int argc, char** argv) {
@@ -37,13 +38,14 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    return frictionlab::cli::fail(std::string(e.what()) + " (run with --help for the options)", 2);
+    return frictionlab::cli::fail(std::string(e.what()) + " (run with --help for the options)", 2, false,
+                                  frictionlab::errc::option_invalid);
   }
   try {
     for (auto& [sub, handler] : handlers)
       if (sub->parsed()) return handler();
   } catch (const std::invalid_argument& e) {
-    return frictionlab::cli::fail(e.what(), 2);
+    return frictionlab::cli::fail(e, 2);
   } catch (const std::length_error&) {
     return frictionlab::cli::fail("out of memory: the data or the result is larger than a container can hold", 1);
   } catch (const std::bad_alloc&) {
@@ -53,9 +55,9 @@ int main(int argc, char** argv) {
   } catch (const std::runtime_error& e) {
     // A failure outside the user's input: a simulation that did not converge, a missing
     // program (gnuplot, chromium), an I/O error. The message says which and what to do.
-    return frictionlab::cli::fail(e.what(), 1);
+    return frictionlab::cli::fail(e, 1);
   } catch (const std::exception& e) {
-    return frictionlab::cli::fail(e.what(), 1, true);
+    return frictionlab::cli::fail(e, 1, true);
   }
   return 1;
 }

@@ -261,9 +261,10 @@ int run_map_command(const std::string& scenario, const MapArgs& a, const OutputO
   if (!output.plot.empty() && grid.axes.size() > 2)
     throw std::invalid_argument("--plot draws 1-D and 2-D maps; this one varies " + std::to_string(grid.axes.size()) +
                                 " keys (write the table with -o and plot two of them yourself)");
-  check_output_file(a.out, output.overwrite, "-o");
-  check_outputs(output);
-  check_distinct_outputs({{"-o", a.out}, {"--json", output.json}, {"--plot", output.plot}});
+  std::vector<RunFile> inputs = output.command ? command_inputs(output.command) : std::vector<RunFile>{};
+  inputs.push_back({"SCENARIO", scenario, RunFile::Kind::file});
+  for (RunFile& f : scenario_inputs(scenario)) inputs.push_back(std::move(f));
+  check_outputs(output, inputs, {{"-o", a.out, RunFile::Kind::file}});
 
   std::mutex m;
   ro.progress = [&](std::size_t done, std::size_t n) {

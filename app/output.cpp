@@ -11,11 +11,18 @@
 #include <sstream>
 #include <streambuf>
 #include <thread>
+#include <cerrno>
+#include <cstring>
+#include <optional>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "figures.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/identify/method.hpp"
+#include "frictionlab/error.hpp"
+#include "frictionlab/io/json_text.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "io/atomic_write.hpp"
 #include "report/figure.hpp"
 #include "report/report.hpp"
@@ -257,22 +264,34 @@ void print_error(const std::string& message, bool internal) {
   std::cerr << "frictionlab: " << (internal ? "internal error: " : "error: ") << one_line(message) << std::endl;
 }
 
-int fail(const std::string& message, int status, bool internal) {
+int fail(const std::string& message, int status, bool internal, const std::string& code, const ErrorFields& fields) {
   try {
-    print_error(message, internal);
+    print_error(valid_utf8(message), internal);
     const JsonOutput* out = chosen_output();
     if (!out || !out->json || out->json->count() == 0 || out->json->results().empty()) return status;
     const std::string path = out->json->results().back();
     if (path.empty()) return status;
+    const std::string text = one_line(message);
+    nlohmann::json error = {{"code", code.empty() ? (status == 2 ? errc::input_invalid : errc::internal) : code},
+                            {"message", text}};
+    for (const auto& [name, value] : fields.items()) {
+      if (name == "row") error[name] = *fields.row;
+      else error[name] = value;
+    }
     const nlohmann::json j = {{"schema", 1},
                               {"status", "error"},
-                              {"message", one_line(message)},
-                              {"method", out->method ? out->method() : std::string()}};
-    if (path == "-") std::cout << j.dump() << std::endl;
+                              {"message", text},
+                              {"method", out->method ? out->method() : std::string()},
+                              {"error", error}};
+    if (path == "-") std::cout << json_text(j) << std::endl;
   } catch (...) {
     // Reporting an error must not raise another one; the line on stderr is out already.
   }
   return status;
+}
+
+int fail(const std::exception& e, int status, bool internal) {
+  return fail(e.what(), status, internal, error_code(e), error_fields(e));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -283,7 +302,7 @@ void check_output_file(const std::string& path, bool overwrite, const std::strin
   try {
     check_output_path(path, overwrite);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(option + " " + e.what());
+    rethrow_with_option(e, option + " ", option);
   }
 }
 
@@ -327,24 +346,229 @@ void check_plot(const std::string& plot, bool overwrite) {
   find_gnuplot();
 }
 
-void check_outputs(const OutputOptions& o) {
-  check_output_file(o.json, o.overwrite, "--json");
-  check_plot(o.plot, o.overwrite);
-  if (!o.report.empty()) {
-    try {
-      check_report_dir(o.report, o.overwrite);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(std::string("--report ") + e.what());
-    }
-    find_gnuplot();
-  }
-  std::vector<std::pair<std::string, std::string>> paths{{"--json", o.json}, {"--report", o.report}};
-  if (!o.plot.empty()) {
-    const FigureFiles files = figure_files(o.plot);
-    paths.insert(paths.end(), {{"--plot", files.figure}, {"--plot data", files.data}, {"--plot script", files.script}});
-  }
-  check_distinct_outputs(paths);
+void check_outputs(const OutputOptions& o, const std::vector<RunFile>& inputs, const std::vector<RunFile>& extra) {
+  std::vector<RunFile> outputs{{"--json", o.json, RunFile::Kind::file},
+                               {"--plot", o.plot, RunFile::Kind::figure},
+                               {"--report", o.report, RunFile::Kind::report}};
+  outputs.insert(outputs.end(), extra.begin(), extra.end());
+  check_run_files(inputs, outputs, o.overwrite);
   progress_start(o.command ? command_path(o.command) : "frictionlab");
+}
+
+// ---------------------------------------------------------------------------------------------
+// The one rule for outputs (check_run_files).
+namespace {
+
+namespace fs = std::filesystem;
+
+// What a path is on disk: a file's device and inode (links resolved), or for a file that does
+// not exist yet its directory's device and inode and its name.
+struct FileId {
+  dev_t dev = 0;
+  ino_t ino = 0;
+  std::string name;  // empty for an existing file
+  bool regular = false;
+  bool operator==(const FileId& o) const { return dev == o.dev && ino == o.ino && name == o.name; }
+};
+
+std::optional<FileId> existing_id(const std::string& path) {
+  struct stat st{};
+  if (::stat(path.c_str(), &st) != 0 || S_ISDIR(st.st_mode)) return std::nullopt;
+  return FileId{st.st_dev, st.st_ino, "", S_ISREG(st.st_mode)};
+}
+
+std::string parent_of(const std::string& path) {
+  const fs::path parent = fs::path(path).parent_path();
+  return parent.empty() ? std::string(".") : parent.string();
+}
+
+std::optional<FileId> output_id(const std::string& path) {
+  if (auto id = existing_id(path)) return id;
+  struct stat st{};
+  if (::stat(parent_of(path).c_str(), &st) != 0) return std::nullopt;
+  return FileId{st.st_dev, st.st_ino, fs::path(path).filename().string(), true};
+}
+
+bool is_link(const std::string& path) {
+  struct stat st{};
+  return ::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode);
+}
+
+// One file an output writes.
+struct OutFile {
+  std::string option;
+  std::string path;
+  std::optional<FileId> id;
+  bool in_place = false;  // a device or FIFO (or a path under /dev, /proc): written through, never replaced
+};
+
+[[noreturn]] void refuse(const char* code, const std::string& message, const std::string& option, const std::string& path,
+                         const std::string& other_option = "", const std::string& other_file = "") {
+  throw InputError(code, message,
+                   {.file = path, .option = option, .other_file = other_file, .other_option = other_option});
+}
+
+// The kind check of one output (what it is), its exists check apart (overwrite true).
+void check_kind(const RunFile& out) {
+  try {
+    switch (out.kind) {
+      case RunFile::Kind::file:
+        check_output_path(out.path, true);
+        break;
+      case RunFile::Kind::figure:
+        check_plot(out.path, true);
+        break;
+      case RunFile::Kind::report:
+        check_report_dir(out.path, true);
+        find_gnuplot();
+        break;
+    }
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    // check_plot names its option itself.
+    const std::string message = what.rfind(out.option + " ", 0) == 0 ? what : out.option + " " + what;
+    const char* code = dynamic_cast<const InputError*>(&e) ? static_cast<const InputError&>(e).code().c_str()
+                                                            : errc::output_not_writable;
+    refuse(code, message, out.option, out.path);
+  }
+}
+
+}  // namespace
+
+void check_run_files(const std::vector<RunFile>& inputs, const std::vector<RunFile>& outputs, bool overwrite) {
+  // 1. Each output can take an output at all (not a directory, its directory exists, ...).
+  std::vector<RunFile> given;
+  for (const RunFile& o : outputs)
+    if (!o.path.empty() && o.path != "-") given.push_back(o);
+  for (const RunFile& o : given) check_kind(o);
+
+  // The files the outputs write.
+  std::vector<OutFile> files;
+  for (const RunFile& o : given) {
+    std::vector<std::pair<std::string, std::string>> names;
+    if (o.kind == RunFile::Kind::figure) {
+      const FigureFiles ff = figure_files(o.path);
+      names = {{o.option, ff.figure}, {o.option + " data", ff.data}, {o.option + " script", ff.script}};
+    } else if (o.kind == RunFile::Kind::report) {
+      names = {{o.option, (fs::path(o.path) / "report.html").string()}};
+    } else {
+      names = {{o.option, o.path}};
+    }
+    for (auto& [option, path] : names) {
+      OutFile f{option, path, output_id(path), false};
+      if (o.kind == RunFile::Kind::file) {
+        try {
+          f.in_place = check_output_path(path, true) == OutputKind::write_through;
+        } catch (const std::invalid_argument&) {
+        }
+      }
+      files.push_back(std::move(f));
+    }
+  }
+
+  // 2. No output is one of the run's inputs (with or without overwrite).
+  for (const OutFile& f : files) {
+    if (!f.id || (f.in_place && !f.id->regular)) continue;
+    for (const RunFile& in : inputs) {
+      const std::optional<FileId> id = existing_id(in.path);
+      if (!id || !(*id == *f.id)) continue;
+      refuse(errc::output_is_input,
+             f.option + " " + f.path + " is the input " + in.path + " (" + in.option +
+                 "): an output never replaces an input of its run, with or without --overwrite; write it to "
+                 "another file",
+             f.option, f.path, in.option, in.path);
+    }
+  }
+
+  // 3. No two outputs are one file (devices and FIFOs are written through: several may share one).
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (!files[i].id || files[i].in_place) continue;
+    for (std::size_t j = 0; j < i; ++j) {
+      if (!files[j].id || files[j].in_place || !(*files[i].id == *files[j].id)) continue;
+      refuse(errc::output_duplicate,
+             files[i].option + " " + files[i].path + " is also the " + files[j].option +
+                 " output; give each output its own file",
+             files[i].option, files[i].path, files[j].option, files[j].path);
+    }
+  }
+
+  // 4. What is there is replaced only with overwrite: a regular file, a symbolic link (also a
+  //    dangling one), a report directory that is not empty.
+  if (!overwrite) {
+    for (const OutFile& f : files) {
+      if (f.in_place) continue;
+      std::error_code ec;
+      if (is_link(f.path) && !fs::exists(f.path, ec))
+        refuse(errc::output_exists,
+               f.option + " " + f.path + " is a symbolic link to a missing file; pass --overwrite to replace the link",
+               f.option, f.path);
+      if (fs::exists(f.path, ec))
+        refuse(errc::output_exists, f.option + " " + f.path + " exists; pass --overwrite to replace it", f.option, f.path);
+    }
+    for (const RunFile& o : given) {
+      if (o.kind != RunFile::Kind::report) continue;
+      try {
+        check_report_dir(o.path, false);
+      } catch (const std::invalid_argument& e) {
+        refuse(errc::output_exists, o.option + " " + e.what(), o.option, o.path);
+      }
+    }
+  }
+
+  // 5. The directory that receives each new or replaced file is writable (found now, not after
+  //    the computation).
+  for (const OutFile& f : files) {
+    if (f.in_place) continue;
+    std::error_code ec;
+    std::string target = f.path;
+    if (is_link(f.path) && fs::exists(f.path, ec)) target = fs::canonical(f.path, ec).string();  // the link's file is replaced
+    std::string dir = parent_of(target);
+    // A new report directory is made in its parent.
+    for (const RunFile& o : given)
+      if (o.kind == RunFile::Kind::report && f.option == o.option && !fs::exists(o.path, ec)) dir = parent_of(o.path);
+    if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+      const int err = errno;
+      refuse(errc::output_not_writable,
+             f.option + " " + f.path + ": directory " + dir + " is not writable (" + std::strerror(err) +
+                 "); expected a directory where frictionlab can create files",
+             f.option, f.path);
+    }
+  }
+}
+
+std::vector<RunFile> scenario_inputs(const std::string& scenario) {
+  std::vector<std::string> named;
+  try {
+    ScenarioOptions options;
+    options.files_read = &named;
+    (void)load_scenario(scenario, options);
+  } catch (const std::exception&) {
+    // Reported by the command when it reads the scenario.
+  }
+  std::vector<RunFile> out;
+  for (auto& f : named) out.push_back({"named by " + scenario, std::move(f), RunFile::Kind::file});
+  return out;
+}
+
+std::vector<RunFile> command_inputs(const CLI::App* cmd, const std::vector<std::string>& outputs) {
+  std::vector<RunFile> out;
+  for (const CLI::App* app = cmd; app; app = app->get_parent()) {
+    for (const CLI::Option* opt : app->get_options()) {
+      bool is_output = false;
+      for (const auto& name : outputs) is_output = is_output || opt->check_name(name);
+      if (is_output || opt->count() == 0) continue;
+      const std::string role = opt->get_positional() ? opt->get_name(true, false) : opt->get_name(false, true);
+      for (const std::string& v : opt->results()) {
+        if (v.empty() || v == "-") continue;
+        std::error_code ec;
+        const fs::file_status st = fs::status(v, ec);
+        if (fs::is_regular_file(st)) {
+          out.push_back({role, v, RunFile::Kind::file});
+        }
+      }
+    }
+  }
+  return out;
 }
 
 std::string result_text(const Result& r) {

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "frictionlab/error.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "report/report.hpp"
 
@@ -37,9 +38,16 @@ void register_json_output(CLI::App* cmd, CLI::Option* json, std::function<std::s
 /// result whose data gave no answer): one line "frictionlab: error: MESSAGE" (or "internal
 /// error" when `internal`) on stderr; and when the subcommand that ran was given `--json -`, the
 /// JSON {"schema": 1, "status": "error", "message": MESSAGE, "method": ...} as one line on stdout.
-/// A --json FILE is not written: a run that failed leaves no file behind. Never throws. Returns
-/// `status`.
-int fail(const std::string& message, int status, bool internal = false);
+/// The JSON also has "error": {"code": CODE, "message": MESSAGE, and the fields that apply: file,
+/// row, column, key, option, value, other_file, other_option} (codes: frictionlab/error.hpp; an
+/// empty `code` is input.invalid for status 2, internal otherwise). Bytes that are not UTF-8 are
+/// escaped as \xNN. A --json FILE is not written: a run that failed leaves no file behind. Never
+/// throws. Returns `status`.
+int fail(const std::string& message, int status, bool internal = false, const std::string& code = "",
+         const ErrorFields& fields = {});
+
+/// fail() with the message, code and fields of `e` (error_code and error_fields of error.hpp).
+int fail(const std::exception& e, int status, bool internal = false);
 
 /// The error line alone: "frictionlab: error: MESSAGE" on stderr (the progress line cleared).
 void print_error(const std::string& message, bool internal = false);
@@ -56,6 +64,44 @@ void check_output_file(const std::string& path, bool overwrite, const std::strin
 /// \throws std::invalid_argument naming both options.
 void check_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& paths);
 
+/// A file a run reads or writes: the option or role that names it ("--json", "DATA", "scenario
+/// data:") and its path. An output is a file, a figure (--plot: FILE, FILE.dat and FILE.gp) or a
+/// report directory (--report: DIR/report.html and its figures).
+struct RunFile {
+  enum class Kind { file, figure, report };
+  std::string option;
+  std::string path;
+  Kind kind = Kind::file;
+};
+
+/// The one rule for a run's outputs, applied before any work: every command hands it all its
+/// inputs (the files it reads, including those a scenario or a model names) and all its outputs.
+///  - each output path must be able to take an output (check_output_path of io/atomic_write.hpp:
+///    not a directory, block device or socket; its directory exists); "-" and "" pass;
+///  - each output is compared with every input and every other output by device and inode
+///    after resolving links (an output that does not exist yet: its directory's device and
+///    inode and its name); a match is refused with or without `overwrite`, naming both (hard
+///    links count). Outputs written in place (a character device, a FIFO: never replaced) are
+///    compared with the inputs only when they lead to a regular file (/dev/stdout > FILE);
+///  - an existing regular file, or a symbolic link (also a dangling one) at an output path, is
+///    replaced only with `overwrite`;
+///  - the directory that will receive a new or replaced file must be writable;
+///  - a figure's extension and its gnuplot, a report directory (check_plot, check_report_dir).
+/// \throws InputError (exit 2) with code output.is_input, output.duplicate, output.exists or
+///         output.not_writable, naming the option and path (and the other file); std::runtime_error
+///         when gnuplot is missing.
+void check_run_files(const std::vector<RunFile>& inputs, const std::vector<RunFile>& outputs, bool overwrite);
+
+/// The files a scenario names (its data files, its compensations' model files), read as
+/// load_scenario reads them; what was found before a failure when the scenario cannot be read
+/// (the command reports that failure itself later).
+std::vector<RunFile> scenario_inputs(const std::string& scenario);
+
+/// The inputs a parsed subcommand names: its positional arguments and every option value that
+/// is an existing file (a folder's files are the batch's own inputs), except the options in `outputs` (their
+/// long names, "--json"). A method's own input files (--validate, --static) are found this way.
+std::vector<RunFile> command_inputs(const CLI::App* cmd, const std::vector<std::string>& outputs = {"--json", "--plot", "--report", "--table", "--drift", "-o", "--output", "--c", "--mjcf"});
+
 /// Adds --plot FILE to `cmd` (simulate, analyze: they have their own other output options).
 void add_plot_option(CLI::App* cmd, std::string& plot);
 
@@ -66,7 +112,9 @@ void add_plot_option(CLI::App* cmd, std::string& plot);
 /// that gnuplot is there when a figure is asked for, and starts the progress line.
 /// \throws std::invalid_argument (exit 2) naming the option and path; std::runtime_error when
 ///         gnuplot is missing ("gnuplot not found: install Debian package gnuplot-nox").
-void check_outputs(const OutputOptions& o);
+/// `inputs` are the run's input files (command_inputs of the subcommand, and what its scenario
+/// names), `extra` its other outputs: check_run_files applies to all of them.
+void check_outputs(const OutputOptions& o, const std::vector<RunFile>& inputs = {}, const std::vector<RunFile>& extra = {});
 
 /// The --plot part of check_outputs, for commands with their own output options: also refuses
 /// a figure, .dat or .gp path that exists and is not a regular file (a figure is three files

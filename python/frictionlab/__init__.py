@@ -4,8 +4,10 @@ SI units throughout: forces in N (N m on a rotary axis), velocities in m/s (rad/
 in m (rad), inertia in kg (kg m^2), time in s. Errors in input raise ValueError with the same
 message as the C++ library and the command line, naming the function and the argument; an
 argument of the wrong type (None, a string, an object or complex array) raises
-ArgumentTypeError, which is both a TypeError and a ValueError. A failed integration raises
-RuntimeError.
+ArgumentTypeError, which is both a TypeError and a ValueError. Bad input that the library gives a
+code (a data file's missing column, a scenario's unknown key, ...) raises frictionlab.Error, a
+ValueError with .code (e.g. "data.column_missing") and the fields that apply (.file, .row,
+.column, .key, .option, .value; None otherwise). A failed integration raises RuntimeError.
 
     import frictionlab as fl
     d = fl.load("DATA_EMPS.mat")                       # dict of numpy columns and scalars
@@ -25,6 +27,7 @@ from ._core import (
     ContourResult,
     DecayOptions,
     Diagnostics,
+    Error,
     EnvelopeFit,
     EnvelopeOptions,
     EnvelopeResult,
@@ -61,7 +64,7 @@ from .simulate import simulate
 globals().update(_METHOD_FUNCTIONS)
 
 __all__ = [
-    "ArgumentTypeError", "BreakawayOptions", "ContourResult", "Data", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
+    "ArgumentTypeError", "BreakawayOptions", "ContourResult", "Data", "DecayOptions", "Diagnostics", "Error", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
     "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
     "analyze_contour", "analyze_map", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "law_names", "load",

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "common.hpp"
+#include "frictionlab/error.hpp"
 #include "frictionlab/version.hpp"
 
 namespace frictionlab::python {
@@ -154,11 +155,58 @@ PYBIND11_MODULE(_core, m) {
         bases.ptr(), nullptr);
     m.attr("ArgumentTypeError") = pybind11::handle(argument_type_error_class);
   }
+  // Bad input with a code (frictionlab/error.hpp): frictionlab.Error, a ValueError with .code
+  // and the fields that apply as attributes (file, row, column, key, option, value, other_file,
+  // other_option; None when they do not apply).
+  static pybind11::handle error_class;
+  {
+    error_class = PyErr_NewExceptionWithDoc(
+        "frictionlab._core.Error",
+        "Bad input (a data file, a scenario, an option): a ValueError with a stable .code (e.g. "
+        "'data.column_missing', 'scenario.key_unknown', 'output.exists'; the table is in frictionlab/error.hpp) "
+        "and the fields that locate the fault: .file, .row, .column, .key, .option, .value, .other_file, "
+        ".other_option (None when they do not apply).",
+        PyExc_ValueError, nullptr);
+    m.attr("Error") = pybind11::handle(error_class);
+  }
   pybind11::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const fp::argument_type_error& e) {
       PyErr_SetString(argument_type_error_class.ptr(), e.what());
+    } catch (const frictionlab::InputError& e) {
+      // Build the instance (args = (message,)) and set its attributes; a failure here falls back
+      // to a plain ValueError with the message.
+      const std::string what = e.what();
+      PyObject* message = PyUnicode_DecodeUTF8(what.data(), static_cast<Py_ssize_t>(what.size()), "backslashreplace");
+      PyObject* instance = message ? PyObject_CallFunctionObjArgs(error_class.ptr(), message, nullptr) : nullptr;
+      Py_XDECREF(message);
+      if (!instance) {
+        PyErr_Clear();
+        PyErr_SetString(PyExc_ValueError, e.what());
+        return;
+      }
+      pybind11::object obj = pybind11::reinterpret_steal<pybind11::object>(instance);
+      try {
+        const frictionlab::ErrorFields& f = e.fields();
+        const auto text = [](const std::string& v) -> pybind11::object {
+          if (v.empty()) return pybind11::none();
+          return pybind11::reinterpret_steal<pybind11::object>(
+              PyUnicode_DecodeUTF8(v.data(), static_cast<Py_ssize_t>(v.size()), "surrogateescape"));
+        };
+        obj.attr("code") = pybind11::str(e.code());
+        obj.attr("file") = text(f.file);
+        obj.attr("row") = f.row ? pybind11::object(pybind11::int_(*f.row)) : pybind11::none();
+        obj.attr("column") = text(f.column);
+        obj.attr("key") = text(f.key);
+        obj.attr("option") = text(f.option);
+        obj.attr("value") = text(f.value);
+        obj.attr("other_file") = text(f.other_file);
+        obj.attr("other_option") = text(f.other_option);
+      } catch (const pybind11::error_already_set&) {
+        PyErr_Clear();
+      }
+      PyErr_SetObject(error_class.ptr(), obj.ptr());
     } catch (const std::logic_error& e) {
       // invalid_argument derives from logic_error: both are the caller's mistake.
       PyErr_SetString(PyExc_ValueError, e.what());

@@ -1,3 +1,4 @@
+#include "frictionlab/io/json_text.hpp"
 #include "frictionlab/analysis/contour.hpp"
 
 #include <Eigen/Dense>
@@ -242,7 +243,7 @@ std::string contour_json(const ContourResult& r) {
                             {"max_quadrant_glitch_m", num(max_quadrant_glitch(r))},
                             {"quadrant_glitch_m", peaks},
                             {"quadrant_glitches", glitches}};
-  return j.dump();
+  return json_text(j);
 }
 
 }  // namespace frictionlab

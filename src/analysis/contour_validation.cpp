@@ -1,4 +1,5 @@
 // Two-axis validation on a circular test: see include/frictionlab/analysis/contour_validation.hpp.
+#include "frictionlab/io/json_text.hpp"
 #include "frictionlab/analysis/contour_validation.hpp"
 
 #include <cmath>
@@ -61,7 +62,7 @@ ContourValidation validate_contour(const Scenario& scenario, const MultiAxisVali
                      {"max_radial_error_m", s.max_radial_error_m - m.max_radial_error_m}};
   const double e = relative_error(m.radial_error, s.radial_error);
   c["relative_error_percent"] = {{"radial_error", std::isfinite(e) ? nlohmann::json(e) : nlohmann::json(nullptr)}};
-  r.validation->json_sections["contour"] = c.dump();
+  r.validation->json_sections["contour"] = json_text(c);
   r.diagnostics.numbers["max_quadrant_glitch_m"] = max_quadrant_glitch(m);
   r.diagnostics.numbers["max_quadrant_glitch_sim_m"] = max_quadrant_glitch(s);
   r.diagnostics.numbers["roundness_m"] = m.roundness_m;

@@ -1,4 +1,5 @@
 #include "fleet/map_run.hpp"
+#include "frictionlab/io/json_text.hpp"
 
 #include <cmath>
 
@@ -90,7 +91,7 @@ MapRun map_scenario(const std::string& scenario, const MapGrid& grid, const MapR
                                      {"grid", grid_text},       {"transient", transient},
                                      {"tolerance", options.motion.tolerance}, {"contact", contact},
                                      {"columns", part.table.columns}};
-  part.key = sha256_hex(id.dump());
+  part.key = sha256_hex(json_text(id));
 
   Result env;
   env.method = "map";
@@ -105,7 +106,7 @@ MapRun map_scenario(const std::string& scenario, const MapGrid& grid, const MapR
                                          {"theory", {{"kind", run.theory_kind}, {"note", run.theory_note}}},
                                          {"columns", part.table.columns},
                                          {"rows", nlohmann::ordered_json::array()}};
-  env.json_sections["result"] = result.dump();
+  env.json_sections["result"] = json_text(result);
   part.envelope = to_json(env, -1);
   return run;
 }

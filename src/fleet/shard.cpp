@@ -1,4 +1,5 @@
 #include "fleet/shard.hpp"
+#include "frictionlab/io/json_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -118,7 +119,7 @@ std::string part_to_json(const Part& part) {
   if (const auto& g = part.table.grown) j["grown"] = {{"begin", g->begin}, {"end", g->end}, {"first", g->first}};
   j["envelope"] = nlohmann::ordered_json::parse(part.envelope);
   j["rows"] = std::move(rows);
-  return j.dump() + "\n";
+  return json_text(j) + "\n";
 }
 
 Part read_part(const std::string& path) {
@@ -176,7 +177,7 @@ Part read_part(const std::string& path) {
     p.table.grown = GrownColumns{g["begin"].get<std::size_t>(), g["end"].get<std::size_t>(),
                                  g["first"].get<std::vector<std::size_t>>()};
   }
-  p.envelope = field("envelope", j.contains("envelope") && j["envelope"].is_object()).dump();
+  p.envelope = json_text(field("envelope", j.contains("envelope") && j["envelope"].is_object()));
   const nlohmann::ordered_json& rows = field("rows", j.contains("rows") && j["rows"].is_array());
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const std::string where = path + ": row " + std::to_string(r + 1);
@@ -330,7 +331,7 @@ std::string table_json(const Part& part, int indent) {
   }
   env[place_in(env, "rows_at", part.rows_at, " (it must hold an empty array there)")] = std::move(rows);
   if (!part.columns_at.empty()) env[place_in(env, "columns_at", part.columns_at, "")] = part.table.columns;
-  return env.dump(indent) + "\n";
+  return json_text(env, indent) + "\n";
 }
 
 std::size_t grow_column(RowTable& table, const std::string& name, std::size_t job) {

@@ -1,3 +1,4 @@
+#include "frictionlab/io/json_text.hpp"
 #include "frictionlab/identify/result.hpp"
 
 #include <cmath>
@@ -107,7 +108,7 @@ std::string to_json(const Result& r, int indent) {
       throw std::invalid_argument("result of " + r.method + ": section '" + key + "' is not valid JSON: " + e.what());
     }
   }
-  return j.dump(indent);
+  return json_text(j, indent);
 }
 
 }  // namespace frictionlab

@@ -1,5 +1,7 @@
 #include "io/atomic_write.hpp"
 
+#include "frictionlab/error.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -33,30 +35,35 @@ struct Target {
 // Classifies `path`. Missing parent directories are reported only when `parent_check` (the
 // early check); write_file_atomic lets mkstemp report them as an I/O failure.
 Target classify(const std::string& path, bool overwrite, bool parent_check) {
-  if (path.empty()) throw std::invalid_argument("output file name is empty");
+  if (path.empty()) throw InputError(errc::output_not_writable, "output file name is empty");
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);  // follows symbolic links
   const fs::file_type type = st.type();
   if (type == fs::file_type::not_found || type == fs::file_type::none) {
     if (system_path(path))
-      throw std::invalid_argument(path + ": no such file under /dev or /proc (frictionlab creates no files there)");
+      throw InputError(errc::output_not_writable, path + ": no such file under /dev or /proc (frictionlab creates no files there)",
+                       {.file = path});
     if (parent_check) {
       const fs::path parent = fs::path(path).parent_path();
       if (!parent.empty() && !fs::is_directory(parent, ec))
-        throw std::invalid_argument(path + ": directory " + parent.string() + " does not exist");
+        throw InputError(errc::output_not_writable, path + ": directory " + parent.string() + " does not exist", {.file = path});
     }
-    // A dangling symbolic link: the new file replaces the link (its target directory may not exist).
+    // A dangling symbolic link: the new file replaces the link (its target directory may not
+    // exist), only with overwrite.
+    if (!overwrite && fs::is_symlink(fs::symlink_status(path, ec)))
+      throw InputError(errc::output_exists, path + " is a symbolic link to a missing file; pass --overwrite to replace the link",
+                       {.file = path});
     return {OutputKind::create, path};
   }
   switch (type) {
     case fs::file_type::directory:
-      throw std::invalid_argument(path + " is a directory; expected a file name");
+      throw InputError(errc::output_not_writable, path + " is a directory; expected a file name", {.file = path});
     case fs::file_type::character:
     case fs::file_type::fifo:
       return {OutputKind::write_through, path};
     case fs::file_type::regular: {
       if (system_path(path)) return {OutputKind::write_through, path};
-      if (!overwrite) throw std::invalid_argument(path + " exists; pass --overwrite to replace it");
+      if (!overwrite) throw InputError(errc::output_exists, path + " exists; pass --overwrite to replace it", {.file = path});
       // Replace the file a symbolic link points to, not the link.
       std::string target = path;
       if (fs::is_symlink(fs::symlink_status(path, ec))) {
@@ -66,11 +73,13 @@ Target classify(const std::string& path, bool overwrite, bool parent_check) {
       return {OutputKind::replace, target};
     }
     case fs::file_type::block:
-      throw std::invalid_argument(path + " is a block device; expected a regular file, a character device or a FIFO");
+      throw InputError(errc::output_not_writable, path + " is a block device; expected a regular file, a character device or a FIFO",
+                       {.file = path});
     case fs::file_type::socket:
-      throw std::invalid_argument(path + " is a socket; expected a regular file, a character device or a FIFO");
+      throw InputError(errc::output_not_writable, path + " is a socket; expected a regular file, a character device or a FIFO",
+                       {.file = path});
     default:
-      throw std::invalid_argument(path + " is not a regular file, a character device or a FIFO");
+      throw InputError(errc::output_not_writable, path + " is not a regular file, a character device or a FIFO", {.file = path});
   }
 }
 
@@ -106,18 +115,40 @@ void write_file_atomic(const std::string& path, std::string_view content, const 
     write_through(target.path, content);
     return;
   }
-  // mkstemp gives a unique temporary in the target's directory, so the rename stays on one
-  // file system and is atomic.
-  std::string tmpl = target.path + ".tmp-XXXXXX";
-  const int fd = ::mkstemp(tmpl.data());
-  if (fd < 0) {
-    throw std::runtime_error(path + ": cannot create a temporary file next to it (does the directory exist "
-                                    "and is it writable?)");
+  // The content goes first to an unnamed file (O_TMPFILE) in the target's directory, which a
+  // crash (even SIGKILL) cannot leave behind; it is given a name only when complete. File
+  // systems without O_TMPFILE get a named temporary "PATH.tmp-XXXXXX" (mkstemp) instead.
+  const std::string dir = [&] {
+    const fs::path parent = fs::path(target.path).parent_path();
+    return parent.empty() ? std::string(".") : parent.string();
+  }();
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  std::string tmpl;  // the named temporary, when there is one
+  int fd = -1;
+#ifdef O_TMPFILE
+  fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666 & ~mask);
+#endif
+  const bool unnamed = fd >= 0;
+  if (!unnamed) {
+    // mkstemp gives a unique temporary in the target's directory, so the rename stays on one
+    // file system and is atomic.
+    tmpl = target.path + ".tmp-XXXXXX";
+    fd = ::mkstemp(tmpl.data());
+    if (fd < 0) {
+      throw InternalError(errc::output_write_failed,
+                          path + ": cannot create a temporary file next to it (does the directory exist "
+                                 "and is it writable?)",
+                          {.file = path});
+    }
   }
+  const auto remove_temp = [&] {
+    if (!tmpl.empty()) std::remove(tmpl.c_str());
+  };
   const auto fail = [&](const std::string& what) {
     ::close(fd);
-    std::remove(tmpl.c_str());
-    throw std::runtime_error(path + ": " + what);
+    remove_temp();
+    throw InternalError(errc::output_write_failed, path + ": " + what, {.file = path});
   };
   std::size_t written = 0;
   while (written < content.size()) {
@@ -128,26 +159,57 @@ void write_file_atomic(const std::string& path, std::string_view content, const 
   }
   if (::fsync(fd) != 0) fail("cannot flush the temporary file");
   // mkstemp creates the file 0600; give it the usual permissions (umask applies).
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  if (::close(fd) != 0) {
-    std::remove(tmpl.c_str());
-    throw std::runtime_error(path + ": cannot close the temporary file");
-  }
+  if (!unnamed) ::fchmod(fd, 0666 & ~mask);
   // The path may have changed while the content was written: check again just before renaming
   // (a file that appeared without overwrite, a directory or a device put in its place).
   try {
     const Target now = classify(path, options.overwrite, false);
-    if (now.kind == OutputKind::write_through) throw std::invalid_argument(path + " became a device or FIFO while writing");
+    if (now.kind == OutputKind::write_through)
+      throw InputError(errc::output_not_writable, path + " became a device or FIFO while writing", {.file = path});
   } catch (...) {
-    std::remove(tmpl.c_str());
+    ::close(fd);
+    remove_temp();
     throw;
+  }
+  if (unnamed) {
+    const std::string self = "/proc/self/fd/" + std::to_string(fd);
+    if (target.kind == OutputKind::create) {
+      // A new file: linked straight into place (EEXIST if one appeared meanwhile: never replaced).
+      if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, target.path.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+        if (::close(fd) != 0) throw InternalError(errc::output_write_failed, path + ": cannot close the file", {.file = path});
+        return;
+      }
+      if (errno == EEXIST && !options.overwrite) {
+        ::close(fd);
+        throw InputError(errc::output_exists, path + " exists; pass --overwrite to replace it", {.file = path});
+      }
+    }
+    // Replacing a file: linked under a temporary name, renamed over the target at once.
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      tmpl = target.path + ".tmp-XXXXXX";
+      static const char kChars[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+      for (std::size_t k = tmpl.size() - 6; k < tmpl.size(); ++k)
+        tmpl[k] = kChars[static_cast<std::size_t>(std::rand()) % (sizeof kChars - 1)];
+      if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, tmpl.c_str(), AT_SYMLINK_FOLLOW) == 0) break;
+      const int err = errno;
+      tmpl.clear();
+      if (err != EEXIST) {
+        ::close(fd);
+        throw InternalError(errc::output_write_failed,
+                            path + ": cannot give the temporary file a name next to it: " + std::strerror(err), {.file = path});
+      }
+    }
+    if (tmpl.empty()) fail("cannot find a free temporary name next to it");
+  }
+  if (::close(fd) != 0) {
+    remove_temp();
+    throw InternalError(errc::output_write_failed, path + ": cannot close the temporary file", {.file = path});
   }
   if (std::rename(tmpl.c_str(), target.path.c_str()) != 0) {
     const int err = errno;
-    std::remove(tmpl.c_str());
-    throw std::runtime_error(path + ": cannot rename the temporary file into place: " + std::strerror(err));
+    remove_temp();
+    throw InternalError(errc::output_write_failed,
+                        path + ": cannot rename the temporary file into place: " + std::strerror(err), {.file = path});
   }
 }
 

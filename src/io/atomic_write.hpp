@@ -2,9 +2,12 @@
 // Writes an output file so that a failed run never leaves a half-written one, and never replaces
 // what is not a regular file. The one place where frictionlab decides how an output path is
 // written:
-//   - a new file, or an existing regular file (with overwrite): the content goes to a temporary
-//     file in the same directory, which is then renamed over the target (a symbolic link is
-//     followed: its target is replaced, the link stays);
+//   - a new file, or an existing regular file (with overwrite): the content goes to an unnamed
+//     temporary file in the same directory (O_TMPFILE: a crash, even SIGKILL, leaves nothing
+//     behind), which is then linked into place (a new file) or linked under a temporary name and
+//     renamed over the target at once; where the file system has no O_TMPFILE, a named temporary
+//     "PATH.tmp-XXXXXX" is written and renamed. A symbolic link is followed: its target is
+//     replaced, the link stays; a dangling link is replaced by the file only with overwrite;
 //   - a character device or a FIFO (/dev/null, a terminal, a named pipe), and any path under
 //     /dev (but /dev/shm) or /proc (/dev/stdout, /proc/self/fd/1): opened and written in place,
 //     as `cat > PATH` would, never renamed over, with or without overwrite (a regular file
@@ -33,17 +36,20 @@ enum class OutputKind {
 
 /// Checks, without writing anything, that `path` can take an output, and says how it will be
 /// written. Used before any work so that a run fails before its first output is written.
-/// \throws std::invalid_argument "PATH is a directory; expected a file name", "PATH exists; pass
-///         --overwrite to replace it" (a regular file, overwrite false), "PATH: directory D does
-///         not exist", "PATH is a block device / socket ...", "PATH: no such file under /dev or
-///         /proc (frictionlab creates no files there)".
+/// \throws InputError (an std::invalid_argument; frictionlab/error.hpp) with code output.exists:
+///         "PATH exists; pass --overwrite to replace it" (a regular file, overwrite false), "PATH
+///         is a symbolic link to a missing file; pass --overwrite to replace the link"; code
+///         output.not_writable: "PATH is a directory; expected a file name", "PATH: directory D
+///         does not exist", "PATH is a block device / socket ...", "PATH: no such file under /dev
+///         or /proc (frictionlab creates no files there)".
 OutputKind check_output_path(const std::string& path, bool overwrite);
 
 /// Writes `content` to `path` as check_output_path says: via "PATH.tmp-XXXXXX" in the target's
 /// directory, flushed, then renamed (on any failure the temporary is removed and the target is
 /// untouched); or written through for a device or FIFO.
-/// \throws std::invalid_argument as check_output_path; std::runtime_error naming the file on an
-///         I/O failure (no permission, disk full, a FIFO whose reader went away).
+/// \throws InputError as check_output_path; InternalError (a std::runtime_error, code
+///         output.write_failed) or std::runtime_error naming the file on an I/O failure (no
+///         permission, disk full, a FIFO whose reader went away).
 void write_file_atomic(const std::string& path, std::string_view content, const AtomicWriteOptions& options = {});
 
 }  // namespace frictionlab

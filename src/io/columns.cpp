@@ -1,7 +1,9 @@
 #include "frictionlab/io/columns.hpp"
+#include "frictionlab/error.hpp"
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -20,6 +22,21 @@ bool parse_number(const std::string& text, double& value) {
   return ec == std::errc() && ptr == end && begin != end && std::isfinite(value);
 }
 
+// The 1-based line of sample k in the file (or its sample number when the data has no lines).
+std::size_t row_number(const Dataset& data, Eigen::Index k) {
+  if (!data.resampling && k >= 0 && static_cast<std::size_t>(k) < data.lines.size()) return data.lines[static_cast<std::size_t>(k)];
+  return static_cast<std::size_t>(k + 1);
+}
+
+// A role that is an option ("--time") is reported as the error's option field.
+std::string option_of(const std::string& role) { return role.rfind("-", 0) == 0 ? role : std::string(); }
+
+std::string format_double(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
 std::string scalar_list(const Dataset& data) {
   if (data.scalars.empty()) return "(none)";
   std::string out;
@@ -30,7 +47,10 @@ std::string scalar_list(const Dataset& data) {
 }  // namespace
 
 const Eigen::VectorXd& select_column(const Dataset& data, const std::string& name, const std::string& role) {
-  if (!data.has_column(name)) throw std::invalid_argument(data.missing_column_message(name, role));
+  if (!data.has_column(name)) {
+    throw InputError(errc::data_column_missing, data.missing_column_message(name, role),
+                     {.file = data.file, .column = name, .option = option_of(role)});
+  }
   return data.column(name);
 }
 
@@ -38,7 +58,10 @@ const Eigen::VectorXd& finite_column(const Dataset& data, const std::string& nam
   const Eigen::VectorXd& x = select_column(data, name, role);
   for (Eigen::Index k = 0; k < x.size(); ++k) {
     if (!std::isfinite(x(k))) {
-      throw std::invalid_argument(data.where() + data.row_label(k) + ", column '" + name + "': value is not a finite number");
+      throw InputError(errc::data_not_finite,
+                       data.where() + data.row_label(k) + ", column '" + name + "': value is not a finite number",
+                       {.file = data.file, .row = row_number(data, k), .column = name, .option = option_of(role),
+                        .value = format_double(x(k))});
     }
   }
   return x;
@@ -50,19 +73,24 @@ double resolve_constant(const Dataset& data, const std::string& text, const std:
   const auto it = data.scalars.find(text);
   if (it != data.scalars.end()) {
     if (!std::isfinite(it->second)) {
-      throw std::invalid_argument(data.where() + parameter + " = '" + text + "': the scalar is not a finite number");
+      throw InputError(errc::data_not_finite, data.where() + parameter + " = '" + text + "': the scalar is not a finite number",
+                       {.file = data.file, .column = text, .option = parameter, .value = text});
     }
     return it->second;
   }
-  throw std::invalid_argument(data.where() + parameter + " = '" + text +
-                              "': expected a number or the name of a scalar in the file; scalars: " + scalar_list(data));
+  throw InputError(errc::option_invalid,
+                   data.where() + parameter + " = '" + text +
+                       "': expected a number or the name of a scalar in the file; scalars: " + scalar_list(data),
+                   {.file = data.file, .option = parameter, .value = text});
 }
 
 ScaleFactor parse_scale(const std::string& spec, const std::string& option) {
   const auto eq = spec.find('=');
   ScaleFactor s;
   if (eq == std::string::npos || eq == 0 || !parse_number(spec.substr(eq + 1), s.factor)) {
-    throw std::invalid_argument(option + " '" + spec + "': expected NAME=FACTOR with a finite number, e.g. position=1e-3");
+    throw InputError(errc::option_invalid,
+                     option + " '" + spec + "': expected NAME=FACTOR with a finite number, e.g. position=1e-3",
+                     {.option = option, .value = spec});
   }
   s.column = spec.substr(0, eq);
   return s;
@@ -72,7 +100,8 @@ void apply_scales(Dataset& data, const std::vector<std::string>& specs, const st
   for (const auto& spec : specs) {
     const ScaleFactor s = parse_scale(spec, option);
     if (!data.has_column(s.column)) {
-      throw std::invalid_argument(data.missing_column_message(s.column, option + " '" + spec + "'"));
+      throw InputError(errc::data_column_missing, data.missing_column_message(s.column, option + " '" + spec + "'"),
+                       {.file = data.file, .column = s.column, .option = option, .value = spec});
     }
     data.column(s.column) *= s.factor;
   }
@@ -96,10 +125,11 @@ void resample_dataset(Dataset& data, const std::string& time_column, ResampleOpt
   constexpr double kMaxBytes = 8e9;
   const double bytes = 8.0 * static_cast<double>(resampler.report().samples_out) * static_cast<double>(data.column_names().size());
   if (bytes > kMaxBytes) {
-    throw std::invalid_argument(data.where() + options.dt_name + " = " + detail::format_value(resampler.report().dt, 6) +
+    throw InputError(errc::option_out_of_range, data.where() + options.dt_name + " = " + detail::format_value(resampler.report().dt, 6) +
                                 " s: " + std::to_string(resampler.report().samples_out) + " samples x " +
                                 std::to_string(data.column_names().size()) + " columns would take " +
-                                detail::format_value(bytes / 1e9, 3) + " GB; expected at most 8 GB (a larger step)");
+                                detail::format_value(bytes / 1e9, 3) + " GB; expected at most 8 GB (a larger step)",
+                     {.file = data.file, .option = options.dt_name});
   }
   // Every column is interpolated before any is replaced, so a bad value leaves `data` unchanged.
   std::vector<std::pair<std::string, Eigen::VectorXd>> out;

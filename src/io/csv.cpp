@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "frictionlab/error.hpp"
 #include "io/sha256.hpp"
 
 namespace frictionlab {
@@ -130,7 +131,10 @@ std::string at_line(const std::string& path, std::size_t line_no) { return path 
 
 Dataset read_csv(const std::string& path, const CsvOptions& options) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::invalid_argument(path + ": cannot open the CSV file (does it exist and is it readable?)");
+  if (!in) {
+    throw InputError(errc::data_file_unreadable, path + ": cannot open the CSV file (does it exist and is it readable?)",
+                     {.file = path});
+  }
 
   Dataset data;
   data.file = path;
@@ -152,18 +156,25 @@ Dataset read_csv(const std::string& path, const CsvOptions& options) {
       const Cell kind = parse_cell(cells[c], row[c]);
       if (kind == Cell::number) continue;
       const std::string where = at_line(path, line_no) + ", column " + std::to_string(c + 1) + " '" + names[c] + "': ";
+      const ErrorFields fields{.file = path, .row = line_no, .column = names[c], .value = cells[c]};
       if (kind == Cell::text) {
         const bool decimal_comma = delimiter != ',' && cells[c].find(',') != std::string::npos;
-        throw std::invalid_argument(where + "expected a number, got '" + cells[c] + "'" +
-                                    (decimal_comma ? " (a decimal comma? numbers need a decimal point)" : ""));
+        throw InputError(errc::data_not_a_number,
+                         where + "expected a number, got '" + cells[c] + "'" +
+                             (decimal_comma ? " (a decimal comma? numbers need a decimal point)" : ""),
+                         fields);
       }
       if (kind == Cell::too_large) {
-        throw std::invalid_argument(where + "'" + cells[c] +
-                                    "' is out of the range of a double (magnitude above 1.8e308); expected a finite number");
+        throw InputError(errc::data_not_finite,
+                         where + "'" + cells[c] +
+                             "' is out of the range of a double (magnitude above 1.8e308); expected a finite number",
+                         fields);
       }
       if (!options.drop_invalid) {
-        throw std::invalid_argument(where + (kind == Cell::empty ? "empty cell" : "'" + cells[c] + "'") +
-                                    "; expected a finite number (use " + options.drop_invalid_option + " to skip such rows)");
+        throw InputError(errc::data_not_finite,
+                         where + (kind == Cell::empty ? "empty cell" : "'" + cells[c] + "'") +
+                             "; expected a finite number (use " + options.drop_invalid_option + " to skip such rows)",
+                         fields);
       }
       invalid = true;
     }
@@ -180,7 +191,9 @@ Dataset read_csv(const std::string& path, const CsvOptions& options) {
     if (skip_line(line, options.comment)) continue;
     if (delimiter == '\0') delimiter = detect_delimiter(line);
     if (!split(line, delimiter, cells)) {
-      throw std::invalid_argument(at_line(path, line_no) + ": a quoted cell is not closed (expected a closing '\"' on the same line)");
+      throw InputError(errc::data_format,
+                       at_line(path, line_no) + ": a quoted cell is not closed (expected a closing '\"' on the same line)",
+                       {.file = path, .row = line_no});
     }
     if (!have_first_row) {
       have_first_row = true;
@@ -196,16 +209,20 @@ Dataset read_csv(const std::string& path, const CsvOptions& options) {
         }
       }
       if (options.header == CsvHeader::required && numbers > 0 && first_number == 0) {
-        throw std::invalid_argument(at_line(path, line_no) +
-                                    ": the first row holds numbers; expected a header row of column names (or read "
-                                    "the file with header detection, which names the columns c1, c2, ...)");
+        throw InputError(errc::data_format,
+                         at_line(path, line_no) +
+                             ": the first row holds numbers; expected a header row of column names (or read "
+                             "the file with header detection, which names the columns c1, c2, ...)",
+                         {.file = path, .row = line_no});
       }
       const bool headerless = options.header == CsvHeader::detect && numbers > 0 && text == 0;
       if (options.header == CsvHeader::detect && numbers > 0 && text > 0) {
-        throw std::invalid_argument(at_line(path, line_no) + ": the first row mixes numbers and text (column " +
-                                    std::to_string(first_number + 1) + " '" + cells[first_number] + "', column " +
-                                    std::to_string(first_text + 1) + " '" + cells[first_text] +
-                                    "'); expected a header row of column names or a row of numbers");
+        throw InputError(errc::data_format,
+                         at_line(path, line_no) + ": the first row mixes numbers and text (column " +
+                             std::to_string(first_number + 1) + " '" + cells[first_number] + "', column " +
+                             std::to_string(first_text + 1) + " '" + cells[first_text] +
+                             "'); expected a header row of column names or a row of numbers",
+                         {.file = path, .row = line_no});
       }
       data.header_row = !headerless;
       data.names_option = options.names_option;
@@ -213,15 +230,19 @@ Dataset read_csv(const std::string& path, const CsvOptions& options) {
         names.push_back(headerless ? std::string(1, 'c').append(std::to_string(c + 1)) : unquote_name(cells[c]));
       }
       if (options.names.size() > names.size()) {
-        throw std::invalid_argument(path + ": " + options.names_option + " gives " + std::to_string(options.names.size()) +
-                                    " names but the file has " + std::to_string(names.size()) + " columns (" +
-                                    delimiter_name(delimiter) + " separated, line " + std::to_string(line_no) + ")");
+        throw InputError(errc::option_invalid,
+                         path + ": " + options.names_option + " gives " + std::to_string(options.names.size()) +
+                             " names but the file has " + std::to_string(names.size()) + " columns (" +
+                             delimiter_name(delimiter) + " separated, line " + std::to_string(line_no) + ")",
+                         {.file = path, .row = line_no, .option = options.names_option});
       }
       for (std::size_t c = 0; c < options.names.size(); ++c) {
         const std::string name = trim(options.names[c]);
         if (name.empty()) {
-          throw std::invalid_argument(path + ": " + options.names_option + ": name " + std::to_string(c + 1) +
-                                      " is empty; expected a name for column " + std::to_string(c + 1));
+          throw InputError(errc::option_invalid,
+                           path + ": " + options.names_option + ": name " + std::to_string(c + 1) +
+                               " is empty; expected a name for column " + std::to_string(c + 1),
+                           {.file = path, .option = options.names_option});
         }
         names[c] = name;
       }
@@ -229,15 +250,20 @@ Dataset read_csv(const std::string& path, const CsvOptions& options) {
       for (std::size_t c = 0; c < names.size(); ++c) {
         const bool given = c < options.names.size();
         if (names[c].empty()) {
-          throw std::invalid_argument(at_line(path, line_no) + ", column " + std::to_string(c + 1) +
-                                      ": empty name in the header row (expected a column name)");
+          throw InputError(errc::data_format,
+                           at_line(path, line_no) + ", column " + std::to_string(c + 1) +
+                               ": empty name in the header row (expected a column name)",
+                           {.file = path, .row = line_no});
         }
         if (!seen.insert(names[c]).second) {
-          throw std::invalid_argument(
+          throw InputError(
+              errc::data_column_duplicate,
               given ? path + ": " + options.names_option + ": '" + names[c] + "' names two columns (column " +
                           std::to_string(c + 1) + " and an earlier one); expected distinct names"
                     : at_line(path, line_no) + ", column " + std::to_string(c + 1) + ": duplicate column name '" +
-                          names[c] + "' in the " + (headerless ? "column names" : "header row"));
+                          names[c] + "' in the " + (headerless ? "column names" : "header row"),
+              given ? ErrorFields{.file = path, .column = names[c], .option = options.names_option}
+                    : ErrorFields{.file = path, .row = line_no, .column = names[c]});
         }
       }
       values.resize(names.size());
@@ -246,18 +272,24 @@ Dataset read_csv(const std::string& path, const CsvOptions& options) {
       continue;
     }
     if (cells.size() != names.size()) {
-      throw std::invalid_argument(at_line(path, line_no) + ": " + std::to_string(cells.size()) + " cells; expected " +
-                                  std::to_string(names.size()) + (data.header_row ? " like the header row" : " like the first row") +
-                                  " (separator " + delimiter_name(delimiter) + ")");
+      throw InputError(errc::data_format,
+                       at_line(path, line_no) + ": " + std::to_string(cells.size()) + " cells; expected " +
+                           std::to_string(names.size()) + (data.header_row ? " like the header row" : " like the first row") +
+                           " (separator " + delimiter_name(delimiter) + ")",
+                       {.file = path, .row = line_no});
     }
     if (parse_row()) keep_row();
     else ++dropped;
   }
-  if (in.bad()) throw std::invalid_argument(path + ": read error");
-  if (!have_first_row) throw std::invalid_argument(path + ": empty file; expected a header row and data rows");
+  if (in.bad()) throw InputError(errc::data_file_unreadable, path + ": read error", {.file = path});
+  if (!have_first_row) {
+    throw InputError(errc::data_format, path + ": empty file; expected a header row and data rows", {.file = path});
+  }
   if (data.lines.empty()) {
-    throw std::invalid_argument(path + ": no data rows after the header" +
-                                (dropped ? " (all " + std::to_string(dropped) + " rows had invalid cells)" : ""));
+    throw InputError(errc::data_format,
+                     path + ": no data rows after the header" +
+                         (dropped ? " (all " + std::to_string(dropped) + " rows had invalid cells)" : ""),
+                     {.file = path});
   }
   for (std::size_t c = 0; c < names.size(); ++c) {
     data.add_column(names[c], Eigen::Map<const Eigen::VectorXd>(values[c].data(), static_cast<Eigen::Index>(values[c].size())));

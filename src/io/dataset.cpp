@@ -1,4 +1,5 @@
 #include "frictionlab/io/dataset.hpp"
+#include "frictionlab/error.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -13,7 +14,7 @@ void Dataset::add_column(const std::string& name, Eigen::VectorXd values) {
     std::ostringstream msg;
     msg << where() << "column '" << name << "' has " << values.size() << " samples; expected " << rows()
         << " like the other columns";
-    throw std::invalid_argument(msg.str());
+    throw InputError(errc::data_column_length, msg.str(), {.file = file, .column = name});
   }
   if (it != names_.end()) {
     columns_[static_cast<std::size_t>(it - names_.begin())] = std::move(values);
@@ -31,7 +32,7 @@ bool Dataset::has_column(const std::string& name) const {
 
 const Eigen::VectorXd& Dataset::column(const std::string& name) const {
   const auto it = std::find(names_.begin(), names_.end(), name);
-  if (it == names_.end()) throw std::invalid_argument(missing_column_message(name));
+  if (it == names_.end()) throw InputError(errc::data_column_missing, missing_column_message(name), {.file = file, .column = name});
   return columns_[static_cast<std::size_t>(it - names_.begin())];
 }
 

@@ -1,4 +1,5 @@
 #include "frictionlab/io/mat.hpp"
+#include "frictionlab/error.hpp"
 
 #include <libdeflate.h>
 #include <zlib.h>
@@ -421,7 +422,7 @@ std::string check_v5_streams(const std::string& path, const V5Walk& walk) {
 Dataset read_mat(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    throw std::invalid_argument(path + ": no such MAT file (or not a regular file)");
+    throw InputError(errc::data_file_unreadable, path + ": no such MAT file (or not a regular file)", {.file = path});
   }
   // Hash first: it also proves the file is readable.
   Dataset data;
@@ -434,7 +435,7 @@ Dataset read_mat(const std::string& path) {
     std::string msg = path + ": " + what;
     if (matio_messages != nullptr && !matio_messages->empty()) msg += " (matio: " + *matio_messages + ")";
     if (matio_messages != nullptr) g_matio_log.clear();
-    throw std::invalid_argument(msg);
+    throw InputError(errc::data_format, msg, {.file = path});
   };
 
   // The v5 structure and every compressed variable's stream are checked before matio opens the

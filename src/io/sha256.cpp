@@ -1,4 +1,5 @@
 #include "io/sha256.hpp"
+#include "frictionlab/error.hpp"
 
 #include <openssl/evp.h>
 
@@ -49,7 +50,7 @@ std::string sha256_hex(std::string_view bytes) {
 
 std::string sha256_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::invalid_argument(path + ": cannot open the file to compute its sha256");
+  if (!in) throw InputError(errc::data_file_unreadable, path + ": cannot open the file to compute its sha256", {.file = path});
   Sha256 s;
   std::vector<char> buf(1 << 16);
   while (in) {
@@ -57,7 +58,7 @@ std::string sha256_file(const std::string& path) {
     const std::streamsize got = in.gcount();
     if (got > 0) s.update(buf.data(), static_cast<std::size_t>(got));
   }
-  if (in.bad()) throw std::invalid_argument(path + ": read error while computing its sha256");
+  if (in.bad()) throw InputError(errc::data_file_unreadable, path + ": read error while computing its sha256", {.file = path});
   return s.hex();
 }
 

@@ -7,10 +7,21 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "frictionlab/error.hpp"
 #include "yaml_keys.hpp"
 
 namespace frictionlab {
 namespace {
+
+// The file and dotted key of a message prefix "FILE: section" (or "FILE"), plus `key`.
+ErrorFields where_fields(const std::string& where, const std::string& key = "") {
+  ErrorFields f;
+  const auto sep = where.find(": ");
+  f.file = sep == std::string::npos ? where : where.substr(0, sep);
+  const std::string section = sep == std::string::npos ? std::string() : where.substr(sep + 2);
+  f.key = section.empty() ? key : key.empty() ? section : section + "." + key;
+  return f;
+}
 
 // Adds `where: ` in front of a law's own message so the user learns the file and key.
 template <class F>
@@ -18,7 +29,12 @@ FrictionLaw with_context(const std::string& where, F&& make) {
   try {
     return make();
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(where + ": " + e.what());
+    ErrorFields f = error_fields(e);
+    const ErrorFields at = where_fields(where);
+    if (f.file.empty()) f.file = at.file;
+    if (f.key.empty()) f.key = at.key;
+    const std::string code = dynamic_cast<const InputError*>(&e) ? error_code(e) : std::string(errc::scenario_value);
+    throw InputError(code, where + ": " + e.what(), f);
   }
 }
 
@@ -26,19 +42,21 @@ FrictionLaw with_context(const std::string& where, F&& make) {
 
 FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
   if (!node || !node.IsMap())
-    throw std::invalid_argument(where + ": expected a mapping with 'law' and its parameters");
+    throw InputError(errc::scenario_value, where + ": expected a mapping with 'law' and its parameters", where_fields(where));
   detail::check_unique_keys(node, where);
   LawSpec spec;
   for (const auto& kv : node) {
     // A list, mapping or empty key or name would make yaml-cpp throw its own bad conversion.
     if (!kv.first.IsScalar())
-      throw std::invalid_argument(where + ": line " + std::to_string(kv.first.Mark().line + 1) +
-                                  ": expected a parameter name as key, got a list, mapping or empty key");
+      throw InputError(errc::scenario_key_unknown,
+                       where + ": line " + std::to_string(kv.first.Mark().line + 1) +
+                           ": expected a parameter name as key, got a list, mapping or empty key",
+                       where_fields(where));
     const std::string key = kv.first.as<std::string>();
     const YAML::Node& value = kv.second;
     const std::string here = where + "." + key;
     if ((key == "law" || key == "shape") && !value.IsScalar()) {
-      throw std::invalid_argument(here + ": expected a name");
+      throw InputError(errc::scenario_value, here + ": expected a name", where_fields(where, key));
     } else if (key == "law") {
       spec.name = value.as<std::string>();
     } else if (key == "shape") {
@@ -50,8 +68,10 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
           if (!value[i].IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
           list.push_back(value[i].as<double>());
         } catch (const YAML::Exception&) {
-          throw std::invalid_argument(here + "[" + std::to_string(i) + "]: expected a number, got '" +
-                                      (value[i].IsScalar() ? value[i].Scalar() : std::string("a list or mapping")) + "'");
+          const std::string got = value[i].IsScalar() ? value[i].Scalar() : std::string("a list or mapping");
+          ErrorFields f = where_fields(where, key + "[" + std::to_string(i) + "]");
+          f.value = got;
+          throw InputError(errc::scenario_value, here + "[" + std::to_string(i) + "]: expected a number, got '" + got + "'", f);
         }
       }
       spec.arrays[key] = std::move(list);
@@ -60,29 +80,34 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
         if (!value.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
         spec.scalars[key] = value.as<double>();
       } catch (const YAML::Exception&) {
-        throw std::invalid_argument(here + ": expected a number, got '" +
-                                    (value.IsScalar() ? value.Scalar() : std::string(value.IsNull() ? "nothing" : "a mapping")) + "'");
+        const std::string got = value.IsScalar() ? value.Scalar() : std::string(value.IsNull() ? "nothing" : "a mapping");
+        ErrorFields f = where_fields(where, key);
+        f.value = got;
+        throw InputError(errc::scenario_value, here + ": expected a number, got '" + got + "'", f);
       }
     }
   }
   if (spec.name.empty())
-    throw std::invalid_argument(where + ": missing 'law' (one of the friction law names, e.g. stribeck)");
+    throw InputError(errc::scenario_key_missing, where + ": missing 'law' (one of the friction law names, e.g. stribeck)",
+                     where_fields(where, "law"));
   return with_context(where, [&] { return FrictionLaw::from_spec(spec); });
 }
 
 FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
-  if (!j.is_object()) throw std::invalid_argument(where + ": expected a JSON object describing a friction law");
+  if (!j.is_object()) {
+    throw InputError(errc::scenario_value, where + ": expected a JSON object describing a friction law", where_fields(where));
+  }
   LawSpec spec;
   if (j.contains("law") && j["law"].is_object()) return law_from_json(j["law"], where + ": law");  // MODEL.json
   const nlohmann::json* params = &j;
   if (j.contains("model") && j.contains("parameters")) {  // MODEL.json written by identify
-    if (!j["model"].is_string()) throw std::invalid_argument(where + ": 'model' must be a law name");
+    if (!j["model"].is_string()) throw InputError(errc::scenario_value, where + ": 'model' must be a law name", where_fields(where, "model"));
     spec.name = j["model"].get<std::string>();
     params = &j["parameters"];
   } else if (j.contains("law") && j["law"].is_string()) {
     spec.name = j["law"].get<std::string>();
   } else {
-    throw std::invalid_argument(where + ": missing 'law' (or 'model' with 'parameters')");
+    throw InputError(errc::scenario_key_missing, where + ": missing 'law' (or 'model' with 'parameters')", where_fields(where, "law"));
   }
   for (const auto& [key, value] : params->items()) {
     if (key == "law" || key == "M" || key == "offset") continue;  // M and offset belong to the plant, not the law
@@ -97,12 +122,14 @@ FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
       std::vector<double> list;
       for (std::size_t i = 0; i < value.size(); ++i) {
         if (!value[i].is_number())
-          throw std::invalid_argument(here + "[" + std::to_string(i) + "]: expected a number, got " + value[i].dump());
+          throw InputError(errc::scenario_value, here + "[" + std::to_string(i) + "]: expected a number, got " + value[i].dump(),
+                           where_fields(where, key + "[" + std::to_string(i) + "]"));
         list.push_back(value[i].get<double>());
       }
       spec.arrays[key] = std::move(list);
     } else {
-      throw std::invalid_argument(here + ": expected a number (or {\"value\": number}), got " + value.dump());
+      throw InputError(errc::scenario_value, here + ": expected a number (or {\"value\": number}), got " + value.dump(),
+                       where_fields(where, key));
     }
   }
   return with_context(where, [&] { return FrictionLaw::from_spec(spec); });
@@ -111,24 +138,33 @@ FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
 nlohmann::json read_model_json(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    throw std::invalid_argument(path + " is a directory; expected a JSON model file (MODEL.json of frictionlab identify --json)");
+    throw InputError(errc::scenario_format,
+                     path + " is a directory; expected a JSON model file (MODEL.json of frictionlab identify --json)",
+                     {.file = path});
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::invalid_argument(path + ": cannot open the model file");
+  if (!in) throw InputError(errc::scenario_format, path + ": cannot open the model file", {.file = path});
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);  // strict: the object must end the file
   } catch (const nlohmann::json::exception& e) {
-    throw std::invalid_argument(path + ": not valid JSON (" + e.what() + ")");
+    throw InputError(errc::scenario_format, path + ": not valid JSON (" + e.what() + ")", {.file = path});
   }
-  if (!j.is_object()) throw std::invalid_argument(path + ": expected a JSON object (a friction law or MODEL.json)");
+  if (!j.is_object()) {
+    throw InputError(errc::scenario_format, path + ": expected a JSON object (a friction law or MODEL.json)", {.file = path});
+  }
   if (j.contains("status")) {
     const auto& st = j["status"];
-    if (!st.is_string()) throw std::invalid_argument(path + ": status: expected \"ok\" or \"error\", got " + st.dump());
+    if (!st.is_string()) {
+      throw InputError(errc::scenario_value, path + ": status: expected \"ok\" or \"error\", got " + st.dump(),
+                       {.file = path, .key = "status", .value = st.dump()});
+    }
     if (st.get<std::string>() != "ok") {
       std::string why;
       if (j.contains("message") && j["message"].is_string()) why = j["message"].get<std::string>();
-      throw std::invalid_argument(path + ": the identification failed (status " + st.dump() + (why.empty() ? "" : ": " + why) +
-                                  "); it holds no model to use");
+      throw InputError(errc::scenario_value,
+                       path + ": the identification failed (status " + st.dump() + (why.empty() ? "" : ": " + why) +
+                           "); it holds no model to use",
+                       {.file = path, .key = "status", .value = st.get<std::string>()});
     }
   }
   return j;
@@ -138,12 +174,13 @@ FrictionLaw load_law(const std::string& path) {
   const bool is_json = path.size() >= 5 && path.substr(path.size() - 5) == ".json";
   if (is_json) return law_from_json(read_model_json(path), path);
   std::ifstream in(path);
-  if (!in) throw std::invalid_argument(path + ": cannot open the friction law file");
+  if (!in) throw InputError(errc::scenario_format, path + ": cannot open the friction law file", {.file = path});
   YAML::Node node;
   try {
     node = YAML::Load(in);
   } catch (const YAML::Exception& e) {
-    throw std::invalid_argument(path + ": not valid YAML (" + e.what() + ")");
+    throw InputError(errc::scenario_format, path + ": not valid YAML (" + e.what() + ")",
+                     {.file = path, .row = static_cast<std::size_t>(e.mark.line + 1)});
   }
   detail::check_unique_keys(node, path);
   if (node.IsMap() && node["friction"]) return law_from_yaml(node["friction"], path + ": friction");
@@ -165,8 +202,9 @@ std::optional<double> model_inertia(const nlohmann::json& j, const std::string& 
   const auto& p = j["parameters"]["M"];
   const auto& v = p.is_object() ? p.value("value", nlohmann::json()) : p;
   if (!v.is_number())
-    throw std::invalid_argument(path + ": parameters.M: expected the identified inertia, a number (kg or kg m^2), got " +
-                                v.dump());
+    throw InputError(errc::scenario_value,
+                     path + ": parameters.M: expected the identified inertia, a number (kg or kg m^2), got " + v.dump(),
+                     {.file = path, .key = "parameters.M", .value = v.dump()});
   return v.get<double>();
 }
 

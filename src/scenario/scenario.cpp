@@ -18,6 +18,7 @@
 #include <stdexcept>
 
 #include "frictionlab/control/compensation_spec.hpp"
+#include "frictionlab/error.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/scenario/model_file.hpp"
@@ -37,6 +38,17 @@
 namespace frictionlab {
 namespace {
 
+// The file and dotted key of a message prefix "FILE: section.key" (a prefix without ": " is a
+// file name alone), for the fields of an InputError.
+ErrorFields key_fields(const std::string& where, const std::string& key = "") {
+  ErrorFields f;
+  const auto sep = where.find(": ");
+  f.file = sep == std::string::npos ? where : where.substr(0, sep);
+  const std::string section = sep == std::string::npos ? std::string() : where.substr(sep + 2);
+  f.key = section.empty() ? key : key.empty() ? section : section + "." + key;
+  return f;
+}
+
 std::string join(std::initializer_list<const char*> names) {
   std::string out;
   for (const char* n : names) out += (out.empty() ? "" : ", ") + std::string(n);
@@ -48,11 +60,17 @@ std::string join(std::initializer_list<const char*> names) {
 class Section {
  public:
   Section(const YAML::Node& node, std::string path) : node_(node), path_(std::move(path)) {
-    if (!node_.IsMap()) throw std::invalid_argument(path_ + ": expected a mapping of keys to values");
+    if (!node_.IsMap()) throw InputError(errc::scenario_value, path_ + ": expected a mapping of keys to values", key_fields(path_));
   }
 
   const std::string& path() const { return path_; }
   std::string at(const std::string& key) const { return path_ + "." + key; }
+  // The fields of an error at `key` (file and dotted key).
+  ErrorFields fields(const std::string& key, const std::string& value = "") const {
+    ErrorFields f = key_fields(path_, key);
+    f.value = value;
+    return f;
+  }
 
   // Rejects keys outside `allowed`, naming the key and listing the valid ones.
   void allow(std::initializer_list<const char*> allowed) const {
@@ -60,11 +78,14 @@ class Section {
     for (const char* a : allowed) ok.insert(a);
     for (const auto& kv : node_) {
       if (!kv.first.IsScalar())  // yaml-cpp would throw its own bad conversion
-        throw std::invalid_argument(path_ + ": line " + std::to_string(kv.first.Mark().line + 1) +
-                                    ": expected a field name as key, got a list, mapping or empty key; valid fields: " + join(allowed));
+        throw InputError(errc::scenario_key_unknown,
+                         path_ + ": line " + std::to_string(kv.first.Mark().line + 1) +
+                             ": expected a field name as key, got a list, mapping or empty key; valid fields: " + join(allowed),
+                         key_fields(path_));
       const std::string key = kv.first.as<std::string>();
       if (!ok.count(key))
-        throw std::invalid_argument(at(key) + ": unknown field '" + key + "'; valid fields: " + join(allowed));
+        throw InputError(errc::scenario_key_unknown, at(key) + ": unknown field '" + key + "'; valid fields: " + join(allowed),
+                         fields(key));
     }
   }
 
@@ -78,34 +99,40 @@ class Section {
 
   double number(const std::string& key) const {
     const YAML::Node v = node_[key];
-    if (!v) throw std::invalid_argument(path_ + ": missing '" + key + "' (a number)");
-    return to_number(v, at(key));
+    if (!v) throw InputError(errc::scenario_key_missing, path_ + ": missing '" + key + "' (a number)", fields(key));
+    return to_number(v, at(key), fields(key));
   }
   double number(const std::string& key, double fallback) const { return has(key) ? number(key) : fallback; }
 
   std::string text(const std::string& key, const std::string& fallback) const {
     const YAML::Node v = node_[key];
     if (!v) return fallback;
-    if (!v.IsScalar()) throw std::invalid_argument(at(key) + ": expected a name");
+    if (!v.IsScalar()) throw InputError(errc::scenario_value, at(key) + ": expected a name", fields(key));
     return v.as<std::string>();
   }
 
   std::vector<double> numbers(const std::string& key) const {
     const YAML::Node v = node_[key];
-    if (!v) throw std::invalid_argument(path_ + ": missing '" + key + "' (a list of numbers)");
-    if (!v.IsSequence()) throw std::invalid_argument(at(key) + ": expected a list of numbers, e.g. [0, 1, 2]");
+    if (!v) throw InputError(errc::scenario_key_missing, path_ + ": missing '" + key + "' (a list of numbers)", fields(key));
+    if (!v.IsSequence()) {
+      throw InputError(errc::scenario_value, at(key) + ": expected a list of numbers, e.g. [0, 1, 2]", fields(key));
+    }
     std::vector<double> out;
-    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(to_number(v[i], at(key) + "[" + std::to_string(i) + "]"));
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      out.push_back(to_number(v[i], at(key) + "[" + std::to_string(i) + "]", fields(key + "[" + std::to_string(i) + "]")));
+    }
     return out;
   }
 
-  static double to_number(const YAML::Node& v, const std::string& where) {
-    if (!v.IsScalar()) throw std::invalid_argument(where + ": expected a number");
+  static double to_number(const YAML::Node& v, const std::string& where, ErrorFields fields = {}) {
+    if (fields.file.empty() && fields.key.empty()) fields = key_fields(where);
+    if (!v.IsScalar()) throw InputError(errc::scenario_value, where + ": expected a number", fields);
     const std::string s = v.as<std::string>();
     try {
       return v.as<double>();
     } catch (const YAML::Exception&) {
-      throw std::invalid_argument(where + ": expected a number, got '" + s + "'");
+      fields.value = s;
+      throw InputError(errc::scenario_value, where + ": expected a number, got '" + s + "'", fields);
     }
   }
 
@@ -114,13 +141,19 @@ class Section {
   std::string path_;
 };
 
-// Wraps a constructor's own message ("axis: M = 0 must be > 0") with the file and key path.
+// Wraps a constructor's own message ("axis: M = 0 must be > 0") with the file and key path
+// (keeping the code of an InputError; others are scenario.value, a value the model refused).
 template <class F>
 auto with_context(const std::string& where, F&& make) {
   try {
     return make();
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(where + ": " + e.what());
+    ErrorFields f = error_fields(e);
+    const ErrorFields at = key_fields(where);
+    if (f.file.empty()) f.file = at.file;
+    if (f.key.empty()) f.key = at.key;
+    const std::string code = dynamic_cast<const InputError*>(&e) ? error_code(e) : std::string(errc::scenario_value);
+    throw InputError(code, where + ": " + e.what(), f);
   }
 }
 
@@ -135,8 +168,9 @@ T choose(const Section& s, const std::string& key, const std::string& fallback, 
     if (name == n) return value;
   std::string valid;
   for (const auto& c : choices) valid += (valid.empty() ? "" : ", ") + std::string(c.first);
-  throw std::invalid_argument(s.at(key) + ": unknown " + what + " '" + name + "'; valid" + (plural.empty() ? "" : " " + plural) +
-                              ": " + valid);
+  throw InputError(errc::scenario_value,
+                   s.at(key) + ": unknown " + what + " '" + name + "'; valid" + (plural.empty() ? "" : " " + plural) + ": " + valid,
+                   s.fields(key, name));
 }
 
 // The names of a reader table, in order, for messages.
@@ -151,7 +185,11 @@ std::string names_of(const Entry (&table)[N]) {
 // (each read once), resolved from the scenario's directory.
 class DataSource {
  public:
-  DataSource(const ScenarioOptions& o, std::string default_file) : o_(o), default_file_(std::move(default_file)) {}
+  DataSource(const ScenarioOptions& o, std::string default_file) : o_(o), default_file_(std::move(default_file)) {
+    // The top-level data file is an input of the run even when no section reads it (or the
+    // caller's data set replaces it).
+    if (o_.files_read && !default_file_.empty()) o_.files_read->push_back(resolve(default_file_));
+  }
 
   // The data set of a section: options.data, else the section's `file`, else the top-level one.
   // Null when there is none (the caller decides whether that is an error).
@@ -159,10 +197,12 @@ class DataSource {
     if (o_.data) return o_.data;
     const std::string name = file.empty() ? default_file_ : file;
     if (name.empty()) return nullptr;
-    std::filesystem::path path(name);
-    if (path.is_relative() && !o_.base_dir.empty()) path = std::filesystem::path(o_.base_dir) / path;
+    const std::filesystem::path path(resolve(name));
     auto& slot = cache_[path.string()];
-    if (!slot) slot = std::make_shared<const Dataset>(load_dataset(path.string()));
+    if (!slot) {
+      if (o_.files_read) o_.files_read->push_back(path.string());
+      slot = std::make_shared<const Dataset>(load_dataset(path.string()));
+    }
     return slot;
   }
 
@@ -180,6 +220,12 @@ class DataSource {
       throw std::invalid_argument(s.at(key) + ": '" + name +
                                   "' is not a number, and the scenario names no data file to read a scalar from (top-level 'data')");
     return with_context(s.at(key), [&] { return resolve_constant(*d, name, key); });
+  }
+
+  std::string resolve(const std::string& name) const {
+    std::filesystem::path path(name);
+    if (path.is_relative() && !o_.base_dir.empty()) path = std::filesystem::path(o_.base_dir) / path;
+    return path.string();
   }
 
   std::optional<double> data_step;  // s: step of the data input's grid, when there is one
@@ -210,6 +256,7 @@ struct PlantContext {
 // the inertia of the body (kg or kg m^2, the disturbance observer's default).
 struct CompensationContext {
   std::string base_dir;
+  std::vector<std::string>* files_read = nullptr;  // ScenarioOptions::files_read
   std::function<FrictionLaw()> law;
   double inertia = 0.0;
 };
@@ -271,6 +318,7 @@ std::shared_ptr<const Compensator> read_compensation(const Section& s, const Com
   if (s.has("model")) {
     std::filesystem::path path(s.text("model", ""));
     if (path.is_relative() && !ctx.base_dir.empty()) path = std::filesystem::path(ctx.base_dir) / path;
+    if (ctx.files_read) ctx.files_read->push_back(path.string());
     const ModelFile m = with_context(s.at("model"), [&] { return read_model_file(path.string()); });
     law = m.law;
     law_key = "model";
@@ -411,6 +459,7 @@ XyAxis read_xy_axis(const Section& s, const std::string& name, const PidParams& 
   if (own || shared) {
     CompensationContext cc;
     cc.base_dir = ctx.base_dir;
+    cc.files_read = ctx.options ? ctx.options->files_read : nullptr;
     cc.law = a.law ? std::function<FrictionLaw()>([law = *a.law] { return law; }) : ctx.fallback;
     cc.inertia = with_context(s.path(), [&] { return a.equivalent_mass(); });
     a.compensator = own ? read_compensation(Section(own, s.at("compensation")), cc) : read_compensation(*shared, cc);
@@ -795,7 +844,7 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
   top.allow({"description", "data", "plant", "friction", "input", "controller", "duration", "output_rate", "solver",
              "initial"});
   auto section = [&](const char* key) {
-    if (!top.has(key)) throw std::invalid_argument(where + ": missing '" + key + "'");
+    if (!top.has(key)) throw InputError(errc::scenario_key_missing, where + ": missing '" + key + "'", key_fields(where, key));
     return Section(root[key], where + ": " + key);
   };
   DataSource src(options, top.text("data", ""));
@@ -840,6 +889,7 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
     const Section cs = section("controller");
     CompensationContext cc;
     cc.base_dir = options.base_dir;
+    cc.files_read = options.files_read;
     cc.law = [&] { return sc.law; };
     sc.plant = choose(cs, "type", "pid", kControllerReaders, "controller type", "")(cs, src, sc.plant, cc);
   }
@@ -953,17 +1003,19 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
 Scenario load_scenario(const std::string& path, const ScenarioOptions& options) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    throw std::invalid_argument(path + " is a directory; expected a scenario YAML file");
+    throw InputError(errc::scenario_format, path + " is a directory; expected a scenario YAML file", {.file = path});
   std::ifstream file(path);
-  if (!file) throw std::invalid_argument(path + ": cannot open the scenario file");
+  if (!file) throw InputError(errc::scenario_format, path + ": cannot open the scenario file", {.file = path});
   YAML::Node root;
   try {
     root = YAML::Load(file);
   } catch (const YAML::ParserException& e) {
-    throw std::invalid_argument(path + ": not valid YAML at line " + std::to_string(e.mark.line + 1) + ", column " +
-                                std::to_string(e.mark.column + 1) + ": " + e.msg);
+    throw InputError(errc::scenario_format,
+                     path + ": not valid YAML at line " + std::to_string(e.mark.line + 1) + ", column " +
+                         std::to_string(e.mark.column + 1) + ": " + e.msg,
+                     {.file = path, .row = static_cast<std::size_t>(e.mark.line + 1)});
   }
-  if (!root || root.IsNull()) throw std::invalid_argument(path + ": empty scenario file");
+  if (!root || root.IsNull()) throw InputError(errc::scenario_format, path + ": empty scenario file", {.file = path});
   ScenarioOptions o = options;
   if (o.base_dir.empty()) o.base_dir = std::filesystem::path(path).parent_path().string();
   return scenario_from_yaml(root, path, o);

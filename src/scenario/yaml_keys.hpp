@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "frictionlab/error.hpp"
+
 namespace frictionlab::detail {
 
 /// Refuses a mapping that gives a key twice (`k: 2.0` then `k: 3.0`), anywhere in the document:
@@ -24,22 +26,28 @@ inline void check_unique_keys(const YAML::Node& node, const std::string& where) 
   for (const auto& kv : node) {
     const int line = kv.first.Mark().line + 1;
     if (!kv.first.IsScalar())
-      throw std::invalid_argument(where + ": line " + std::to_string(line) + ": a key must be a name, not a list or mapping");
+      throw InputError(errc::scenario_key_unknown, where + ": line " + std::to_string(line) + ": a key must be a name, not a list or mapping",
+                       {.file = where.substr(0, where.find(": ")), .row = static_cast<std::size_t>(line)});
     const std::string key = kv.first.Scalar();
     const auto [it, fresh] = seen.emplace(key, line);
     if (!fresh)
-      throw std::invalid_argument(where + ": line " + std::to_string(line) + ": key '" + key + "' given twice (first on line " +
-                                  std::to_string(it->second) + "); give each key once");
+      throw InputError(errc::scenario_key_duplicate,
+                       where + ": line " + std::to_string(line) + ": key '" + key + "' given twice (first on line " +
+                           std::to_string(it->second) + "); give each key once",
+                       {.file = where.substr(0, where.find(": ")), .row = static_cast<std::size_t>(line), .key = key});
     check_unique_keys(kv.second, where);
   }
 }
 
 /// "WHERE: line L, column C: MESSAGE" for an exception yaml-cpp raised while a node was read
 /// (a value of the wrong kind where the reader asked for one).
-inline std::invalid_argument yaml_error(const std::string& where, const YAML::Exception& e) {
-  if (e.mark.is_null()) return std::invalid_argument(where + ": " + e.msg);
-  return std::invalid_argument(where + ": line " + std::to_string(e.mark.line + 1) + ", column " +
-                               std::to_string(e.mark.column + 1) + ": " + e.msg);
+inline InputError yaml_error(const std::string& where, const YAML::Exception& e) {
+  const std::string file = where.substr(0, where.find(": "));
+  if (e.mark.is_null()) return InputError(errc::scenario_value, where + ": " + e.msg, {.file = file});
+  return InputError(errc::scenario_value,
+                    where + ": line " + std::to_string(e.mark.line + 1) + ", column " + std::to_string(e.mark.column + 1) +
+                        ": " + e.msg,
+                    {.file = file, .row = static_cast<std::size_t>(e.mark.line + 1)});
 }
 
 }  // namespace frictionlab::detail

@@ -84,6 +84,7 @@
 #include <optional>
 
 #include <string>
+#include <vector>
 
 #include "frictionlab/io/dataset.hpp"
 #include "frictionlab/plants/axis.hpp"
@@ -123,6 +124,10 @@ struct ScenarioOptions {
   /// Where `law` and `axis` (or `axis_models`) came from (MODEL.json): an invalid inertia or offset is blamed on
   /// this file, not on the scenario. Empty: on the scenario's plant section.
   std::string model_source;
+  /// When set, the files the scenario names are appended here as they are read (its data
+  /// files, its compensations' model files; paths resolved from base_dir), so that a caller can
+  /// keep its outputs from replacing them. Not owned.
+  std::vector<std::string>* files_read = nullptr;
 };
 
 /// Reads a scenario from a parsed YAML mapping. `where` prefixes every message (the file name).

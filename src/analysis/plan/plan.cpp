@@ -1,3 +1,4 @@
+#include "frictionlab/io/json_text.hpp"
 #include "frictionlab/analysis/plan/plan.hpp"
 
 #include <algorithm>
@@ -167,7 +168,7 @@ std::string plan_to_json(const PlanResult& r, const PlanOptions& o, const std::s
   j["prediction"] = pred;
   j["undetermined"] = r.undetermined;
   j["warnings"] = r.warnings;
-  return j.dump(indent);
+  return json_text(j, indent);
 }
 
 }  // namespace frictionlab
