@@ -71,7 +71,7 @@ PATH_CALLS = {"analyze_map": "scenario", "load": "path", "load_law": "path", "sh
 OTHER_CALLS = {"plan"}
 # Public names that take no array: result and option classes (made by the package or with no
 # arguments), the version, the lists of law names and of methods. FrictionLaw's dict is tested on its own below.
-NO_ARRAYS = {"ArgumentTypeError", "BreakawayOptions", "ContourResult", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
+NO_ARRAYS = {"ArgumentTypeError", "Error", "BreakawayOptions", "ContourResult", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
              "FitFigures", "IdimOptions", "Parameter", "Result", "StaticFit", "StaticFitOptions", "StickSlipOptions",
              "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__", "law_names", "methods", "Data",
              "Scenario", "FrictionLaw"}
