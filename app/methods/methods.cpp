@@ -67,7 +67,8 @@ GivenOptions add_table_options(CLI::App* cmd, const MethodInfo& info) {
   struct Flag {
     const OptionSpec* spec;
     CLI::Option* opt;
-    std::shared_ptr<std::vector<std::string>> texts = std::make_shared<std::vector<std::string>>();
+    std::shared_ptr<std::vector<std::string>> texts = std::make_shared<std::vector<std::string>>();  // repeatable
+    std::shared_ptr<std::string> text = std::make_shared<std::string>();  // one value
     std::shared_ptr<bool> on = std::make_shared<bool>(false);
   };
   auto flags = std::make_shared<std::vector<Flag>>();
@@ -79,7 +80,7 @@ GivenOptions add_table_options(CLI::App* cmd, const MethodInfo& info) {
     } else if (o.repeatable) {
       f.opt = cmd->add_option(name, *f.texts, option_help(o))->type_name(type_name(o));
     } else {
-      f.opt = cmd->add_option(name, *f.texts, option_help(o))->expected(1)->type_name(type_name(o));
+      f.opt = cmd->add_option(name, *f.text, option_help(o))->type_name(type_name(o));
     }
     if (o.required) f.opt->required();
     flags->push_back(f);
@@ -90,6 +91,7 @@ GivenOptions add_table_options(CLI::App* cmd, const MethodInfo& info) {
       if (f.opt->count() == 0) continue;
       const std::string spelled = "--" + f.spec->name;
       if (f.spec->type == OptionType::flag) values.set(f.spec->name, *f.on, spelled);
+      else if (!f.spec->repeatable) values.set(f.spec->name, parse_option(*f.spec, *f.text, spelled), spelled);
       else
         for (const std::string& text : *f.texts) values.set(f.spec->name, parse_option(*f.spec, text, spelled), spelled);
     }

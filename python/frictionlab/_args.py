@@ -39,12 +39,13 @@ def _option_table(method):
     raise ValueError(f"identification method '{method}' is not known")
 
 
-def _method_options(method, function, options):
+def _method_options(method, function, options, stacklevel=3):
     """The keyword options of a method function, checked against its option table.
 
     ``options`` holds the keywords as the caller wrote them. A former keyword (the table's
     ``deprecated``) still works, with a DeprecationWarning naming the keyword that replaces it (the
-    command line's flag name); an unknown keyword, the same option twice or a required one missing
+    command line's flag name), pointing at the user's call ``stacklevel`` frames up; an unknown
+    keyword, the same option twice or a required one missing
     is a TypeError, as Python's own for a function's keywords. Returns (values, inputs): the
     checked OptionValues of the plain options (bad values raise ValueError naming the option), and
     {keyword: value} of the column and file options (arrays, laws, dicts) that the wrapper passes
@@ -63,7 +64,7 @@ def _method_options(method, function, options):
                             f"{', '.join(x['keyword'] for x in table)}")
         if keyword != o["keyword"]:
             warnings.warn(f"{function}: keyword '{keyword}' is deprecated; use '{o['keyword']}' (the command line's "
-                          f"--{o['name']})", DeprecationWarning, stacklevel=3)
+                          f"--{o['name']})", DeprecationWarning, stacklevel=stacklevel)
         if o["keyword"] in seen:
             raise TypeError(f"{function}() got the option '{o['keyword']}' twice (as '{seen[o['keyword']]}' and "
                             f"'{keyword}')")

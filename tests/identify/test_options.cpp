@@ -141,7 +141,7 @@ TEST(Options, ChecksNameTheOptionTheValueAndWhatWasExpected) {
   EXPECT_EQ(error_of([&] { check_option(*idim.option("decimate"), 0LL, "idim: decimation"); }),
             "idim: decimation = 0 must be >= 1");
   EXPECT_EQ(error_of([&] { check_option(*idim.option("decimate"), 2.5, "idim: decimate"); }),
-            "idim: decimate '2.5': expected an integer >= 1");
+            "idim: decimate 2.5: expected an integer >= 1");
   EXPECT_EQ(error_of([&] { check_option(*idim.option("from"), std::string("force"), "--from"); }),
             "--from 'force': expected position or velocity");
   OptionValues v = sweep.values();

@@ -94,7 +94,7 @@ def test_values_are_checked_by_the_table():
         fl.identify_idim(t, f, position=v, vs="fast")
     with pytest.raises(ValueError, match="idim: delay = -1 must be >= 0"):
         fl.identify_idim(t, f, position=v, delay=-1)
-    with pytest.raises(ValueError, match="breakaway: edge_samples '2.5': expected an integer >= 0"):
+    with pytest.raises(ValueError, match="breakaway: edge_samples 2.5: expected an integer >= 0"):
         fl.identify_breakaway(t, f, v, edge_samples=2.5)
 
 

@@ -12,7 +12,7 @@ def _idim_options(function, options, time=None):
     taken from its sample rate (idim_rate_defaults), and marked so in the result."""
     options = dict(options)
     axis = options.pop("axis", "linear")
-    values, inputs = _method_options("idim", function, options)
+    values, inputs = _method_options("idim", function, options, stacklevel=4)
     o = _core._make_idim_options(values)
     o.axis = axis
     given = {k: values.given(k) for k in ("cutoff", "skip", "decimate")}

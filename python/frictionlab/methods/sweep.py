@@ -16,7 +16,7 @@ def _segments(windows):
 
 def _sweep_options(function, axis, options):
     options = {k: (_segments(v) if k in ("segment", "windows") else v) for k, v in options.items()}
-    values, inputs = _method_options("sweep", function, options)
+    values, inputs = _method_options("sweep", function, options, stacklevel=4)
     o = _core._make_sweep_options(values)
     if inputs.get("reference") is not None:
         o.reference = np.asarray(inputs["reference"], dtype=float)
