@@ -86,15 +86,15 @@ def test_unknown_twice_and_missing_keywords_are_type_errors():
 
 def test_values_are_checked_by_the_table():
     t, f, v = sweep_record()
-    with pytest.raises(ValueError, match=r"sweep: min_duration = -1 must be > 0 \(s\)"):
+    with pytest.raises(ValueError, match=r"sweep: min_duration \(--min-duration\) = -1 must be > 0 \(s\)"):
         fl.identify_sweep(t, f, v, min_duration=-1)
-    with pytest.raises(ValueError, match="sweep: settle_fraction = 1 must be >= 0 and < 1"):
+    with pytest.raises(ValueError, match="sweep: settle_fraction \\(--settle-fraction\\) = 1 must be >= 0 and < 1"):
         fl.identify_sweep(t, f, v, settle_fraction=1)
-    with pytest.raises(ValueError, match=r"idim: vs 'fast': expected a Stribeck velocity \(m/s or rad/s\) or 'search'"):
+    with pytest.raises(ValueError, match=r"idim: vs \(--vs\) 'fast': expected a Stribeck velocity \(m/s or rad/s\) or 'search'"):
         fl.identify_idim(t, f, position=v, vs="fast")
-    with pytest.raises(ValueError, match="idim: delay = -1 must be >= 0"):
+    with pytest.raises(ValueError, match=r"idim: delay \(--delay\) = -1 must be >= 0"):
         fl.identify_idim(t, f, position=v, delay=-1)
-    with pytest.raises(ValueError, match="breakaway: edge_samples 2.5: expected an integer >= 0"):
+    with pytest.raises(ValueError, match=r"breakaway: edge_samples \(--edge-samples\) 2.5: expected an integer >= 0"):
         fl.identify_breakaway(t, f, v, edge_samples=2.5)
 
 

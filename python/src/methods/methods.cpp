@@ -62,7 +62,10 @@ OptionValues option_values(const MethodInfo& method, const py::dict& keywords) {
       throw std::invalid_argument(method.name + ": no option '" + keyword + "'; expected one of " + names);
     }
     if (v.is_none()) continue;
-    const std::string spelled = method.name + ": " + keyword;
+    // Named as the caller wrote it; a number under the table's keyword also by its command-line flag.
+    const bool number = spec->type == OptionType::number || spec->type == OptionType::integer;
+    const std::string spelled =
+        method.name + ": " + keyword + (number && keyword == spec->keyword() ? " (--" + spec->name + ")" : "");
     const OptionValue value = python_value(v, spelled);
     // Text for a list or a number is read as the command line reads it ("a,b"; a number's words).
     if (const auto* text = std::get_if<std::string>(&value); text && spec->type == OptionType::list)
