@@ -159,6 +159,97 @@ void contour_diagnostics(Result& r, const ContourResult& c) {
   r.json_sections["diagnostics"] = json_text(d);
 }
 
+// analyze envelope: its figures under "result", its figure and text; false when the record cannot
+// give an answer (r then holds the error).
+bool run_envelope(const AnalyzeArgs& a, const Dataset& d, const std::vector<double>& t, const std::string& name, Result& r,
+                  std::vector<ReportFigure>& figures, std::string& text) {
+  const std::vector<double> x = column(d, a.position, "--position");
+  EnvelopeResult e;
+  try {
+    e = decay_envelope(t, x);
+  } catch (const std::invalid_argument& ex) {
+    throw std::invalid_argument(d.where() + ex.what());
+  }
+  r.json_sections["result"] = json_text(envelope_json(e));
+  if (!a.output.plot.empty()) figures.push_back({"fit", "", envelope_figure(t, x, e, name)});
+  text = envelope_text(e);
+  return true;
+}
+
+// analyze contour: its figures under "result", its figure and text; false when the record cannot
+// give an answer (r then holds the error).
+bool run_contour(const AnalyzeArgs& a, const Dataset& d, const std::vector<double>& t, const std::string& name, Result& r,
+                 std::vector<ReportFigure>& figures, std::string& text) {
+  const std::vector<double> x = column(d, a.x, "--x"), y = column(d, a.y, "--y");
+  // The reference is optional by default; asked for by name, it must be there.
+  const bool asked = a.x_reference_opt->count() > 0 || a.y_reference_opt->count() > 0;
+  std::vector<double> xr, yr;
+  if (asked || (d.has_column(a.x_reference) && d.has_column(a.y_reference))) {
+    xr = column(d, a.x_reference, "--x-reference");
+    yr = column(d, a.y_reference, "--y-reference");
+  }
+  ContourOptions o;
+  if (!a.centre.empty()) o.centre = std::array<double, 2>{a.centre[0], a.centre[1]};
+  o.radius = a.radius;
+  ContourResult c;
+  try {
+    c = analyze_contour(t, x, y, xr, yr, o);
+  } catch (const std::invalid_argument& ex) {
+    throw std::invalid_argument(d.where() + ex.what());
+  }
+  r.json_sections["result"] = contour_json(c);
+  contour_diagnostics(r, c);
+  if (!a.output.plot.empty()) figures.push_back({"fit", "", contour_figure(t, c, name)});
+  text = contour_text(c);
+  return true;
+}
+
+// analyze stick-slip: its figures under "result", its figure and text; false when the record cannot
+// give an answer (r then holds the error).
+bool run_stick_slip(const AnalyzeArgs& a, const Dataset& d, const std::vector<double>& t, const std::string& name, Result& r,
+                    std::vector<ReportFigure>& figures, std::string& text) {
+  const std::vector<double> v = column(d, a.velocity, "--velocity");
+  std::vector<double> f;
+  if (d.has_column(a.force)) f = column(d, a.force, "--force");
+  StickSlipOptions o;
+  o.velocity_threshold = a.threshold;
+  StickSlipResult ss;
+  try {
+    ss = detect_stick_slip(t, v, f, o);
+  } catch (const std::invalid_argument& ex) {
+    throw std::invalid_argument(d.where() + ex.what());
+  }
+  if (!ss.found()) {  // data that cannot give an answer: exit 2, with the JSON if asked for
+    r.status = ResultStatus::error;
+    r.message = d.where() + ss.message;
+    return false;
+  }
+  r.json_sections["result"] = json_text(stick_slip_json(ss));
+  if (!a.output.plot.empty()) figures.push_back({"fit", "", stick_slip_figure(t, v, f, ss, name)});
+  text = stick_slip_text(ss, !f.empty());
+  return true;
+}
+
+/// One kind of `frictionlab analyze`: its name (the positional argument) and what runs it on a
+/// record (map is its own command: a scenario, not a record, see map_command.hpp).
+struct AnalyzeKind {
+  std::string name;
+  bool (*run)(const AnalyzeArgs& a, const Dataset& d, const std::vector<double>& t, const std::string& name, Result& r,
+              std::vector<ReportFigure>& figures, std::string& text);
+};
+
+/// The analyze kinds that read a record, in the order of the help: one line each.
+const std::vector<AnalyzeKind>& analyze_kinds() {
+  static const std::vector<AnalyzeKind> kinds = {
+      {"envelope", run_envelope},
+      {"stick-slip", run_stick_slip},
+      {"contour", run_contour},
+  };
+  return kinds;
+}
+
+constexpr const char* kMap = "map";  // analyze map: a scenario over a grid (map_command.hpp)
+
 }  // namespace
 
 Handler register_analyze(CLI::App& app) {
@@ -173,7 +264,12 @@ Handler register_analyze(CLI::App& app) {
                   "slips), contour (a two-axis circular test: radial error, quadrant glitches, roundness) or map (DATA is a "
                   "scenario file: see the Map options)")
       ->required()
-      ->check(CLI::IsMember({"envelope", "stick-slip", "contour", "map"}));
+      ->check(CLI::IsMember([] {
+        std::vector<std::string> names;
+        for (const auto& k : analyze_kinds()) names.push_back(k.name);
+        names.push_back(kMap);
+        return names;
+      }()));
   cmd->add_option("data", a->data,
                   "CSV file, with a header row (the output of `frictionlab simulate` works) or without one (see "
                   "--names), or .mat")
@@ -206,7 +302,7 @@ Handler register_analyze(CLI::App& app) {
   a->output.command = cmd;
   register_json_output(cmd, json, [a] { return a->method.empty() ? std::string("analyze") : a->method; });
   return [a]() -> int {
-    if (a->method == "map") return run_map_command(a->data, a->map, a->output);
+    if (a->method == kMap) return run_map_command(a->data, a->map, a->output);
     if (!a->map.vary.empty() || !a->map.shard.empty() || !a->map.out.empty() || !a->map.contact.empty())
       throw std::invalid_argument("--vary, --shard, --contact and -o belong to analyze map; analyze " + a->method +
                                   " writes --json and --plot");
@@ -221,60 +317,10 @@ Handler register_analyze(CLI::App& app) {
     const std::string name = std::filesystem::path(a->data).filename().string();
     const std::vector<double> t = column(d, a->time, "--time");
     std::string text;
-    if (a->method == "envelope") {
-      const std::vector<double> x = column(d, a->position, "--position");
-      EnvelopeResult e;
-      try {
-        e = decay_envelope(t, x);
-      } catch (const std::invalid_argument& ex) {
-        throw std::invalid_argument(d.where() + ex.what());
-      }
-      r.json_sections["result"] = json_text(envelope_json(e));
-      if (!a->output.plot.empty()) figures.push_back({"fit", "", envelope_figure(t, x, e, name)});
-      text = envelope_text(e);
-    } else if (a->method == "contour") {
-      const std::vector<double> x = column(d, a->x, "--x"), y = column(d, a->y, "--y");
-      // The reference is optional by default; asked for by name, it must be there.
-      const bool asked = a->x_reference_opt->count() > 0 || a->y_reference_opt->count() > 0;
-      std::vector<double> xr, yr;
-      if (asked || (d.has_column(a->x_reference) && d.has_column(a->y_reference))) {
-        xr = column(d, a->x_reference, "--x-reference");
-        yr = column(d, a->y_reference, "--y-reference");
-      }
-      ContourOptions o;
-      if (!a->centre.empty()) o.centre = std::array<double, 2>{a->centre[0], a->centre[1]};
-      o.radius = a->radius;
-      ContourResult c;
-      try {
-        c = analyze_contour(t, x, y, xr, yr, o);
-      } catch (const std::invalid_argument& ex) {
-        throw std::invalid_argument(d.where() + ex.what());
-      }
-      r.json_sections["result"] = contour_json(c);
-      contour_diagnostics(r, c);
-      if (!a->output.plot.empty()) figures.push_back({"fit", "", contour_figure(t, c, name)});
-      text = contour_text(c);
-    } else {
-      const std::vector<double> v = column(d, a->velocity, "--velocity");
-      std::vector<double> f;
-      if (d.has_column(a->force)) f = column(d, a->force, "--force");
-      StickSlipOptions o;
-      o.velocity_threshold = a->threshold;
-      StickSlipResult ss;
-      try {
-        ss = detect_stick_slip(t, v, f, o);
-      } catch (const std::invalid_argument& ex) {
-        throw std::invalid_argument(d.where() + ex.what());
-      }
-      if (!ss.found()) {  // data that cannot give an answer: exit 2, with the JSON if asked for
-        r.status = ResultStatus::error;
-        r.message = d.where() + ss.message;
-        return emit(r, a->output);
-      }
-      r.json_sections["result"] = json_text(stick_slip_json(ss));
-      if (!a->output.plot.empty()) figures.push_back({"fit", "", stick_slip_figure(t, v, f, ss, name)});
-      text = stick_slip_text(ss, !f.empty());
-    }
+    const AnalyzeKind* kind = nullptr;
+    for (const auto& k : analyze_kinds())
+      if (k.name == a->method) kind = &k;
+    if (!kind->run(*a, d, t, name, r, figures, text)) return emit(r, a->output);
     return emit(r, a->output, data_note(d) + text, &figures);
   };
 }

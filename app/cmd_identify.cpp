@@ -18,10 +18,11 @@ Handler register_identify(CLI::App& app) {
     CLI::App* cmd;
     std::unique_ptr<MethodIO> io;
     MethodRun run;
+    GivenOptions options;
   };
   auto chosen = std::make_shared<std::vector<Chosen>>();
   for (const CliMethod& m : cli_methods()) {
-    if (!m.add_options) continue;  // a command of its own (validate)
+    if (!m.run) continue;  // a command of its own (validate)
     auto io = std::make_unique<MethodIO>();
     auto* cmd = identify->add_subcommand(m.name, m.help);
     cmd->add_option("DATA", io->inputs,
@@ -33,23 +34,29 @@ Handler register_identify(CLI::App& app) {
     add_output_options(cmd, io->output);
     add_batch_options(cmd, io->batch);
     io->batch.method = m.name;
-    MethodRun run = m.add_options(cmd);
-    chosen->push_back({cmd, std::move(io), std::move(run)});
+    GivenOptions options = add_table_options(cmd, *m.info);
+    chosen->push_back({cmd, std::move(io), m.run, std::move(options)});
   }
   return [chosen]() -> int {
     for (const auto& c : *chosen) {
       if (!c.cmd->parsed()) continue;
       MethodIO& io = *c.io;
+      const OptionValues options = c.options();  // checked once, before any file is read
+      const auto run = [&c, &options](const MethodIO& one) {
+        Result r = c.run(one, options);
+        record_options(r, options);
+        return r;
+      };
       if (!is_batch(io.inputs, io.batch)) {
         io.data = io.inputs.front();
         check_outputs(io.output, command_inputs(c.cmd));
-        return emit(c.run(io, *c.cmd), io.output);
+        return emit(run(io), io.output);
       }
       // Each file on its own copy of the options (the runs may be on several threads).
-      const auto identify_file = [&c, &io](const std::string& file) {
+      const auto identify_file = [&run, &io](const std::string& file) {
         MethodIO one = io;
         one.data = file;
-        return c.run(one, *c.cmd);
+        return run(one);
       };
       const auto date_of_column = [&io](const std::string& file, const std::string& name) {
         const Dataset d = load_data(file, io.columns.read, io.columns.time);

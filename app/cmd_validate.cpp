@@ -23,6 +23,7 @@
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/scenario/scenario.hpp"
+#include "methods/method.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {
@@ -32,9 +33,10 @@ struct ValidateArgs {
   std::string model, data, scenario;
   DataOptions columns;
   // A two-axis plant (xy-table): the measured positions and, optionally, drive forces per axis.
-  std::string x = "x.position", y = "y.position", x_force = "x.drive", y_force = "y.drive";
-  CLI::Option *x_force_opt = nullptr, *y_force_opt = nullptr;
+  std::string x, y, x_force, y_force;
+  bool x_force_given = false, y_force_given = false;
   OutputOptions output;
+  GivenOptions given;  // --scenario and the two-axis columns, from validate's option table
 };
 
 // The model a `frictionlab identify ... --json` run wrote: its "law", parameters M and offset.
@@ -111,8 +113,7 @@ std::vector<std::pair<std::string, std::string>> axis_models(const std::string& 
 
 // A drive-force column of a two-axis record: the option's column when given (it must exist),
 // else the default name when the file has it, else none (forces are then not compared).
-Eigen::VectorXd optional_force(const Dataset& d, const std::string& name, const CLI::Option* opt, const std::string& option) {
-  const bool given = opt && opt->count() > 0;
+Eigen::VectorXd optional_force(const Dataset& d, const std::string& name, bool given, const std::string& option) {
   if (!given && !d.has_column(name)) return {};
   return finite_column(d, name, option);
 }
@@ -169,18 +170,19 @@ std::string text_of(const Result& r, const std::string& scenario) {
 
 // A two-axis plant (xy-table): the models by axis, the x and y records, and the circular test's
 // figures (the measured and simulated contour, the polar error plots, the axes' signals).
-int run_two_axis(const ValidateArgs& a, const std::map<std::string, IdentifiedModel>& models, const Scenario& sc,
+int run_two_axis(const ValidateArgs& a, const OptionValues& options, const std::map<std::string, IdentifiedModel>& models, const Scenario& sc,
                  const std::shared_ptr<const Dataset>& data, const std::string& data_file, const std::string& data_sha256) {
   MultiAxisValidationData v;
   v.time = time_column(*data, a.columns);
-  v.axes.push_back({"x", finite_column(*data, a.x, "--x"), optional_force(*data, a.x_force, a.x_force_opt, "--x-force")});
-  v.axes.push_back({"y", finite_column(*data, a.y, "--y"), optional_force(*data, a.y_force, a.y_force_opt, "--y-force")});
+  v.axes.push_back({"x", finite_column(*data, a.x, "--x"), optional_force(*data, a.x_force, a.x_force_given, "--x-force")});
+  v.axes.push_back({"y", finite_column(*data, a.y, "--y"), optional_force(*data, a.y_force, a.y_force_given, "--y-force")});
   v.file = data->file;
   v.sha256 = data->sha256;
   ValidateOptions vo;
   vo.processing.axis = a.columns.parsed_axis();
   ContourValidation cv = validate_contour(sc, v, models, vo);
   Result& r = cv.result;
+  record_options(r, options);
   r.data_file = data_file;
   r.data_sha256 = data_sha256;
   note_data(r, *data);
@@ -191,7 +193,15 @@ int run_two_axis(const ValidateArgs& a, const std::map<std::string, IdentifiedMo
   return emit(r, a.output, text, &figures);
 }
 
-int run(const ValidateArgs& a) {
+int run(ValidateArgs& a) {
+  const OptionValues options = a.given();
+  a.scenario = options.text("scenario");
+  a.x = options.text("x");
+  a.y = options.text("y");
+  a.x_force = options.text("x-force");
+  a.y_force = options.text("y-force");
+  a.x_force_given = options.given("x-force");
+  a.y_force_given = options.given("y-force");
   const auto named = axis_models(a.model);
   std::vector<RunFile> inputs = command_inputs(a.output.command);
   for (const auto& [axis, file] : named) inputs.push_back({"MODEL " + axis, file, RunFile::Kind::file});
@@ -221,7 +231,7 @@ int run(const ValidateArgs& a) {
   check_run_files(inputs, {{"--json", a.output.json}, {"--plot", a.output.plot, RunFile::Kind::figure},
                            {"--report", a.output.report, RunFile::Kind::report}},
                   a.output.overwrite);
-  if (sc.plant->num_contacts() > 1) return run_two_axis(a, models, sc, data, mf.data_file, mf.data_sha256);
+  if (sc.plant->num_contacts() > 1) return run_two_axis(a, options, models, sc, data, mf.data_file, mf.data_sha256);
   ValidationData v;
   v.time = time_column(*data, a.columns);
   v.position = position_column(*data, a.columns);
@@ -231,6 +241,7 @@ int run(const ValidateArgs& a) {
   ValidateOptions vo;
   vo.processing.axis = a.columns.parsed_axis();
   Result r = validate_model(mf.model, sc, v, vo);
+  record_options(r, options);
   r.data_file = mf.data_file;
   r.data_sha256 = mf.data_sha256;
   note_data(r, *data);
@@ -252,22 +263,8 @@ Handler register_validate(CLI::App& app) {
                   "named keeps the scenario's law and mass)")
       ->required();
   cmd->add_option("DATA", a->data, "Measured run: a CSV file (with a header row, or without one: see --names), or a MATLAB .mat file")->required();
-  cmd->add_option("--scenario", a->scenario,
-                  "Scenario YAML: plant (axis), controller and input (e.g. examples/emps_closed_loop.yaml); its data "
-                  "inputs read DATA, its M, offset and friction come from MODEL")
-      ->required();
   add_data_options(cmd, a->columns, "linear");
-  const char* group = "Two-axis plant (xy-table)";
-  cmd->add_option("--x", a->x, "xy-table: measured x position column (m)")->capture_default_str()->group(group);
-  cmd->add_option("--y", a->y, "xy-table: measured y position column (m)")->capture_default_str()->group(group);
-  a->x_force_opt = cmd->add_option("--x-force", a->x_force,
-                                   "xy-table: x drive force column (N; --scale NAME=N_PER_UNIT converts a command); "
-                                   "compared when present")
-                       ->capture_default_str()
-                       ->group(group);
-  a->y_force_opt = cmd->add_option("--y-force", a->y_force, "xy-table: y drive force column (N); compared when present")
-                       ->capture_default_str()
-                       ->group(group);
+  a->given = add_table_options(cmd, method_info(MethodId::validate));
   add_output_options(cmd, a->output);
   return [a]() -> int { return run(*a); };
 }

@@ -20,5 +20,6 @@ Handler register_analyze(CLI::App& app);
 Handler register_export(CLI::App& app);
 Handler register_merge(CLI::App& app);
 Handler register_plan(CLI::App& app);
+Handler register_help(CLI::App& app);
 
 }  // namespace frictionlab::cli

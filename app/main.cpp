@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   add(frictionlab::cli::register_export);
   add(frictionlab::cli::register_plan);
   add(frictionlab::cli::register_merge);
+  add(frictionlab::cli::register_help);
 
   // Every failure goes through fail() (app/output.hpp): one line on stderr, and the error JSON
   // when the chosen subcommand was asked for --json.

@@ -24,7 +24,7 @@ r = fl.identify_idim(ident["t"], force, position=ident["qm"], source=ident,
 print(r)
 assert abs(r["M"] / 95.1089 - 1) < 5e-3, r["M"]  # published IDIM-LS inertia, kg
 
-best = fl.identify_idim(ident["t"], force, ident["qm"], terms="inertia,asymmetric,stribeck", input_delay=1)
+best = fl.identify_idim(ident["t"], force, ident["qm"], terms="inertia,asymmetric,stribeck", delay=1)
 v = fl.cross_test(best, check["t"], check["gtau"] * check["vir"], check["qm"])
 print(best)
 print(f"cross-test on DATA_EMPS_PULSES.mat: {v.relative_error_percent:.3f} % (published model: 5.98 %)")

@@ -12,28 +12,14 @@
 namespace frictionlab::cli {
 namespace {
 
-struct BreakawayArgs {
-  double inertia = std::numeric_limits<double>::quiet_NaN();
-  double threshold = std::numeric_limits<double>::quiet_NaN();
-};
-
-Result run(const BreakawayArgs& a, const MethodIO& io) {
+Result run(const MethodIO& io, const OptionValues& options) {
   const Dataset d = load_data(io.data, io.columns);
   BreakawayData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns)};
-  BreakawayOptions o;
-  o.inertia = a.inertia;
-  o.velocity_threshold = a.threshold;
+  BreakawayOptions o = make_breakaway_options(options);
   o.axis = io.columns.parsed_axis();
   Result r = identify_breakaway(x, o);
   stamp(r, d);
   return r;
-}
-
-MethodRun add_options(CLI::App* cmd) {
-  auto a = std::make_shared<BreakawayArgs>();
-  cmd->add_option("--inertia", a->inertia, "Rotor inertia (kg m^2 or kg); estimated when not given");
-  cmd->add_option("--velocity-threshold", a->threshold, "Speed above which the axis moves (default 1 % of max)");
-  return [a](const MethodIO& io, const CLI::App&) { return run(*a, io); };
 }
 
 Figure breakaway_figure(const Result& r) {
@@ -97,11 +83,10 @@ Figure breakaway_map(const Result& r) {
 }  // namespace
 
 CliMethod breakaway_method() {
-  return {"breakaway",
-          "Torque-mode trapezoid experiment (ramp up, hold, ramp down): Fs, Fc, Fv (and M) from "
+  return {"Torque-mode trapezoid experiment (ramp up, hold, ramp down): Fs, Fc, Fv (and M) from "
           "time, torque (or current with --kt) and velocity",
           "rotary",
-          add_options,
+          run,
           {{"fit",
             "Applied force and velocity over the experiment; the point marks the breakaway (Fs), the line the "
             "identified Coulomb level.",
@@ -109,7 +94,9 @@ CliMethod breakaway_method() {
            {"friction-map",
             "Applied force against velocity over the experiment, the breakaway force at rest with its "
             "standard deviation, and the identified static law while sliding.",
-            breakaway_map}}};
+            breakaway_map}},
+          nullptr,
+          {}};
 }
 
 }  // namespace frictionlab::cli

@@ -12,35 +12,14 @@
 namespace frictionlab::cli {
 namespace {
 
-struct DecayArgs {
-  double stiffness = std::numeric_limits<double>::quiet_NaN();
-  double inertia = std::numeric_limits<double>::quiet_NaN();
-  double natural_frequency = std::numeric_limits<double>::quiet_NaN();
-  bool pendulum = false;
-};
-
-Result run(const DecayArgs& a, const MethodIO& io) {
+Result run(const MethodIO& io, const OptionValues& options) {
   const Dataset d = load_data(io.data, io.columns);
   DecayData x{time_column(d, io.columns), position_column(d, io.columns)};
-  DecayOptions o;
-  o.stiffness = a.stiffness;
-  o.inertia = a.inertia;
-  o.natural_frequency = a.natural_frequency;
-  o.pendulum = a.pendulum;
+  DecayOptions o = make_decay_options(options);
   o.axis = io.columns.parsed_axis();
   Result r = identify_decay(x, o);
   stamp(r, d);
   return r;
-}
-
-MethodRun add_options(CLI::App* decay) {
-  auto a = std::make_shared<DecayArgs>();
-  decay->add_option("--stiffness", a->stiffness, "Restoring stiffness (N/m or N m/rad; m g l for a pendulum)");
-  decay->add_option("--inertia", a->inertia, "Mass or inertia (kg or kg m^2), with --natural-frequency");
-  decay->add_option("--natural-frequency", a->natural_frequency,
-                    "sqrt(k/M) (rad/s): without --stiffness, report Fc/k and the damping ratio");
-  decay->add_flag("--pendulum", a->pendulum, "Restoring torque is stiffness * sin(angle)");
-  return [a](const MethodIO& io, const CLI::App&) { return run(*a, io); };
 }
 
 Figure decay_figure(const Result& r) {
@@ -64,13 +43,14 @@ Figure decay_figure(const Result& r) {
 }  // namespace
 
 CliMethod decay_method() {
-  return {"decay",
-          "Free oscillation of a pendulum or spring-mass: Coulomb and viscous friction from the energy lost "
+  return {"Free oscillation of a pendulum or spring-mass: Coulomb and viscous friction from the energy lost "
           "per half cycle",
           "linear",
-          add_options,
+          run,
           {{"fit", "Free oscillation with its turning points and the envelope fitted to their half swings.",
-            decay_figure}}};
+            decay_figure}},
+          nullptr,
+          {}};
 }
 
 }  // namespace frictionlab::cli

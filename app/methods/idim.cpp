@@ -11,25 +11,6 @@
 namespace frictionlab::cli {
 namespace {
 
-struct IdimArgs {
-  std::string terms = "inertia,viscous,coulomb,offset";
-  double cutoff = 100, delta = 2;  // cutoff, decimate, skip: from the sample rate unless given
-  std::string from;                // "position", "velocity" or "" (position unless only --velocity is given)
-  std::string vs = "0.01";
-  long delay = 0;
-  int decimate = 10;
-  long skip = 49;
-  std::string validate;
-};
-
-std::vector<std::string> split_list(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
 IdimData idim_data(const Dataset& d, const DataOptions& c, const std::string& from) {
   IdimData x;
   x.time = time_column(d, c);
@@ -43,73 +24,20 @@ IdimData idim_data(const Dataset& d, const DataOptions& c, const std::string& fr
   return x;
 }
 
-Result run(const IdimArgs& a, const MethodIO& io, const CLI::App& cmd) {
-  IdimOptions o;
-  o.terms = split_list(a.terms);
-  o.cutoff_hz = a.cutoff;
-  o.decimation = a.decimate;
-  o.skip = a.skip;
-  // Not given: chosen from the sample rate (idim_rate_defaults; the EMPS recipe at 1 kHz).
-  o.auto_cutoff = cmd.get_option("--cutoff")->count() == 0;
-  o.auto_decimation = cmd.get_option("--decimate")->count() == 0;
-  o.auto_skip = cmd.get_option("--skip")->count() == 0;
-  if (a.from == "position") o.source = IdimSource::position;
-  else if (a.from == "velocity") o.source = IdimSource::velocity;
-  else if (!a.from.empty())
-    throw std::invalid_argument("--from '" + a.from + "': expected position or velocity");
-  if (a.vs == "search") {
-    o.search_stribeck_vs = true;
-  } else {
-    try {
-      o.stribeck_vs = std::stod(a.vs);
-    } catch (const std::exception&) {
-      throw std::invalid_argument("--vs '" + a.vs + "': expected a Stribeck velocity (m/s or rad/s) or 'search'");
-    }
-  }
-  o.input_delay = a.delay;
-  o.stribeck_delta = a.delta;
+Result run(const MethodIO& io, const OptionValues& options) {
+  IdimOptions o = make_idim_options(options);
   o.axis = io.columns.parsed_axis();
+  const std::string from = options.text("from");
   const Dataset d = load_data(io.data, io.columns);
-  const IdimData data = idim_data(d, io.columns, a.from);
+  const IdimData data = idim_data(d, io.columns, from);
   Result r = identify_idim(data, o);
   r.data_file = data.file;
   r.data_sha256 = data.sha256;
   note_data(r, d);
-  if (r.ok() && !a.validate.empty())
-    r.validation = cross_test(r, idim_data(load_data(a.validate, io.columns), io.columns, a.from), o);
+  if (r.ok() && options.given("validate"))
+    r.validation = cross_test(r, idim_data(load_data(options.text("validate"), io.columns), io.columns, from), o);
   name_flags(r);
   return r;
-}
-
-MethodRun add_options(CLI::App* idim) {
-  auto a = std::make_shared<IdimArgs>();
-  idim->add_option("--terms", a->terms,
-                   "Comma-separated regressors: inertia, viscous, coulomb, offset, asymmetric (Fv_pos, Fc_pos, Fv_neg, "
-                   "Fc_neg; then leave out offset), stribeck (Fs_minus_Fc with --vs, --delta)")
-      ->capture_default_str();
-  idim->add_option("--cutoff", a->cutoff,
-                   "Position low-pass cut-off (Hz). Default from the sample rate fs: min(100 Hz, fs/10) (EMPS: 100 Hz at "
-                   "1 kHz)");
-  idim->add_option("--decimate", a->decimate,
-                   "Keep one sample in N after the anti-alias filter. Default from fs: floor(fs/100 Hz), 1 to 10 (EMPS: 10)");
-  idim->add_option("--skip", a->skip,
-                   "Samples dropped at the start (filter transient). Default from fs: five periods of the cut-off less one "
-                   "sample (EMPS: 49)");
-  idim->add_option("--from", a->from,
-                   "What the regressors are built from when the file has both: position (filtered, differentiated "
-                   "twice) or velocity (the measured velocity filtered like the position, differentiated once). "
-                   "Default: position, or velocity when only --velocity is given")
-      ->check(CLI::IsMember({"position", "velocity"}));
-  idim->add_option("--vs", a->vs, "Stribeck velocity of the stribeck term (m/s or rad/s), or 'search' for the value "
-                                  "that minimises the identification error")
-      ->capture_default_str();
-  idim->add_option("--delay", a->delay,
-                   "Samples by which the applied force lags the recorded input (EMPS: 1, its controller output is "
-                   "applied one sample later)")
-      ->capture_default_str();
-  idim->add_option("--delta", a->delta, "Stribeck exponent of the stribeck term")->capture_default_str();
-  idim->add_option("--validate", a->validate, "Second data file for a cross-test with the identified parameters");
-  return [a](const MethodIO& io, const CLI::App& cmd) { return run(*a, io, cmd); };
 }
 
 Figure idim_figure(const Result& r) {
@@ -190,11 +118,10 @@ Figure cross_test_figure(const Result& r) {
 }  // namespace
 
 CliMethod idim_method() {
-  return {"idim",
-          "Inverse dynamic model least squares on a trajectory: force = M qdd + friction(qd) + offset "
+  return {"Inverse dynamic model least squares on a trajectory: force = M qdd + friction(qd) + offset "
           "(EMPS benchmark recipe). Best cross-test on EMPS: --terms inertia,asymmetric,stribeck --delay 1",
           "linear",
-          add_options,
+          run,
           {{"fit",
             "Measured drive force and the force the identified inverse dynamic model reconstructs from position "
             "(top), and their difference (bottom), on the identification data after filtering and decimation.",
@@ -208,7 +135,9 @@ CliMethod idim_method() {
             "Cross-test: the drive force measured on the second record and the force the model "
             "identified on the first predicts from its position (top), and their difference "
             "(bottom), after the same filtering and decimation.",
-            cross_test_figure}}};
+            cross_test_figure}},
+          nullptr,
+          {}};
 }
 
 }  // namespace frictionlab::cli

@@ -15,20 +15,10 @@
 namespace frictionlab::cli {
 namespace {
 
-struct LugreArgs {
-  double inertia = std::numeric_limits<double>::quiet_NaN();
-  std::string static_law;
-  int substeps = 4;
-  double vd = 0;
-};
-
-Result run(const LugreArgs& a, const MethodIO& io) {
-  LugreOptions o;
-  o.inertia = a.inertia;
-  o.substeps = a.substeps;
-  o.vd = a.vd;
+Result run(const MethodIO& io, const OptionValues& options) {
+  LugreOptions o = make_lugre_options(options);
   o.axis = io.columns.parsed_axis();
-  if (!a.static_law.empty()) o.static_law = load_law(a.static_law);
+  if (options.given("static")) o.static_law = load_law(options.text("static"));
   const Dataset d = load_data(io.data, io.columns);
   LugreData x{time_column(d, io.columns), force_column(d, io.columns), position_column(d, io.columns)};
   o.progress = [](int iteration, double cost, double) {
@@ -38,20 +28,6 @@ Result run(const LugreArgs& a, const MethodIO& io) {
   stamp(r, d);
   name_flags(r);
   return r;
-}
-
-MethodRun add_options(CLI::App* lugre) {
-  auto a = std::make_shared<LugreArgs>();
-  lugre->add_option("--inertia", a->inertia, "Mass or inertia of the axis (kg or kg m^2), > 0")->required();
-  lugre->add_option("--static", a->static_law,
-                    "MODEL.json (or .yaml) with the static law (stribeck, lugre, static-coulomb-viscous, coulomb-viscous), "
-                    "e.g. from identify sweep: held fixed instead of identified");
-  lugre->add_option("--vd", a->vd,
-                    "Damping decay velocity (m/s or rad/s) of the damping sigma1 exp(-(v/vd)^2), held fixed; 0 = constant "
-                    "damping. A --static lugre model with vd > 0 gives its own")
-      ->capture_default_str();
-  lugre->add_option("--substeps", a->substeps, "Simulation steps per sample interval of the fit")->capture_default_str();
-  return [a](const MethodIO& io, const CLI::App&) { return run(*a, io); };
 }
 
 Figure lugre_figure(const Result& r) {
@@ -95,20 +71,21 @@ Figure lugre_map(const Result& r) {
 }  // namespace
 
 CliMethod lugre_method() {
-  return {"lugre",
-          "LuGre parameters by output error: simulate the axis with the measured force, compare positions, "
+  return {"LuGre parameters by output error: simulate the axis with the measured force, compare positions, "
           "Ceres least squares. From one record that starts at rest and breaks away both ways (presliding, "
           "sliding, reversals), all six: sigma0, sigma1 and the static part Fc, Fs, vs, sigma2 (started "
           "from the sliding samples and a grid of Fs and vs), unless --static gives the static part. A "
           "parameter the record cannot determine, or that ends at a bound, has std null (nan) and a warning",
           "linear",
-          add_options,
+          run,
           {{"fit", "Measured and simulated position and force of the identified LuGre model.", lugre_figure},
            {"friction-map",
             "Steady-state friction of the identified LuGre law (the force while sliding at constant "
             "velocity) over the velocities of the record and, where the Stribeck part is narrow, near zero "
             "velocity.",
-            lugre_map}}};
+            lugre_map}},
+          nullptr,
+          {}};
 }
 
 }  // namespace frictionlab::cli

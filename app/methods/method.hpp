@@ -2,8 +2,9 @@
 // One identification method of the command line, declared in one file under app/methods/: its
 // `frictionlab identify NAME` subcommand (help, default axis, its own options and how it runs)
 // and its figures with their captions (--plot draws the first; --report shows them all). The
-// library's side of a method (name, summary, fitted signal) is identify/method.hpp. Adding a
-// method: app/methods/NAME.cpp defining NAME_method(), and one line in methods.cpp.
+// library's side of a method (name, summary, fitted signal, option table) is identify/method.hpp;
+// the method's flags are made from its option table (add_table_options). Adding a method:
+// app/methods/NAME.cpp defining NAME_method(), and its line in FRICTIONLAB_METHODS.
 
 #include <CLI/CLI.hpp>
 
@@ -14,6 +15,7 @@
 #include "../batch_identify.hpp"
 #include "../data_options.hpp"
 #include "../output.hpp"
+#include "frictionlab/identify/method.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "report/figure.hpp"
 
@@ -29,12 +31,13 @@ struct MethodIO {
   BatchOptions batch;
 };
 
-/// Identifies from the data file io.data with a parsed method subcommand's options: the Result
+/// Identifies from the data file io.data with the method's option values (given on the command
+/// line over the table's defaults, already checked against the table): the Result
 /// (status error when the data could not give an answer). The caller checks and writes the
 /// outputs (one file: emit; several: the batch table of batch_identify.hpp), so the same run
 /// serves one file and a batch, from several threads at once (it reads only its arguments).
 /// \throws std::invalid_argument for bad input (an option, the file, a column), as emit's callers expect.
-using MethodRun = std::function<Result(const MethodIO& io, const CLI::App& cmd)>;
+using MethodRun = std::function<Result(const MethodIO& io, const OptionValues& options)>;
 
 /// One figure of a method's result.
 struct MethodFigure {
@@ -44,21 +47,31 @@ struct MethodFigure {
 };
 
 struct CliMethod {
-  std::string name;          ///< subcommand and Result::method: "idim", "sweep", ...
   std::string help;          ///< the subcommand's help text
   std::string default_axis;  ///< --axis default: "linear" or "rotary"
-  /// Adds the method's own options to its subcommand (after DATA, the column and the output
-  /// options) and returns what runs it. Empty for a method with a command of its own (validate).
-  std::function<MethodRun(CLI::App* cmd)> add_options;
+  /// Runs the method on one file. Empty for a method with a command of its own (validate).
+  MethodRun run;
   std::vector<MethodFigure> figures;  ///< the first is the fit figure
+  /// The library's side (name, option table), set by the registry from FRICTIONLAB_METHODS.
+  const MethodInfo* info = nullptr;
+  std::string name;  ///< info->name: the subcommand and Result::method
 };
 
-CliMethod idim_method();
-CliMethod breakaway_method();
-CliMethod sweep_method();
-CliMethod decay_method();
-CliMethod lugre_method();
-CliMethod validate_method();
+#define FRICTIONLAB_CLI_METHOD_DECL(method) CliMethod method##_method();
+FRICTIONLAB_METHODS(FRICTIONLAB_CLI_METHOD_DECL)
+#undef FRICTIONLAB_CLI_METHOD_DECL
+
+/// The option values a parsed subcommand was given (checked against the table).
+using GivenOptions = std::function<OptionValues()>;
+
+/// Adds one flag per option of `info`'s table to `cmd`: `--NAME`, its help with unit, default
+/// and valid values, required when the table says so; repeatable lists take one item each time.
+/// Returns what reads the given flags after parsing, each checked by the table (parse_option).
+/// \throws std::invalid_argument from the returned function: "--NAME 'TEXT': expected ...".
+GivenOptions add_table_options(CLI::App* cmd, const MethodInfo& info);
+
+/// Records the options that shaped `r` (options_json: name, value, unit, given) in its JSON.
+void record_options(Result& r, const OptionValues& options);
 
 /// Every method, in the order of `frictionlab identify --help`.
 const std::vector<CliMethod>& cli_methods();

@@ -12,54 +12,19 @@
 namespace frictionlab::cli {
 namespace {
 
-struct SweepArgs {
-  std::string model = "stribeck";
-  double fixed_delta = 0;
-  double relative_tolerance = 0.01, min_duration = 0.5;
-  std::vector<std::string> segments;
-  std::string reference;  // commanded-velocity column to segment on
-};
-
-Result run(const SweepArgs& a, const MethodIO& io) {
+Result run(const MethodIO& io, const OptionValues& options) {
   const Dataset d = load_data(io.data, io.columns);
   SweepData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns)};
-  SweepOptions o;
-  if (!a.reference.empty()) {
+  SweepOptions o = make_sweep_options(options);
+  if (options.given("reference")) {
     DataOptions ref = io.columns;
-    ref.velocity = a.reference;
+    ref.velocity = options.text("reference");
     o.reference = velocity_column(d, ref);
   }
-  o.fit.model = parse_static_fit_model(a.model);
-  o.fit.fixed_delta = a.fixed_delta;
-  o.relative_tolerance = a.relative_tolerance;
-  o.min_duration = a.min_duration;
   o.axis = io.columns.parsed_axis();
-  for (const auto& s : a.segments) {
-    const auto colon = s.find(':');
-    try {
-      if (colon == std::string::npos) throw std::invalid_argument("");
-      o.windows.push_back({std::stod(s.substr(0, colon)), std::stod(s.substr(colon + 1))});
-    } catch (const std::exception&) {
-      throw std::invalid_argument("--segment '" + s + "': expected T_BEGIN:T_END in seconds, e.g. 2.5:4.0");
-    }
-  }
   Result r = identify_sweep(x, o);
   stamp(r, d);
   return r;
-}
-
-MethodRun add_options(CLI::App* sweep) {
-  auto a = std::make_shared<SweepArgs>();
-  sweep->add_option("--model", a->model, "Law to fit: coulomb-viscous, coulomb-viscous-asymmetric, stribeck, stribeck-asymmetric")
-      ->capture_default_str();
-  sweep->add_option("--delta", a->fixed_delta, "Hold the Stribeck exponent at this value (default: fitted)");
-  sweep->add_option("--tolerance", a->relative_tolerance, "Relative velocity band of a steady segment")->capture_default_str();
-  sweep->add_option("--min-duration", a->min_duration, "Shortest steady segment (s)")->capture_default_str();
-  sweep->add_option("--segment", a->segments, "T_BEGIN:T_END (s) of a steady segment, instead of detection (repeatable)");
-  sweep->add_option("--reference", a->reference,
-                    "Column of the commanded velocity: steady segments are found on it instead of on the measured "
-                    "velocity (which is smoothed, with a band that covers its measured noise)");
-  return [a](const MethodIO& io, const CLI::App&) { return run(*a, io); };
 }
 
 Figure sweep_figure(const Result& r) {
@@ -88,16 +53,17 @@ Figure sweep_figure(const Result& r) {
 }  // namespace
 
 CliMethod sweep_method() {
-  return {"sweep",
-          "Constant-velocity tests: friction-velocity points from steady segments (found on the smoothed "
+  return {"Constant-velocity tests: friction-velocity points from steady segments (found on the smoothed "
           "velocity with a noise-aware band, or on --reference) and a fitted law; vs and delta get std "
           "null when no level is slow enough to show the Stribeck part",
           "rotary",
-          add_options,
+          run,
           {{"fit",
             "Friction against velocity: the mean of each steady segment with its standard deviation, and the "
             "fitted law.",
-            sweep_figure}}};
+            sweep_figure}},
+          nullptr,
+          {}};
 }
 
 }  // namespace frictionlab::cli

@@ -15,12 +15,13 @@ Figure validate_figure(const Result& r) {
 }  // namespace
 
 CliMethod validate_method() {
-  return {"validate",
-          "",
+  return {"",
           "linear",
           {},
           {{"fit", "Measured signals and the simulation of the identified model driven by the same input.",
-            validate_figure}}};
+            validate_figure}},
+          nullptr,
+          {}};
 }
 
 }  // namespace frictionlab::cli

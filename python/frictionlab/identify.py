@@ -12,7 +12,7 @@ import importlib
 
 from . import _core
 
-Method = collections.namedtuple("Method", "name summary fit_signal fit_units function")
+Method = collections.namedtuple("Method", "name summary fit_signal fit_units function options")
 Method.__doc__ = """One identification method of the library (frictionlab/identify/method.hpp).
 
     name        the method's name: Result.method, ``frictionlab identify NAME`` (validate: its own command)
@@ -22,6 +22,10 @@ Method.__doc__ = """One identification method of the library (frictionlab/identi
                 {} when there is no single fitted signal (validate reports per-signal errors)
     function    name of the frictionlab function running it ("identify_idim"), None when it has no
                 Python binding
+    options     its option table, one dict per option: name (the command line's flag without --),
+                keyword (the Python keyword), type, unit, default (as text; None when computed from
+                the data or absent), help, expected (the valid values in words), required,
+                deprecated (former Python keywords, still accepted with a DeprecationWarning)
 """
 
 

@@ -73,10 +73,8 @@ void init_identify(py::module_& m) {
   });
 
   // ---- the registered methods -------------------------------------------------------------
-  for (const PyMethod& method : py_methods()) {
-    method_info(method.name);  // a binding the library does not know: refused when the module loads
-    method.bind(m);
-  }
+  bind_option_tables(m);
+  for (const PyMethod& method : py_methods()) method.bind(m);
   m.def("_methods", [] {
     py::list out;
     for (const MethodInfo& info : identification_methods()) {
@@ -92,6 +90,21 @@ void init_identify(py::module_& m) {
       for (const PyMethod& method : py_methods())
         if (method.name == info.name) function = py::str(method.function);
       d["function"] = function;
+      py::list options;  // the option table: what makes the keywords, their checks and docs
+      for (const OptionSpec& o : info.options) {
+        py::dict od;
+        od["name"] = o.name;
+        od["keyword"] = o.keyword();
+        od["type"] = to_string(o.type);
+        od["unit"] = o.unit_text();
+        od["default"] = o.default_value ? py::object(py::str(option_text(*o.default_value))) : py::object(py::none());
+        od["help"] = o.help;
+        od["expected"] = o.expected();
+        od["required"] = o.required;
+        od["deprecated"] = o.deprecated_keywords;
+        options.append(od);
+      }
+      d["options"] = options;
       out.append(d);
     }
     return out;

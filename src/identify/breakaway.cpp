@@ -48,13 +48,43 @@ double breakaway_time(const Eigen::VectorXd& time, const Eigen::VectorXd& force,
 
 }  // namespace
 
+// The table names only the fields an option sets (designated initializers).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+MethodInfo detail::breakaway_method_info() {
+  const BreakawayOptions d;  // every default of the table is the struct's
+  MethodInfo m;
+  m.summary = "torque-mode trapezoid experiment: breakaway, Coulomb and viscous levels";
+  m.fit_signal = "applied force";
+  m.fit_quantity = Quantity::force;
+  m.options = {
+      {.name = "inertia", .type = OptionType::number, .unit = "kg", .rotary_unit = "kg m^2",
+       .help = "Inertia held fixed; estimated with Fc and Fv (reported as M) when not given", .min = 0, .min_open = true},
+      {.name = "velocity-threshold", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s",
+       .help = "Speed above which the axis moves. Default: 1 % of the largest |velocity|", .min = 0, .min_open = true},
+      {.name = "edge-samples", .type = OptionType::integer, .default_value = static_cast<long long>(d.edge_samples),
+       .help = "Samples skipped at each end of a sliding interval in the dynamic fit (the velocity has a kink there)",
+       .min = 0},
+  };
+  return m;
+}
+#pragma GCC diagnostic pop
+
+BreakawayOptions make_breakaway_options(const OptionValues& v) {
+  BreakawayOptions o;
+  o.inertia = v.number("inertia");
+  o.velocity_threshold = v.number("velocity-threshold");
+  o.edge_samples = static_cast<int>(v.integer("edge-samples"));
+  return o;
+}
+
 Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
   const Eigen::Index n = d.time.size();
   if (d.force.size() != n || d.velocity.size() != n)
     throw std::invalid_argument("breakaway: time, force and velocity must have equal lengths (have " + std::to_string(n) +
                                 ", " + std::to_string(d.force.size()) + ", " + std::to_string(d.velocity.size()) + ")");
-  const double dt = regular_time_step(d.time, "breakaway");
-  Result r = make_result("breakaway", "static-coulomb-viscous", o.axis);
+  const double dt = regular_time_step(d.time, method_info(MethodId::breakaway).name);
+  Result r = make_result(MethodId::breakaway, "static-coulomb-viscous", o.axis);
   const auto warn = [&](const std::string& w) { r.diagnostics.warnings.push_back(w); };
   const auto add = [&](const std::string& name, double v, double s, Quantity q) { add_parameter(r, name, v, s, q, o.axis); };
 

@@ -102,6 +102,43 @@ EnergyBalance energy_balance(const Eigen::VectorXd& time, const Eigen::VectorXd&
 
 }  // namespace
 
+// The table names only the fields an option sets (designated initializers).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+MethodInfo detail::decay_method_info() {
+  const DecayOptions d;  // every default of the table is the struct's
+  MethodInfo m;
+  m.summary = "free oscillation: friction from the energy lost per half cycle";
+  m.fit_signal = "energy lost per half cycle";
+  m.fit_quantity = Quantity::energy;
+  m.options = {
+      {.name = "stiffness", .type = OptionType::number, .unit = "N/m", .rotary_unit = "N m/rad",
+       .help = "Restoring stiffness (m g l for a pendulum); give it or --natural-frequency", .min = 0, .min_open = true},
+      {.name = "inertia", .type = OptionType::number, .unit = "kg", .rotary_unit = "kg m^2",
+       .help = "Mass or inertia, with --natural-frequency: Fc and Fv in force units", .min = 0, .min_open = true},
+      {.name = "natural-frequency", .type = OptionType::number, .unit = "rad/s",
+       .help = "sqrt(k/M): without --stiffness, report Fc/k and the damping ratio (with --inertia: Fc and Fv)",
+       .min = 0, .min_open = true},
+      {.name = "pendulum", .type = OptionType::flag, .default_value = d.pendulum,
+       .help = "Restoring torque is stiffness * sin(angle)"},
+      {.name = "stop-threshold", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s",
+       .help = "|velocity| below which the oscillation counts as stopped. Default: 1e-6 of the largest |velocity|",
+       .min = 0, .min_open = true},
+  };
+  return m;
+}
+#pragma GCC diagnostic pop
+
+DecayOptions make_decay_options(const OptionValues& v) {
+  DecayOptions o;
+  o.stiffness = v.number("stiffness");
+  o.inertia = v.number("inertia");
+  o.natural_frequency = v.number("natural-frequency");
+  o.pendulum = v.flag("pendulum");
+  o.stop_threshold = v.number("stop-threshold");
+  return o;
+}
+
 Result identify_decay(const DecayData& d, const DecayOptions& o) {
   const Eigen::Index n = d.time.size();
   if (d.position.size() != n)
@@ -115,10 +152,10 @@ Result identify_decay(const DecayData& d, const DecayOptions& o) {
     throw std::invalid_argument("decay: --natural-frequency = " + format_number(o.natural_frequency) + " must be > 0 (rad/s)");
   if (!have_k && !have_wn)
     throw std::invalid_argument("decay: give --stiffness (N/m or N m/rad; m g l for a pendulum) or --natural-frequency (rad/s)");
-  const double dt = regular_time_step(d.time, "decay");
+  const double dt = regular_time_step(d.time, method_info(MethodId::decay).name);
   const bool relative = !have_k && !(std::isfinite(o.inertia) && o.inertia > 0);
   const double k = have_k ? o.stiffness : (relative ? 1.0 : o.inertia * o.natural_frequency * o.natural_frequency);
-  Result r = make_result("decay", "coulomb-viscous", o.axis);
+  Result r = make_result(MethodId::decay, "coulomb-viscous", o.axis);
 
   const EnergyBalance full = energy_balance(d.time, d.position, dt, o, k);
   if (!full.message.empty()) return fail(r, full.message);

@@ -10,6 +10,7 @@
 
 #include "frictionlab/identify/adequacy.hpp"
 #include "frictionlab/identify/method.hpp"
+#include "method_support.hpp"
 #include "frictionlab/identify/least_squares.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 #include "frictionlab/signal/butterworth.hpp"
@@ -382,6 +383,89 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, dou
 
 }  // namespace
 
+// The table names only the fields an option sets (designated initializers).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+MethodInfo detail::idim_method_info() {
+  const IdimOptions d;  // every default of the table is the struct's
+  MethodInfo m;
+  m.summary = "inverse dynamic model least squares on a trajectory";
+  m.fit_signal = "drive force";
+  m.fit_quantity = Quantity::force;
+  m.options = {
+      {.name = "terms", .type = OptionType::list, .default_value = d.terms,
+       .help = "Regressors in column order: inertia, viscous, coulomb, offset, asymmetric (Fv_pos, Fc_pos, Fv_neg, "
+               "Fc_neg; then leave out offset), each of viscous_pos, coulomb_pos, viscous_neg, coulomb_neg alone, "
+               "stribeck (Fs_minus_Fc with --vs, --delta); an unknown term is refused with the list"},
+      {.name = "cutoff", .type = OptionType::number, .unit = "Hz",
+       .help = "Position low-pass cut-off. Default from the sample rate fs: min(100 Hz, fs/10) (EMPS: 100 Hz at 1 kHz)",
+       .min = 0, .min_open = true, .deprecated_keywords = {"cutoff_hz"}},
+      {.name = "filter-order", .type = OptionType::integer, .default_value = static_cast<long long>(d.filter_order),
+       .help = "Butterworth order of the low-pass", .min = 1},
+      {.name = "padlen", .type = OptionType::integer, .default_value = static_cast<long long>(d.padlen),
+       .help = "Samples of odd padding of the zero-phase low-pass", .min = 0},
+      {.name = "decimate", .type = OptionType::integer,
+       .help = "Keep one sample in N after the anti-alias filter. Default from fs: floor(fs/100 Hz), 1 to 10 (EMPS: 10)",
+       .min = 1, .deprecated_keywords = {"decimation"}},
+      {.name = "skip", .type = OptionType::integer,
+       .help = "Samples dropped at the start (filter transient). Default from fs: five periods of the cut-off less "
+               "one sample (EMPS: 49)",
+       .min = 0},
+      {.name = "skip-end", .type = OptionType::integer, .default_value = static_cast<long long>(d.skip_end),
+       .help = "Samples dropped at the end (a record that ends in motion needs some)", .min = 0},
+      {.name = "from", .type = OptionType::text,
+       .help = "What the regressors are built from when the data has both: position (filtered, differentiated "
+               "twice) or velocity (filtered like the position, differentiated once). Default: position, or "
+               "velocity when only a velocity is given",
+       .words = {"position", "velocity"}},
+      {.name = "vs", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s", .default_value = d.stribeck_vs,
+       .help = "Stribeck velocity of the stribeck term, or 'search' for the value that minimises the identification "
+               "error",
+       .min = 0, .min_open = true, .words = {"search"},
+       .expected_text = "a Stribeck velocity (m/s or rad/s) or 'search'", .deprecated_keywords = {"stribeck_vs"}},
+      {.name = "delta", .type = OptionType::number, .default_value = d.stribeck_delta,
+       .help = "Stribeck exponent of the stribeck term", .min = 0, .min_open = true,
+       .deprecated_keywords = {"stribeck_delta"}},
+      {.name = "delay", .type = OptionType::integer, .unit = "samples", .default_value = static_cast<long long>(d.input_delay),
+       .help = "Samples by which the applied force lags the recorded input (EMPS: 1, its controller output is "
+               "applied one sample later)",
+       .min = 0, .deprecated_keywords = {"input_delay"}},
+      {.name = "min-velocity", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s",
+       .default_value = d.min_velocity, .help = "No excitation when the largest |velocity| is not above this", .min = 0},
+      {.name = "max-condition", .type = OptionType::number, .default_value = d.max_condition,
+       .help = "Largest condition number of the column-normalised regressor accepted", .min = 1},
+      {.name = "validate", .type = OptionType::file,
+       .help = "Second data file for a cross-test with the identified parameters (Python: a dict with time, force "
+               "and position or velocity)"},
+  };
+  return m;
+}
+#pragma GCC diagnostic pop
+
+IdimOptions make_idim_options(const OptionValues& v) {
+  IdimOptions o;
+  o.terms = v.list("terms");
+  o.filter_order = static_cast<int>(v.integer("filter-order"));
+  o.padlen = static_cast<Eigen::Index>(v.integer("padlen"));
+  o.skip_end = static_cast<Eigen::Index>(v.integer("skip-end"));
+  // Not given: chosen from the sample rate (idim_rate_defaults; the EMPS recipe at 1 kHz).
+  o.auto_cutoff = !v.given("cutoff");
+  o.auto_decimation = !v.given("decimate");
+  o.auto_skip = !v.given("skip");
+  if (v.given("cutoff")) o.cutoff_hz = v.number("cutoff");
+  if (v.given("decimate")) o.decimation = static_cast<int>(v.integer("decimate"));
+  if (v.given("skip")) o.skip = static_cast<Eigen::Index>(v.integer("skip"));
+  const std::string from = v.text("from");
+  o.source = from == "position" ? IdimSource::position : from == "velocity" ? IdimSource::velocity : IdimSource::automatic;
+  if (v.text("vs") == "search") o.search_stribeck_vs = true;
+  else o.stribeck_vs = v.number("vs");
+  o.stribeck_delta = v.number("delta");
+  o.input_delay = static_cast<Eigen::Index>(v.integer("delay"));
+  o.min_velocity = v.number("min-velocity");
+  o.max_condition = v.number("max-condition");
+  return o;
+}
+
 namespace {
 // Is anything left in the residual? Residual checks against velocity, position and time
 // (identify/adequacy.hpp), on the fitted (decimated) samples; the position is the recorded one
@@ -475,8 +559,7 @@ namespace {
 // the filtered velocity at the fitted samples.
 Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, double dt, IdimWorkspace& workspace,
                            Vec* velocity) {
-  Result r = new_result(method_info("idim"), "", options.axis);
-  r.method = "idim";
+  Result r = new_result(method_info(MethodId::idim), "", options.axis);
   r.data_file = data.file;
   r.data_sha256 = data.sha256;
   const bool custom = !options.extra_terms.empty();

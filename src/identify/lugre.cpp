@@ -240,6 +240,54 @@ StaticPart static_part_of(const FrictionLaw& law, const LugreOptions& o) {
 
 }  // namespace
 
+// The table names only the fields an option sets (designated initializers).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+MethodInfo detail::lugre_method_info() {
+  const LugreOptions d;  // every default of the table is the struct's
+  MethodInfo m;
+  m.summary = "LuGre parameters by output error on the position";
+  m.fit_signal = "position";
+  m.fit_quantity = Quantity::displacement;
+  m.options = {
+      {.name = "inertia", .type = OptionType::number, .unit = "kg", .rotary_unit = "kg m^2",
+       .help = "Mass or inertia of the axis", .min = 0, .min_open = true, .required = true},
+      {.name = "static", .type = OptionType::file,
+       .help = "The static law (stribeck, lugre, static-coulomb-viscous, coulomb-viscous), e.g. from identify sweep: "
+               "held fixed instead of identified. Command line: a MODEL.json (or .yaml); Python: a FrictionLaw or "
+               "its dict",
+       .deprecated_keywords = {"static_law"}},
+      {.name = "delta", .type = OptionType::number, .default_value = d.delta,
+       .help = "Stribeck exponent of the identified law, held fixed", .min = 0, .min_open = true},
+      {.name = "stribeck-velocity", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s",
+       .default_value = d.stribeck_velocity,
+       .help = "Stribeck velocity used with a --static static-coulomb-viscous law, which has none", .min = 0,
+       .min_open = true},
+      {.name = "vd", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s", .default_value = d.vd,
+       .help = "Damping decay velocity of the damping sigma1 exp(-(v/vd)^2), held fixed; 0 = constant damping. A "
+               "--static lugre model with vd > 0 gives its own",
+       .min = 0},
+      {.name = "substeps", .type = OptionType::integer, .default_value = static_cast<long long>(d.substeps),
+       .help = "Simulation steps per sample interval of the fit (error ~ 1/substeps^2; run time grows linearly)",
+       .min = 1},
+      {.name = "max-iterations", .type = OptionType::integer, .default_value = static_cast<long long>(d.max_iterations),
+       .help = "Iteration limit of the output-error fit", .min = 1},
+  };
+  return m;
+}
+#pragma GCC diagnostic pop
+
+LugreOptions make_lugre_options(const OptionValues& v) {
+  LugreOptions o;
+  o.inertia = v.number("inertia");
+  o.delta = v.number("delta");
+  o.stribeck_velocity = v.number("stribeck-velocity");
+  o.vd = v.number("vd");
+  o.substeps = static_cast<int>(v.integer("substeps"));
+  o.max_iterations = static_cast<int>(v.integer("max-iterations"));
+  return o;
+}
+
 Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   const auto t_start = std::chrono::steady_clock::now();
   const Eigen::Index n = d.time.size();
@@ -253,7 +301,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
     throw std::invalid_argument("lugre: delta = " + format_number(o.delta) + " must be > 0");
   if (!(std::isfinite(o.vd) && o.vd >= 0))
     throw std::invalid_argument("lugre: vd = " + format_number(o.vd) + " must be >= 0 (m/s or rad/s; 0 = constant damping)");
-  const double dt = regular_time_step(d.time, "lugre");
+  const double dt = regular_time_step(d.time, method_info(MethodId::lugre).name);
   for (Eigen::Index k = 0; k < n; ++k) {
     if (!std::isfinite(d.force[k]))
       throw std::invalid_argument("lugre: force at sample " + std::to_string(k) + " is not finite");
@@ -265,7 +313,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   st.vd = o.vd;
   if (given) st = static_part_of(*o.static_law, o);
 
-  Result r = make_result("lugre", "lugre", o.axis);
+  Result r = make_result(MethodId::lugre, "lugre", o.axis);
   const auto warn = [&](const std::string& w) { r.diagnostics.warnings.push_back(w); };
   const auto vunit = std::string(unit(Quantity::velocity, o.axis));
   const auto punit = std::string(unit(Quantity::displacement, o.axis));
@@ -775,7 +823,6 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
     num["free_run_relative_error_percent"] = 100.0 * (free_run - d.position).norm() / dx.norm();
     r.series["position_free_run"].assign(free_run.data(), free_run.data() + n);
   }
-  num["fit_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   return r;
 }
 

@@ -8,7 +8,7 @@
 
 namespace frictionlab::detail {
 
-Result make_result(const std::string& method, const std::string& model, Axis axis) {
+Result make_result(MethodId method, const std::string& model, Axis axis) {
   return new_result(method_info(method), model, axis);
 }
 

@@ -13,9 +13,17 @@
 
 namespace frictionlab::detail {
 
+/// Each method's description (summary, fitted signal, options), from its own file; the registry
+/// (identify/method.cpp) adds its name and id from FRICTIONLAB_METHODS.
+#define FRICTIONLAB_METHOD_INFO_DECL(id) MethodInfo id##_method_info();
+FRICTIONLAB_METHODS(FRICTIONLAB_METHOD_INFO_DECL)
+#undef FRICTIONLAB_METHOD_INFO_DECL
+
 /// An empty ok Result of `method` (identify/method.hpp) fitting `model` on `axis`: the axis and
 /// the fit's quantity and unit set (new_result).
-Result make_result(const std::string& method, const std::string& model, Axis axis);
+Result make_result(MethodId method, const std::string& model, Axis axis);
+
+
 
 /// Sets status error with `message` and returns the result (for `return fail(r, "...")`).
 Result fail(Result& r, const std::string& message);

@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+
+#include "frictionlab/version.hpp"
 #include <stdexcept>
 
 namespace frictionlab {
@@ -29,6 +31,7 @@ double Result::value(const std::string& name) const {
 std::string to_json(const Result& r, int indent) {
   nlohmann::json j;
   j["schema"] = 1;
+  j["frictionlab"] = {{"version", kVersion}};  // the program that made the result (reproducibility)
   j["status"] = r.ok() ? "ok" : "error";
   j["message"] = r.message;
   j["method"] = r.method;

@@ -36,7 +36,96 @@ int parameter_count(StaticFitModel m, bool fixed_delta) {
   }
   return 5;
 }
+
+std::string model_name(StaticFitModel m) {
+  switch (m) {
+    case StaticFitModel::coulomb_viscous: return "coulomb-viscous";
+    case StaticFitModel::coulomb_viscous_asymmetric: return "coulomb-viscous-asymmetric";
+    case StaticFitModel::stribeck: return "stribeck";
+    case StaticFitModel::stribeck_asymmetric: return "stribeck-asymmetric";
+  }
+  return "stribeck";
+}
 }  // namespace
+
+// The table names only the fields an option sets (designated initializers).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+MethodInfo detail::sweep_method_info() {
+  const SweepOptions d;  // every default of the table is the struct's
+  MethodInfo m;
+  m.summary = "constant-velocity tests: a friction-velocity map and a fitted static law";
+  m.fit_signal = "friction force";
+  m.fit_quantity = Quantity::force;
+  auto& o = m.options;
+  o.push_back({.name = "model", .type = OptionType::text, .default_value = model_name(d.fit.model),
+               .help = "Law to fit to the steady segments' points",
+               .words = {"coulomb-viscous", "coulomb-viscous-asymmetric", "stribeck", "stribeck-asymmetric"},
+               .refusal = "cannot be fitted to a friction-velocity map"});
+  o.push_back({.name = "delta", .type = OptionType::number, .default_value = d.fit.fixed_delta,
+               .help = "Hold the Stribeck exponent at this value; 0: fitted (within 0.5 to 5)", .min = 0,
+               .deprecated_keywords = {"fixed_delta"}});
+  o.push_back({.name = "tolerance", .type = OptionType::number, .default_value = d.relative_tolerance,
+               .help = "Relative velocity band of a steady segment (a fraction of its speed)", .min = 0,
+               .deprecated_keywords = {"relative_tolerance"}});
+  o.push_back({.name = "velocity-tolerance", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s",
+               .default_value = d.velocity_tolerance, .help = "Absolute velocity band of a steady segment", .min = 0});
+  o.push_back({.name = "noise-band", .type = OptionType::number, .default_value = d.noise_band,
+               .help = "Half-width of the steady band in standard deviations of the smoothed velocity's measured noise",
+               .min = 0});
+  o.push_back({.name = "smoothing-fraction", .type = OptionType::number, .default_value = d.smoothing_fraction,
+               .help = "Moving-average window of the velocity, as a fraction of --min-duration", .min = 0, .min_open = true});
+  o.push_back({.name = "min-duration", .type = OptionType::number, .unit = "s", .default_value = d.min_duration,
+               .help = "Shortest steady segment kept", .min = 0, .min_open = true});
+  o.push_back({.name = "settle-fraction", .type = OptionType::number, .default_value = d.settle_fraction,
+               .help = "Part of each segment dropped at its start (the settling of the previous speed step)", .min = 0,
+               .max = 1, .max_open = true});
+  o.push_back({.name = "min-speed", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s",
+               .help = "Slower segments are standstill, not sliding. Default: 1e-6 of the largest |velocity| (of "
+                       "--reference when given)",
+               .min = 0});
+  o.push_back({.name = "min-segments", .type = OptionType::integer,
+               .help = "Fewer steady segments is an error. Default: the law's parameter count + 1", .min = 1});
+  o.push_back({.name = "segment", .type = OptionType::list, .unit = "s",
+               .help = "T_BEGIN:T_END of a steady segment, instead of detection (repeatable; Python: a list of "
+                       "(t_begin, t_end) pairs)",
+               .repeatable = true, .deprecated_keywords = {"windows"}});
+  o.push_back({.name = "reference", .type = OptionType::column, .unit = "m/s", .rotary_unit = "rad/s",
+               .help = "Commanded velocity: steady segments are found on it instead of on the measured velocity "
+                       "(which is smoothed, with a band that covers its measured noise). Python: an array of the "
+                       "data's length"});
+  return m;
+}
+#pragma GCC diagnostic pop
+
+SweepOptions make_sweep_options(const OptionValues& v) {
+  SweepOptions o;
+  o.fit.model = parse_static_fit_model(v.text("model"));
+  o.fit.fixed_delta = v.number("delta");
+  o.relative_tolerance = v.number("tolerance");
+  o.velocity_tolerance = v.number("velocity-tolerance");
+  o.noise_band = v.number("noise-band");
+  o.smoothing_fraction = v.number("smoothing-fraction");
+  o.min_duration = v.number("min-duration");
+  o.settle_fraction = v.number("settle-fraction");
+  if (v.given("min-speed")) o.min_speed = v.number("min-speed");
+  if (v.given("min-segments")) o.min_segments = static_cast<int>(v.integer("min-segments"));
+  for (const auto& s : v.list("segment")) {
+    const auto colon = s.find(':');
+    try {
+      std::size_t used = 0;
+      if (colon == std::string::npos) throw std::invalid_argument("");
+      const double a = std::stod(s.substr(0, colon), &used);
+      if (used != colon) throw std::invalid_argument("");
+      const double b = std::stod(s.substr(colon + 1), &used);
+      if (used != s.size() - colon - 1) throw std::invalid_argument("");
+      o.windows.push_back({a, b});
+    } catch (const std::exception&) {
+      throw std::invalid_argument("--segment '" + s + "': expected T_BEGIN:T_END in seconds, e.g. 2.5:4.0");
+    }
+  }
+  return o;
+}
 
 std::vector<SweepPoint> sweep_points(const SweepData& d, const SweepOptions& o) {
   const Eigen::Index n = d.time.size();
@@ -47,6 +136,7 @@ std::vector<SweepPoint> sweep_points(const SweepData& d, const SweepOptions& o) 
   for (Eigen::Index k = 0; k < n; ++k)
     if (!std::isfinite(d.time[k]) || !std::isfinite(d.force[k]) || !std::isfinite(d.velocity[k]))
       throw std::invalid_argument("sweep: sample " + std::to_string(k + 1) + " (counted from 1) is not finite");
+  if (n >= 3) regular_time_step(d.time, method_info(MethodId::sweep).name);  // the time column checked as every method checks it
   std::vector<SweepPoint> points;
   if (!o.windows.empty()) {
     for (const auto& w : o.windows) {
@@ -126,11 +216,8 @@ std::vector<SweepPoint> sweep_points(const SweepData& d, const SweepOptions& o) 
 
 Result identify_sweep(const SweepData& d, const SweepOptions& o) {
   const auto points = sweep_points(d, o);
-  const std::string model = o.fit.model == StaticFitModel::stribeck ? "stribeck"
-                            : o.fit.model == StaticFitModel::stribeck_asymmetric ? "stribeck-asymmetric"
-                            : o.fit.model == StaticFitModel::coulomb_viscous ? "coulomb-viscous"
-                                                                              : "coulomb-viscous-asymmetric";
-  Result r = make_result("sweep", model, o.axis);
+  const std::string model = model_name(o.fit.model);
+  Result r = make_result(MethodId::sweep, model, o.axis);
   if (d.time.size() >= 2 && o.windows.empty()) {
     const double dt = (d.time[d.time.size() - 1] - d.time[0]) / static_cast<double>(d.time.size() - 1);
     r.diagnostics.numbers["smoothing_samples"] =

@@ -2,6 +2,7 @@
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/identify/validate.hpp"
 #include "frictionlab/identify/method.hpp"
+#include "method_support.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -134,6 +135,31 @@ IdentifiedModel model_from_result(const Result& r) {
   return m;
 }
 
+// The table names only the fields an option sets (designated initializers).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+MethodInfo detail::validate_method_info() {
+  MethodInfo m;
+  m.summary = "simulation of an identified model against a measured run";
+  const char* xy = "two-axis plant (xy-table): ";
+  m.options = {
+      {.name = "scenario", .type = OptionType::file,
+       .help = "Scenario YAML: plant (axis), controller and input (e.g. examples/emps_closed_loop.yaml); its data "
+               "inputs read the data, its M, offset and friction come from the model",
+       .required = true},
+      {.name = "x", .type = OptionType::column, .unit = "m", .default_value = std::string("x.position"),
+       .help = std::string(xy) + "measured x position"},
+      {.name = "y", .type = OptionType::column, .unit = "m", .default_value = std::string("y.position"),
+       .help = std::string(xy) + "measured y position"},
+      {.name = "x-force", .type = OptionType::column, .unit = "N", .default_value = std::string("x.drive"),
+       .help = std::string(xy) + "x drive force (--scale NAME=N_PER_UNIT converts a command); compared when present"},
+      {.name = "y-force", .type = OptionType::column, .unit = "N", .default_value = std::string("y.drive"),
+       .help = std::string(xy) + "y drive force; compared when present"},
+  };
+  return m;
+}
+#pragma GCC diagnostic pop
+
 Result validate_model(const IdentifiedModel& model, const Scenario& scenario, const ValidationData& data,
                       const ValidateOptions& options) {
   if (!scenario.plant) throw std::invalid_argument("validate: the scenario has no plant");
@@ -160,8 +186,7 @@ Result validate_model(const IdentifiedModel& model, const Scenario& scenario, co
   const Vec f_sim = Eigen::Map<const Vec>(tr.drive.data(), n);
   const Motion sim = derive(q_sim, dt, po);
 
-  Result r = new_result(method_info("validate"), "", options.processing.axis);
-  r.method = "validate";
+  Result r = new_result(method_info(MethodId::validate), "", options.processing.axis);
   r.model = model.law.name();
   r.data_file = model.source;
   const char* names[] = {"position", "velocity", "acceleration", "force"};
@@ -249,8 +274,7 @@ Result validate_axes(const Scenario& scenario, const MultiAxisValidationData& da
   const Trajectory tr = simulate(sc);
   check_rows(tr, n);
 
-  Result r = new_result(method_info("validate"), "", po.axis);
-  r.method = "validate";
+  Result r = new_result(method_info(MethodId::validate), "", po.axis);
   ValidationFigures v;
   v.file = data.file;
   v.sha256 = data.sha256;

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <limits>
 
+#include "frictionlab/identify/options.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
 
@@ -34,6 +35,11 @@ struct BreakawayOptions {
   int edge_samples = 2;
   Axis axis = Axis::rotary;  ///< units of the report; a motor is rotary
 };
+
+/// The options of a breakaway run from the values of its option table
+/// (method_info(MethodId::breakaway)); the table's defaults where a value is not given. The axis
+/// is the caller's to set.
+BreakawayOptions make_breakaway_options(const OptionValues& values);
 
 /// Identifies Fs, Fc, Fv (and M when no inertia is given) from a trapezoid experiment.
 /// parameters: the dynamic estimate (Fc, Fv by least squares of M a + Fv v + Fc sign(v) = force

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <limits>
 
+#include "frictionlab/identify/options.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
 
@@ -34,6 +35,10 @@ struct DecayOptions {
   double stop_threshold = std::numeric_limits<double>::quiet_NaN();
   Axis axis = Axis::linear;
 };
+
+/// The options of a decay run from the values of its option table (method_info(MethodId::decay));
+/// the table's defaults where a value is not given. The axis is the caller's to set.
+DecayOptions make_decay_options(const OptionValues& values);
 
 /// Estimates Fc and Fv (or Fc/k and zeta) with standard deviations from a free decay.
 /// Needs at least 3 half cycles; fewer gives status "error" with the count found.

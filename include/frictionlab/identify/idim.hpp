@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "frictionlab/identify/idim_workspace.hpp"
+#include "frictionlab/identify/options.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
 
@@ -124,6 +125,12 @@ struct IdimOptions {
   /// What the regressors are built from (IdimData may hold both). Default automatic.
   IdimSource source = IdimSource::automatic;
 };
+
+/// The options of an IDIM run from the values of its option table (method_info(MethodId::idim));
+/// the table's defaults where a value is not given; cutoff, decimate and skip not given are
+/// chosen from the sample rate (auto_cutoff, auto_decimation, auto_skip). The second file of
+/// --validate and the axis are the caller's.
+IdimOptions make_idim_options(const OptionValues& values);
 
 /// The regression the recipe builds: decimated regressor matrix, decimated force, and the terms.
 struct IdimRegression {

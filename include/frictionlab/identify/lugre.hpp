@@ -17,6 +17,7 @@
 #include <functional>
 #include <optional>
 
+#include "frictionlab/identify/options.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/friction_law.hpp"
 #include "frictionlab/models/parameter.hpp"
@@ -69,6 +70,11 @@ struct LugreOptions {
   Axis axis = Axis::linear;  ///< units of the report
 };
 
+/// The options of a LuGre fit from the values of its option table (method_info(MethodId::lugre));
+/// the table's defaults where a value is not given. The static law (a file or a Python law) and
+/// the axis are the caller's to set.
+LugreOptions make_lugre_options(const OptionValues& values);
+
 /// Identifies the LuGre parameters of a rigid axis from applied force and position.
 /// The output error is taken over windows: from the record's start (at rest, z = 0) to the first
 /// velocity peak, then from each peak to the next, each window restarted with the bristles in
@@ -83,7 +89,7 @@ struct LugreOptions {
 /// fit or not determined by the record (near-singular information, or a std above the value);
 /// 0 for values held from `static_law`; delta (and vd when > 0) held, std 0.
 /// fit: relative error (%) and RMSE (m) of the simulated position.
-/// diagnostics: numbers "iterations", "cost_initial", "cost_final" (m^2), "fit_seconds",
+/// diagnostics: numbers "iterations", "cost_initial", "cost_final" (m^2),
 /// "substeps", "windows", "passive" (1 / 0), "static_given" (1 / 0), "presliding_samples", and
 /// with the static part identified "fits" and "position_noise_std" (m, from fourth differences);
 /// groups "start" (the starting values) and, when identified, "static_fit" (the static Stribeck

@@ -1,8 +1,14 @@
 #pragma once
 // What the library says about each identification method, so that a result's readers (the text
 // table, the report, the JSON, Python) need no switch on the method's name: its name, one line
-// on what it does, and the signal its fit figures measure. Each method stamps its Result with it
-// (new_result); the result then carries its axis and its fit's quantity and unit itself.
+// on what it does, the signal its fit figures measure, and its options (identify/options.hpp).
+// Each method stamps its Result with it (new_result); the result then carries its axis and its
+// fit's quantity and unit itself.
+//
+// The methods are registered in one place, FRICTIONLAB_METHODS below: adding a method means its
+// own files (src/identify/NAME.cpp with NAME_method_info(), app/methods/NAME.cpp with
+// NAME_method(), python/src/methods/NAME.cpp with NAME_binding(), python/frictionlab/methods/NAME.py)
+// and one line there. The method's name is that line's word; nowhere else is it written.
 
 #include <optional>
 #include <string>
@@ -10,11 +16,29 @@
 #include <utility>
 #include <vector>
 
+#include "frictionlab/identify/options.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
 
+/// Every identification method (and validate), in the order the command line, Python and the docs
+/// list them: X(NAME) for each. The library, the command line and the Python module expand it.
+#define FRICTIONLAB_METHODS(X) \
+  X(idim)                      \
+  X(breakaway)                 \
+  X(sweep)                     \
+  X(decay)                     \
+  X(lugre)                     \
+  X(validate)
+
 #include "frictionlab/export.hpp"
 namespace FRICTIONLAB_API frictionlab {
+
+/// A method by its registration (FRICTIONLAB_METHODS): MethodId::sweep.
+enum class MethodId {
+#define FRICTIONLAB_METHOD_ID(name) name,
+  FRICTIONLAB_METHODS(FRICTIONLAB_METHOD_ID)
+#undef FRICTIONLAB_METHOD_ID
+};
 
 /// One identification method (or validation) of the library.
 struct MethodInfo {
@@ -26,14 +50,29 @@ struct MethodInfo {
   std::string fit_signal;
   /// Its quantity (hence the rmse's unit on the result's axis); nullopt with an empty fit_signal.
   std::optional<Quantity> fit_quantity;
+  /// The method's options, in the order of its help and reference (identify/options.hpp).
+  std::vector<OptionSpec> options;
+  /// Its id (FRICTIONLAB_METHODS).
+  MethodId id = MethodId::idim;
+
+  /// The option named `name` (its flag without "--"), or nullptr.
+  const OptionSpec* option(const std::string& name) const;
+  /// Empty option values over this method's table (set them, then make the method's options).
+  OptionValues values() const { return OptionValues(options); }
 };
 
-/// The library's methods, in the order the command line and the docs list them. Adding a method:
-/// its own files and one line in src/identify/method.cpp.
+/// The library's methods, in the order of FRICTIONLAB_METHODS.
 const std::vector<MethodInfo>& identification_methods();
 
 /// The method named `name`. \throws std::invalid_argument listing the names.
 const MethodInfo& method_info(std::string_view name);
+/// The method `id`.
+const MethodInfo& method_info(MethodId id);
+
+/// The options reference of every method as Markdown (`frictionlab help --markdown`): per method a
+/// heading, its summary and a table of its options (flag, Python keyword, type, unit, default,
+/// valid values, help).
+std::string options_markdown();
 
 /// An empty ok result of `method` fitting `model` on `axis`: method, model, axis, and the fit's
 /// quantity (fit.quantity, words) and unit (fit.unit, e.g. "N m" on a rotary axis) set.

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "frictionlab/identify/options.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/identify/static_fit.hpp"
 #include "frictionlab/models/parameter.hpp"
@@ -63,6 +64,12 @@ struct SweepOptions {
   int min_segments = -1;
   Axis axis = Axis::rotary;
 };
+
+/// The options of a sweep from the values of its option table (method_info(MethodId::sweep),
+/// identify/options.hpp): the table's defaults where a value is not given. The reference column
+/// and the axis are the caller's to set.
+/// \throws std::invalid_argument for a --segment that is not T_BEGIN:T_END in seconds.
+SweepOptions make_sweep_options(const OptionValues& values);
 
 /// One point of the friction-velocity map: mean and standard deviation over a steady segment.
 struct SweepPoint {

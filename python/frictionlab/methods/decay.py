@@ -1,29 +1,24 @@
 """Free decay from Python: identify_decay."""
 from .. import _core
-from .._args import _nan, _source
+from .._args import _method_options, _source, _with_options_doc
 
 __all__ = ["identify_decay"]
 
 
-def identify_decay(time, position, *, stiffness=None, inertia=None, natural_frequency=None, pendulum=False,
-                   stop_threshold=None, axis="linear", source=None):
+@_with_options_doc("decay")
+def identify_decay(time, position, *, axis="linear", source=None, **options):
     """Coulomb and viscous friction from a free decay (pendulum or spring-mass), by the energy
     lost per half cycle.
 
     Arrays: ``time`` (s, regular), ``position`` (m or rad, from the equilibrium).
-    Options: ``stiffness`` (N/m or N m/rad; a pendulum's m g l), or ``natural_frequency``
-    (sqrt(k/M), rad/s) with ``inertia`` (kg or kg m^2) for force units (without inertia: Fc/k
-    and the damping ratio), ``pendulum`` (restoring k sin(x)), ``stop_threshold`` (|v| at which
-    the motion stopped; default 1e-6 max |v|), ``axis`` ("linear" default).
+    Give ``stiffness``, or ``natural_frequency`` with ``inertia`` for force units (without
+    inertia: Fc/k and the damping ratio). ``axis`` ("linear" default) picks the units.
     """
-    o = _core.DecayOptions()
-    o.stiffness = _nan("identify_decay", "stiffness", stiffness)
-    o.inertia = _nan("identify_decay", "inertia", inertia)
-    o.natural_frequency = _nan("identify_decay", "natural_frequency", natural_frequency)
-    o.pendulum = bool(pendulum)
-    o.stop_threshold = _nan("identify_decay", "stop_threshold", stop_threshold)
+    values, _ = _method_options("decay", "identify_decay", options)
+    o = _core._make_decay_options(values)
     o.axis = axis
     r = _core._identify_decay(time, position, o)
+    r._record_options(values)
     r._stamp(*_source(source))
     r.inputs = {"time": time, "position": position}
     return r

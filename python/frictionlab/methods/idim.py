@@ -2,38 +2,27 @@
 import numpy as np
 
 from .. import _core
-from .._args import _source
+from .._args import _method_options, _source, _with_options_doc
 
 __all__ = ["identify_idim", "cross_test", "idim_regression", "idim_reconstruction"]
 
-_IDIM_DEFAULT_TERMS = ("inertia", "viscous", "coulomb", "offset")
-
-
-def _idim_options(terms=_IDIM_DEFAULT_TERMS, cutoff_hz=100.0, filter_order=4, padlen=12, input_delay=0, skip=49,
-                  skip_end=0, decimation=10, stribeck_vs=0.01, stribeck_delta=2.0, min_velocity=0.0,
-                  max_condition=1e8, axis="linear"):
-    o = _core.IdimOptions()
-    if isinstance(terms, str):
-        terms = [t.strip() for t in terms.split(",") if t.strip()]
-    o.terms = list(terms)
-    o.cutoff_hz = cutoff_hz
-    o.filter_order = filter_order
-    o.padlen = padlen
-    o.input_delay = input_delay
-    o.skip = skip
-    o.skip_end = skip_end
-    o.decimation = decimation
-    if isinstance(stribeck_vs, str):
-        if stribeck_vs != "search":
-            raise ValueError(f"stribeck_vs '{stribeck_vs}': expected a Stribeck velocity (m/s or rad/s) or 'search'")
-        o.search_stribeck_vs = True
-    else:
-        o.stribeck_vs = float(stribeck_vs)
-    o.stribeck_delta = stribeck_delta
-    o.min_velocity = min_velocity
-    o.max_condition = max_condition
+def _idim_options(function, options, time=None):
+    """(values, IdimOptions, inputs) from keyword options checked against idim's option table;
+    ``axis`` among them picks the units. With ``time``, cutoff, decimate and skip not given are
+    taken from its sample rate (idim_rate_defaults), and marked so in the result."""
+    options = dict(options)
+    axis = options.pop("axis", "linear")
+    values, inputs = _method_options("idim", function, options, stacklevel=4)
+    o = _core._make_idim_options(values)
     o.axis = axis
-    return o
+    given = {k: values.given(k) for k in ("cutoff", "skip", "decimate")}
+    cutoff, skip, decimation, chosen = _rate_defaults(time, None if not given["cutoff"] else o.cutoff_hz,
+                                                      None if not given["skip"] else o.skip,
+                                                      None if not given["decimate"] else o.decimation)
+    o.cutoff_hz, o.skip, o.decimation = cutoff, skip, decimation
+    # The values taken from the sample rate are listed as such in diagnostics["defaults"].
+    o.auto_cutoff, o.auto_decimation, o.auto_skip = (k in chosen for k in ("cutoff_hz", "decimation", "skip"))
+    return values, o, inputs
 
 
 def _rate_defaults(time, cutoff_hz, skip, decimation):
@@ -55,10 +44,8 @@ def _rate_defaults(time, cutoff_hz, skip, decimation):
             d["decimation"] if decimation is None else decimation, chosen)
 
 
-def identify_idim(time, force, position=None, velocity=None, *, terms=_IDIM_DEFAULT_TERMS, cutoff_hz=None,
-                  filter_order=4, padlen=12, input_delay=0, skip=None, skip_end=0, decimation=None, stribeck_vs=0.01,
-                  stribeck_delta=2.0, min_velocity=0.0, max_condition=1e8, axis="linear", source=None,
-                  validate=None):
+@_with_options_doc("idim")
+def identify_idim(time, force, position=None, velocity=None, *, axis="linear", source=None, **options):
     """IDIM-LS: inverse dynamic model least squares on a measured trajectory,
     ``force = M qdd + Fv qd + Fc sign(qd) + offset (+ further terms)``, by the EMPS recipe
     (zero-phase Butterworth low-pass of the position, central differences, skip, decimate, OLS).
@@ -67,41 +54,24 @@ def identify_idim(time, force, position=None, velocity=None, *, terms=_IDIM_DEFA
     N or N m: gain times the drive input), and ``position`` (m or rad) or, when no position is
     given, ``velocity`` (m/s or rad/s, filtered but not differentiated).
 
-    Options (defaults = EMPS recipe; cutoff_hz, skip and decimation follow the sample rate
-    when not given, see idim_rate_defaults: exactly 100 Hz, 49, 10 at 1 kHz):
-      terms           regressors in column order: "inertia" (M, kg), "viscous" (Fv, N s/m),
-                      "coulomb" (Fc, N), "offset" (N), "asymmetric" (Fv_pos, Fc_pos, Fv_neg,
-                      Fc_neg), each of those four alone, "stribeck" (Fs_minus_Fc, N); a list or
-                      a comma-separated string
-      cutoff_hz       position low-pass cut-off, Hz (100); filter_order (4); padlen, samples (12)
-      input_delay     samples by which the applied force lags the recorded input (0; EMPS: 1)
-      skip, skip_end  samples dropped at the start (49) and end (0)
-      decimation      keep one sample in N after the anti-alias filter (10)
-      stribeck_vs     Stribeck velocity of the "stribeck" term, m/s or rad/s (0.01), or
-                      "search" for the value minimising the identification error
-      stribeck_delta  Stribeck exponent (2)
-      min_velocity    no excitation when max |qd| is not above this, m/s or rad/s (0)
-      max_condition   status error above this condition number (1e8)
-      axis            "linear" (N, kg, m/s) or "rotary" (N m, kg m^2, rad/s): units reported
-      source          the Data from load() (or a path) the arrays came from: its file name
-                      and sha256 go into the result
-      validate        optional second run for a cross-test with the identified parameters:
-                      a dict with "time", "force" and "position" or "velocity" (and optionally
-                      "source"); sets result.validation
+    Defaults are the EMPS recipe; cutoff, skip and decimate follow the sample rate when not
+    given (idim_rate_defaults: exactly 100 Hz, 49, 10 at 1 kHz). ``axis``: "linear" (N, kg,
+    m/s) or "rotary" (N m, kg m^2, rad/s); ``source``: the Data from load() (or a path) the
+    arrays came from, its file name and sha256 go into the result; ``validate``: a second run
+    for a cross-test, a dict with "time", "force" and "position" or "velocity" (and optionally
+    "source"); sets result.validation.
 
     Returns a Result; ``result.law`` is the identified friction law. The arrays and options
     are kept on the result (``result.inputs``, ``result.options``) for idim_reconstruction and
     frictionlab.plot.idim.
     """
-    cutoff_hz, skip, decimation, chosen = _rate_defaults(time, cutoff_hz, skip, decimation)
-    opts = _idim_options(terms, cutoff_hz, filter_order, padlen, input_delay, skip, skip_end, decimation,
-                         stribeck_vs, stribeck_delta, min_velocity, max_condition, axis)
-    # The values taken from the sample rate are listed as such in diagnostics["defaults"].
-    opts.auto_cutoff, opts.auto_decimation, opts.auto_skip = (k in chosen for k in ("cutoff_hz", "decimation", "skip"))
+    values, opts, inputs = _idim_options("identify_idim", dict(options, axis=axis), time)
     file, sha = _source(source)
     r = _core._identify_idim(time, force, position, velocity, opts, file, sha)
+    r._record_options(values)
     r.inputs = {"time": time, "force": force, "position": position, "velocity": velocity}
     r.options = opts
+    validate = inputs.get("validate")
     if validate is not None and r.ok:
         r._set_validation(cross_test(r, **validate))
     return r
@@ -118,7 +88,7 @@ def cross_test(result, time, force, position=None, velocity=None, *, source=None
     """
     opts = getattr(result, "options", None) if not options else None
     if opts is None:
-        opts = _idim_options(**options)
+        _, opts, _ = _idim_options("cross_test", options)
     file, sha = _source(source)
     return _core._cross_test(result, time, force, position, velocity, opts, file, sha)
 
@@ -128,7 +98,7 @@ def idim_regression(time, force, position=None, velocity=None, **options):
     n x p), ``y`` (decimated force, N or N m), ``parameters`` (the p names, column order),
     ``dt`` (mean raw sample step, s) and ``max_speed`` (m/s or rad/s). Options as identify_idim.
     """
-    return _core._idim_regression(time, force, position, velocity, _idim_options(**options))
+    return _core._idim_regression(time, force, position, velocity, _idim_options("idim_regression", options)[1])
 
 
 def idim_reconstruction(result, time=None, force=None, position=None, velocity=None):
@@ -138,7 +108,7 @@ def idim_reconstruction(result, time=None, force=None, position=None, velocity=N
     """
     if not result.ok:
         raise ValueError(f"idim result has status error: {result.message}")
-    opts = getattr(result, "options", None) or _idim_options()
+    opts = getattr(result, "options", None) or _idim_options("idim_reconstruction", {})[1]
     if time is None:
         inputs = getattr(result, "inputs", None)
         if inputs is None:

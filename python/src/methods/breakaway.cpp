@@ -13,6 +13,8 @@ void bind(py::module_& m) {
       .def_readwrite("inertia", &BreakawayOptions::inertia, "Inertia held fixed, kg m^2 or kg (NaN: estimated as M).")
       .def_readwrite("velocity_threshold", &BreakawayOptions::velocity_threshold, "|v| above which the axis moves, rad/s or m/s (NaN: 1 % of max |v|).")
       .def_readwrite("edge_samples", &BreakawayOptions::edge_samples, "Samples skipped at each end of a sliding interval (2).");
+  m.def("_make_breakaway_options", &make_breakaway_options, py::arg("values"),
+        "BreakawayOptions from the values of the method's option table (_option_values).");
   axis_property(brk_opts);
 
   m.def("_identify_breakaway", [](py::object time, py::object force, py::object velocity, const BreakawayOptions& o) {
@@ -25,6 +27,6 @@ void bind(py::module_& m) {
 
 }  // namespace
 
-PyMethod breakaway_binding() { return {"breakaway", "identify_breakaway", bind}; }
+PyMethod breakaway_binding() { return {"identify_breakaway", bind, {}}; }
 
 }  // namespace frictionlab::python

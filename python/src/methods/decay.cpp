@@ -15,6 +15,8 @@ void bind(py::module_& m) {
       .def_readwrite("natural_frequency", &DecayOptions::natural_frequency, "sqrt(k/M), rad/s.")
       .def_readwrite("pendulum", &DecayOptions::pendulum, "Restoring force k sin(x) instead of k x.")
       .def_readwrite("stop_threshold", &DecayOptions::stop_threshold, "|v| below which the motion stopped (NaN: 1e-6 max |v|).");
+  m.def("_make_decay_options", &make_decay_options, py::arg("values"),
+        "DecayOptions from the values of the method's option table (_option_values).");
   axis_property(decay_opts);
 
   m.def("_identify_decay", [](py::object time, py::object position, const DecayOptions& o) {
@@ -27,6 +29,6 @@ void bind(py::module_& m) {
 
 }  // namespace
 
-PyMethod decay_binding() { return {"decay", "identify_decay", bind}; }
+PyMethod decay_binding() { return {"identify_decay", bind, {}}; }
 
 }  // namespace frictionlab::python

@@ -47,6 +47,8 @@ void bind(py::module_& m) {
       .def_readwrite("stribeck_delta", &IdimOptions::stribeck_delta, "Stribeck exponent (2).")
       .def_readwrite("min_velocity", &IdimOptions::min_velocity, "No excitation at or below this max |qd|, m/s or rad/s (0).")
       .def_readwrite("max_condition", &IdimOptions::max_condition, "Largest condition number accepted (1e8).");
+  m.def("_make_idim_options", &make_idim_options, py::arg("values"),
+        "IdimOptions from the values of the method's option table (_option_values).");
   axis_property(idim_opts);
   m.def(
       "idim_rate_defaults",
@@ -92,6 +94,6 @@ void bind(py::module_& m) {
 
 }  // namespace
 
-PyMethod idim_binding() { return {"idim", "identify_idim", bind}; }
+PyMethod idim_binding() { return {"identify_idim", bind, {}}; }
 
 }  // namespace frictionlab::python

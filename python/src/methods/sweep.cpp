@@ -31,6 +31,8 @@ void bind(py::module_& m) {
         o.windows.clear();
         for (const auto& [a, b] : w) o.windows.push_back({a, b});
       }, "Steady windows [(t_begin, t_end), ...] in s instead of detection ([]: detect).");
+  m.def("_make_sweep_options", &make_sweep_options, py::arg("values"),
+        "SweepOptions from the values of the method's option table (_option_values).");
   axis_property(sweep_opts);
 
   m.def("_identify_sweep", [](py::object time, py::object force, py::object velocity, const SweepOptions& o) {
@@ -62,6 +64,6 @@ void bind(py::module_& m) {
 
 }  // namespace
 
-PyMethod sweep_binding() { return {"sweep", "identify_sweep", bind}; }
+PyMethod sweep_binding() { return {"identify_sweep", bind, {}}; }
 
 }  // namespace frictionlab::python

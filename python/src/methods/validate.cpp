@@ -84,6 +84,6 @@ void bind(py::module_& m) {
 
 }  // namespace
 
-PyMethod validate_binding() { return {"validate", "validate", bind}; }
+PyMethod validate_binding() { return {"validate", bind, {}}; }
 
 }  // namespace frictionlab::python
