@@ -6,7 +6,7 @@
 
 #include "commands.hpp"
 #include "frictionlab/identify/method.hpp"
-#include "frictionlab/io/atomic_write.hpp"
+#include "io/atomic_write.hpp"
 #include "output.hpp"
 
 namespace frictionlab::cli {

@@ -14,7 +14,8 @@
 #include <variant>
 #include <vector>
 
-namespace frictionlab {
+#include "frictionlab/export.hpp"
+namespace FRICTIONLAB_API frictionlab {
 
 /// What an option's value is.
 enum class OptionType {
