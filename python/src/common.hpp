@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <initializer_list>
+#include <map>
 #include <span>
 #include <stdexcept>
 #include <utility>
@@ -69,6 +70,13 @@ void same_length(const std::string& function, std::initializer_list<NamedLength>
 /// A finite number argument (a Python int or float, a numpy scalar). \throws argument_type_error
 /// for None or a non-number, std::invalid_argument for NaN or inf, naming the argument.
 double number_arg(const py::handle& x, const std::string& function, const std::string& name);
+
+/// A compensation given as a type name or a dict {"type": TYPE, parameter: value, ...}
+/// (control/compensation_spec.hpp): its type and parameters. `function` and `name` name the
+/// argument in messages. \throws argument_type_error for anything else or a type that is not a
+/// string, std::invalid_argument for a dict without 'type' or a parameter that is not a finite number.
+std::pair<std::string, std::map<std::string, double>> compensation_arg(const py::handle& c, const std::string& function,
+                                                                       const std::string& name);
 
 /// A new numpy array holding a copy of the values.
 py::array_t<double> to_array(std::span<const double> values);

@@ -26,31 +26,10 @@ ModelFile model_arg(const py::handle& model) {
       "MODEL.json, got " + py::cast<std::string>(py::str(py::type::of(model).attr("__name__"))));
 }
 
-// None, a type name, or {"type": TYPE, parameter: value, ...}.
-CompensationParams compensation_arg(const py::handle& c, const ModelFile& model) {
+// None, a type name, or {"type": TYPE, parameter: value, ...}, on the model's inertia.
+CompensationParams compensation_params(const py::handle& c, const ModelFile& model) {
   if (c.is_none()) return {};
-  std::string type;
-  std::map<std::string, double> values;
-  if (py::isinstance<py::str>(c)) {
-    type = py::cast<std::string>(c);
-  } else if (py::isinstance<py::dict>(c)) {
-    for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(c)) {
-      const std::string k = py::cast<std::string>(py::str(key));
-      if (k == "type") {
-        if (!py::isinstance<py::str>(value))
-          throw argument_type_error("export_c: argument compensation['type']: expected a compensation name");
-        type = py::cast<std::string>(value);
-      } else {
-        values[k] = number_arg(value, "export_c", "compensation['" + k + "']");
-      }
-    }
-    if (type.empty())
-      throw std::invalid_argument("export_c: argument compensation: missing 'type' (feedforward, feedback, "
-                                  "lugre-observer or disturbance-observer)");
-  } else {
-    throw argument_type_error("export_c: argument compensation: expected None, a compensation name or a dict "
-                              "{'type': NAME, parameter: value}");
-  }
+  const auto [type, values] = compensation_arg(c, "export_c", "compensation");
   try {
     return make_compensation(type, values, model.inertia);
   } catch (const std::invalid_argument& e) {
@@ -67,7 +46,7 @@ void init_export(py::module_& m) {
          const py::handle& path, bool overwrite) {
         const ModelFile em = model_arg(model);
         CExportOptions o;
-        o.compensation = compensation_arg(compensation, em);
+        o.compensation = compensation_params(compensation, em);
         o.single_precision = single;
         o.prefix = prefix;
         if (!path.is_none()) {

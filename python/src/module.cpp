@@ -107,6 +107,31 @@ void same_length(const std::string& function, std::initializer_list<NamedLength>
   }
 }
 
+std::pair<std::string, std::map<std::string, double>> compensation_arg(const py::handle& c, const std::string& function,
+                                                                       const std::string& name) {
+  const std::string where = function + ": argument " + name;
+  std::string type;
+  std::map<std::string, double> values;
+  if (py::isinstance<py::str>(c)) {
+    type = py::cast<std::string>(c);
+  } else if (py::isinstance<py::dict>(c)) {
+    for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(c)) {
+      const std::string k = py::cast<std::string>(py::str(key));
+      if (k == "type") {
+        if (!py::isinstance<py::str>(value)) throw argument_type_error(where + "['type']: expected a compensation name");
+        type = py::cast<std::string>(value);
+      } else {
+        values[k] = number_arg(value, function, name + "['" + k + "']");
+      }
+    }
+    if (type.empty())
+      throw std::invalid_argument(where + ": missing 'type' (feedforward, feedback, lugre-observer or disturbance-observer)");
+  } else {
+    throw argument_type_error(where + ": expected None, a compensation name or a dict {'type': NAME, parameter: value}");
+  }
+  return {type, values};
+}
+
 double number_arg(const py::handle& x, const std::string& function, const std::string& name) {
   const std::string arg = prefix(function) + "argument " + name;
   if (x.is_none() || py::isinstance<py::bool_>(x) || py::isinstance<py::str>(x))

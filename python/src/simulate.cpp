@@ -69,28 +69,7 @@ constexpr const char* kSetWhere = "Scenario.compensation";
 // whose friction `law` is (the exact model); null for None.
 std::shared_ptr<const Compensator> compensator_arg(const py::handle& c, const FrictionLaw& law, double M) {
   if (c.is_none()) return nullptr;
-  std::string type;
-  std::map<std::string, double> values;
-  if (py::isinstance<py::str>(c)) {
-    type = py::cast<std::string>(c);
-  } else if (py::isinstance<py::dict>(c)) {
-    for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(c)) {
-      const std::string k = py::cast<std::string>(py::str(key));
-      if (k != "type") {
-        values[k] = number_arg(value, "Scenario", "compensation['" + k + "']");
-      } else if (py::isinstance<py::str>(value)) {
-        type = py::cast<std::string>(value);
-      } else {
-        throw argument_type_error(std::string(kSetWhere) + ": ['type']: expected a compensation name");
-      }
-    }
-    if (type.empty())
-      throw std::invalid_argument(std::string(kSetWhere) +
-                                  ": missing 'type' (feedforward, feedback, lugre-observer or disturbance-observer)");
-  } else {
-    throw argument_type_error(std::string(kSetWhere) +
-                              ": expected None, a compensation name or a dict {'type': NAME, parameter: value}");
-  }
+  const auto [type, values] = compensation_arg(c, "Scenario", "compensation");
   try {
     return make_compensator(make_compensation(type, values, M > 0 ? std::optional<double>(M) : std::nullopt), &law);
   } catch (const std::invalid_argument& e) {

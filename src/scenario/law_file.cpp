@@ -13,16 +13,6 @@
 namespace frictionlab {
 namespace {
 
-// The file and dotted key of a message prefix "FILE: section" (or "FILE"), plus `key`.
-ErrorFields where_fields(const std::string& where, const std::string& key = "") {
-  ErrorFields f;
-  const auto sep = where.find(": ");
-  f.file = sep == std::string::npos ? where : where.substr(0, sep);
-  const std::string section = sep == std::string::npos ? std::string() : where.substr(sep + 2);
-  f.key = section.empty() ? key : key.empty() ? section : section + "." + key;
-  return f;
-}
-
 // Adds `where: ` in front of a law's own message so the user learns the file and key.
 template <class F>
 FrictionLaw with_context(const std::string& where, F&& make) {
@@ -30,7 +20,7 @@ FrictionLaw with_context(const std::string& where, F&& make) {
     return make();
   } catch (const std::invalid_argument& e) {
     ErrorFields f = error_fields(e);
-    const ErrorFields at = where_fields(where);
+    const ErrorFields at = detail::key_fields(where);
     if (f.file.empty()) f.file = at.file;
     if (f.key.empty()) f.key = at.key;
     const std::string code = dynamic_cast<const InputError*>(&e) ? error_code(e) : std::string(errc::scenario_value);
@@ -42,7 +32,7 @@ FrictionLaw with_context(const std::string& where, F&& make) {
 
 FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
   if (!node || !node.IsMap())
-    throw InputError(errc::scenario_value, where + ": expected a mapping with 'law' and its parameters", where_fields(where));
+    throw InputError(errc::scenario_value, where + ": expected a mapping with 'law' and its parameters", detail::key_fields(where));
   detail::check_unique_keys(node, where);
   LawSpec spec;
   for (const auto& kv : node) {
@@ -51,12 +41,12 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
       throw InputError(errc::scenario_key_unknown,
                        where + ": line " + std::to_string(kv.first.Mark().line + 1) +
                            ": expected a parameter name as key, got a list, mapping or empty key",
-                       where_fields(where));
+                       detail::key_fields(where));
     const std::string key = kv.first.as<std::string>();
     const YAML::Node& value = kv.second;
     const std::string here = where + "." + key;
     if ((key == "law" || key == "shape") && !value.IsScalar()) {
-      throw InputError(errc::scenario_value, here + ": expected a name", where_fields(where, key));
+      throw InputError(errc::scenario_value, here + ": expected a name", detail::key_fields(where, key));
     } else if (key == "law") {
       spec.name = value.as<std::string>();
     } else if (key == "shape") {
@@ -69,7 +59,7 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
           list.push_back(value[i].as<double>());
         } catch (const YAML::Exception&) {
           const std::string got = value[i].IsScalar() ? value[i].Scalar() : std::string("a list or mapping");
-          ErrorFields f = where_fields(where, key + "[" + std::to_string(i) + "]");
+          ErrorFields f = detail::key_fields(where, key + "[" + std::to_string(i) + "]");
           f.value = got;
           throw InputError(errc::scenario_value, here + "[" + std::to_string(i) + "]: expected a number, got '" + got + "'", f);
         }
@@ -81,7 +71,7 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
         spec.scalars[key] = value.as<double>();
       } catch (const YAML::Exception&) {
         const std::string got = value.IsScalar() ? value.Scalar() : std::string(value.IsNull() ? "nothing" : "a mapping");
-        ErrorFields f = where_fields(where, key);
+        ErrorFields f = detail::key_fields(where, key);
         f.value = got;
         throw InputError(errc::scenario_value, here + ": expected a number, got '" + got + "'", f);
       }
@@ -89,25 +79,25 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
   }
   if (spec.name.empty())
     throw InputError(errc::scenario_key_missing, where + ": missing 'law' (one of the friction law names, e.g. stribeck)",
-                     where_fields(where, "law"));
+                     detail::key_fields(where, "law"));
   return with_context(where, [&] { return FrictionLaw::from_spec(spec); });
 }
 
 FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
   if (!j.is_object()) {
-    throw InputError(errc::scenario_value, where + ": expected a JSON object describing a friction law", where_fields(where));
+    throw InputError(errc::scenario_value, where + ": expected a JSON object describing a friction law", detail::key_fields(where));
   }
   LawSpec spec;
   if (j.contains("law") && j["law"].is_object()) return law_from_json(j["law"], where + ": law");  // MODEL.json
   const nlohmann::json* params = &j;
   if (j.contains("model") && j.contains("parameters")) {  // MODEL.json written by identify
-    if (!j["model"].is_string()) throw InputError(errc::scenario_value, where + ": 'model' must be a law name", where_fields(where, "model"));
+    if (!j["model"].is_string()) throw InputError(errc::scenario_value, where + ": 'model' must be a law name", detail::key_fields(where, "model"));
     spec.name = j["model"].get<std::string>();
     params = &j["parameters"];
   } else if (j.contains("law") && j["law"].is_string()) {
     spec.name = j["law"].get<std::string>();
   } else {
-    throw InputError(errc::scenario_key_missing, where + ": missing 'law' (or 'model' with 'parameters')", where_fields(where, "law"));
+    throw InputError(errc::scenario_key_missing, where + ": missing 'law' (or 'model' with 'parameters')", detail::key_fields(where, "law"));
   }
   for (const auto& [key, value] : params->items()) {
     if (key == "law" || key == "M" || key == "offset") continue;  // M and offset belong to the plant, not the law
@@ -123,13 +113,13 @@ FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
       for (std::size_t i = 0; i < value.size(); ++i) {
         if (!value[i].is_number())
           throw InputError(errc::scenario_value, here + "[" + std::to_string(i) + "]: expected a number, got " + value[i].dump(),
-                           where_fields(where, key + "[" + std::to_string(i) + "]"));
+                           detail::key_fields(where, key + "[" + std::to_string(i) + "]"));
         list.push_back(value[i].get<double>());
       }
       spec.arrays[key] = std::move(list);
     } else {
       throw InputError(errc::scenario_value, here + ": expected a number (or {\"value\": number}), got " + value.dump(),
-                       where_fields(where, key));
+                       detail::key_fields(where, key));
     }
   }
   return with_context(where, [&] { return FrictionLaw::from_spec(spec); });

@@ -38,17 +38,6 @@
 namespace frictionlab {
 namespace {
 
-// The file and dotted key of a message prefix "FILE: section.key" (a prefix without ": " is a
-// file name alone), for the fields of an InputError.
-ErrorFields key_fields(const std::string& where, const std::string& key = "") {
-  ErrorFields f;
-  const auto sep = where.find(": ");
-  f.file = sep == std::string::npos ? where : where.substr(0, sep);
-  const std::string section = sep == std::string::npos ? std::string() : where.substr(sep + 2);
-  f.key = section.empty() ? key : key.empty() ? section : section + "." + key;
-  return f;
-}
-
 std::string join(std::initializer_list<const char*> names) {
   std::string out;
   for (const char* n : names) out += (out.empty() ? "" : ", ") + std::string(n);
@@ -60,14 +49,14 @@ std::string join(std::initializer_list<const char*> names) {
 class Section {
  public:
   Section(const YAML::Node& node, std::string path) : node_(node), path_(std::move(path)) {
-    if (!node_.IsMap()) throw InputError(errc::scenario_value, path_ + ": expected a mapping of keys to values", key_fields(path_));
+    if (!node_.IsMap()) throw InputError(errc::scenario_value, path_ + ": expected a mapping of keys to values", detail::key_fields(path_));
   }
 
   const std::string& path() const { return path_; }
   std::string at(const std::string& key) const { return path_ + "." + key; }
   // The fields of an error at `key` (file and dotted key).
   ErrorFields fields(const std::string& key, const std::string& value = "") const {
-    ErrorFields f = key_fields(path_, key);
+    ErrorFields f = detail::key_fields(path_, key);
     f.value = value;
     return f;
   }
@@ -81,7 +70,7 @@ class Section {
         throw InputError(errc::scenario_key_unknown,
                          path_ + ": line " + std::to_string(kv.first.Mark().line + 1) +
                              ": expected a field name as key, got a list, mapping or empty key; valid fields: " + join(allowed),
-                         key_fields(path_));
+                         detail::key_fields(path_));
       const std::string key = kv.first.as<std::string>();
       if (!ok.count(key))
         throw InputError(errc::scenario_key_unknown, at(key) + ": unknown field '" + key + "'; valid fields: " + join(allowed),
@@ -125,7 +114,7 @@ class Section {
   }
 
   static double to_number(const YAML::Node& v, const std::string& where, ErrorFields fields = {}) {
-    if (fields.file.empty() && fields.key.empty()) fields = key_fields(where);
+    if (fields.file.empty() && fields.key.empty()) fields = detail::key_fields(where);
     if (!v.IsScalar()) throw InputError(errc::scenario_value, where + ": expected a number", fields);
     const std::string s = v.as<std::string>();
     try {
@@ -149,7 +138,7 @@ auto with_context(const std::string& where, F&& make) {
     return make();
   } catch (const std::invalid_argument& e) {
     ErrorFields f = error_fields(e);
-    const ErrorFields at = key_fields(where);
+    const ErrorFields at = detail::key_fields(where);
     if (f.file.empty()) f.file = at.file;
     if (f.key.empty()) f.key = at.key;
     const std::string code = dynamic_cast<const InputError*>(&e) ? error_code(e) : std::string(errc::scenario_value);
@@ -844,7 +833,7 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
   top.allow({"description", "data", "plant", "friction", "input", "controller", "duration", "output_rate", "solver",
              "initial"});
   auto section = [&](const char* key) {
-    if (!top.has(key)) throw InputError(errc::scenario_key_missing, where + ": missing '" + key + "'", key_fields(where, key));
+    if (!top.has(key)) throw InputError(errc::scenario_key_missing, where + ": missing '" + key + "'", detail::key_fields(where, key));
     return Section(root[key], where + ": " + key);
   };
   DataSource src(options, top.text("data", ""));

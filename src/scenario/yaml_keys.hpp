@@ -11,6 +11,17 @@
 
 namespace frictionlab::detail {
 
+// The file and dotted key of a message prefix "FILE: section.key" (a prefix without ": " is a
+// file name alone), plus `key`: the fields of an InputError about a scenario or law file.
+inline ErrorFields key_fields(const std::string& where, const std::string& key = "") {
+  ErrorFields f;
+  const auto sep = where.find(": ");
+  f.file = sep == std::string::npos ? where : where.substr(0, sep);
+  const std::string section = sep == std::string::npos ? std::string() : where.substr(sep + 2);
+  f.key = section.empty() ? key : key.empty() ? section : section + "." + key;
+  return f;
+}
+
 /// Refuses a mapping that gives a key twice (`k: 2.0` then `k: 3.0`), anywhere in the document:
 /// yaml-cpp keeps both pairs and a lookup silently finds one of them, so the user's intent is
 /// unknown. Also refuses keys that are not plain scalars (a list or mapping as a key).
