@@ -61,7 +61,7 @@
 #include <vector>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Stable error codes (see the table above).
 namespace errc {

@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// A number for people: `digits` significant digits (1 to 17), no trailing zeros, exponent form
 /// for large and small magnitudes (printf's %g: 1e-05, 95.1, 1.234e+05). NaN prints "nan", the

@@ -27,7 +27,7 @@
 #include "fleet/shard.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Options of map_scenario.
 struct MapRunOptions {

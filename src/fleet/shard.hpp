@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Shard K of N (1 <= K <= N).
 struct ShardSpec {

@@ -18,7 +18,7 @@
 #include <string_view>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Options of write_file_atomic.
 struct AtomicWriteOptions {

@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Lowercase hex SHA-256 (64 characters) of the given bytes.
 std::string sha256_hex(std::string_view bytes);

@@ -13,7 +13,7 @@
 #include "report/figure.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// A figure of the report: drawn to DIR/NAME.svg (plus NAME.svg.dat and NAME.svg.gp).
 struct ReportFigure {

@@ -2,15 +2,16 @@
 """Every public header exports what it declares.
 
 The library is built with hidden visibility; a public header (include/frictionlab/**.hpp) opens its
-namespace as `namespace FRICTIONLAB_API frictionlab {` after including frictionlab/export.hpp, or its
-declarations are missing from the shared library and a consumer fails to link. Usage:
+namespace as `namespace frictionlab FRICTIONLAB_API {` after including frictionlab/export.hpp, or its
+declarations are missing from the shared library and a consumer fails to link. (The attribute stands
+after the name: GCC also takes it before, Clang only after.) Usage:
     check_public_headers.py [SOURCE_DIR]
 """
 import os
 import re
 import sys
 
-OPEN = re.compile(r"^namespace\s+(FRICTIONLAB_API\s+)?frictionlab\s*\{", re.MULTILINE)
+OPEN = re.compile(r"^namespace\s+frictionlab(\s+FRICTIONLAB_API)?\s*\{", re.MULTILINE)
 
 
 def main():
@@ -28,7 +29,7 @@ def main():
                 problems.append(f"{rel}: declares nothing in namespace frictionlab (an empty or misplaced header)")
             elif not opens[0]:
                 problems.append(f"{rel}: opens 'namespace frictionlab {{' without FRICTIONLAB_API; expected"
-                                f" '#include \"frictionlab/export.hpp\"' and 'namespace FRICTIONLAB_API frictionlab {{'")
+                                f" '#include \"frictionlab/export.hpp\"' and 'namespace frictionlab FRICTIONLAB_API {{'")
             elif '#include "frictionlab/export.hpp"' not in text:
                 problems.append(f"{rel}: uses FRICTIONLAB_API without including frictionlab/export.hpp")
     for p in problems:

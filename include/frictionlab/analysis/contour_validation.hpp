@@ -15,7 +15,7 @@
 #include "frictionlab/simulate/scenario.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Result of validate_contour.
 struct ContourValidation {

@@ -33,7 +33,7 @@
 #include <string>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// The loop of predict_hunting. SI units; a rotary axis reads kg m^2, N m, rad.
 struct HuntingLoop {

@@ -19,7 +19,7 @@
 #include "frictionlab/simulate/scenario.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// One varied key: `count` values from `start` to `stop`, evenly spaced (or log-spaced).
 struct MapAxis {

@@ -16,7 +16,7 @@
 #include "frictionlab/models/stribeck.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Slope dF/dv of the Stribeck law's sliding force at velocity v (N s/m or N m s/rad):
 /// Fv - (Fs - Fc) delta |v|^(delta-1) / vs^delta exp(-|v/vs|^delta) for v != 0 (even in v).

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Options of detect_stick_slip.
 struct StickSlipOptions {

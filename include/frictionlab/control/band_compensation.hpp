@@ -9,7 +9,7 @@
 #include "frictionlab/models/friction_law.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Output = the law's sliding force F(s) (steady-state force for dynamic laws; each direction its
 /// own parameters for asymmetric laws) for |s| > b, and the derived class's formula inside.

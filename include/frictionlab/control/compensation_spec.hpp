@@ -19,7 +19,7 @@
 #include "frictionlab/models/friction_law.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// A compensation's type with its parameters (their units in control/*.hpp); std::monostate:
 /// none.

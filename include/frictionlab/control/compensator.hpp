@@ -12,7 +12,7 @@
 #include <string>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// The signals a compensator sees at one instant. Units: m, m/s, m/s^2 and N on a linear axis;
 /// rad, rad/s, rad/s^2 and N m on a rotary one.

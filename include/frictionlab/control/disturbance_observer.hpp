@@ -8,7 +8,7 @@
 #include "frictionlab/control/compensator.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Options of the disturbance observer.
 struct DisturbanceObserverParams {

@@ -16,7 +16,7 @@
 #include "frictionlab/core/input.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Gains, limits and timing of the EMPS controller (EMPS values in brackets).
 struct EmpsPdParams {

@@ -7,7 +7,7 @@
 #include "frictionlab/control/band_compensation.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Options of the feedback compensation.
 struct FeedbackParams {

@@ -10,7 +10,7 @@
 #include "frictionlab/models/friction_law.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Options of the LuGre observer.
 struct LuGreObserverParams {

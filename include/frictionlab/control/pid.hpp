@@ -11,7 +11,7 @@
 #include <string_view>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// What the loop controls.
 enum class ControlLoop {

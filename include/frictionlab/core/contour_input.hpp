@@ -16,7 +16,7 @@
 #include "frictionlab/core/input.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// A circular contour.
 struct CircleContour {

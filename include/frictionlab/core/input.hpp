@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// The shapes an input signal can take.
 enum class InputShape { constant, step, ramp, trapezoid, sine, table };

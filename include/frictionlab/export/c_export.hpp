@@ -30,7 +30,7 @@
 #include "frictionlab/models/friction_law.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Options of c_header.
 struct CExportOptions {

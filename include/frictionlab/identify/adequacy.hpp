@@ -15,7 +15,7 @@
 #include "frictionlab/identify/result.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Settings of the residual checks.
 struct AdequacyOptions {

@@ -13,7 +13,7 @@
 #include "frictionlab/models/parameter.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Samples of a trapezoid experiment. Shapes: all of length N, time strictly increasing and
 /// regularly sampled (s). `force` is the drive torque or force (N m or N: Kt times current).

@@ -14,7 +14,7 @@
 #include "frictionlab/models/parameter.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 struct DecayData {
   Eigen::VectorXd time;      ///< s, strictly increasing, regular

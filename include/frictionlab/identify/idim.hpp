@@ -21,7 +21,7 @@
 #include "frictionlab/models/parameter.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Measured signals of one run (SI units).
 struct IdimData {

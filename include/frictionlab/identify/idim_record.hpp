@@ -7,7 +7,7 @@
 #include "frictionlab/io/dataset.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Where the signals of an IDIM record are in a data file. The EMPS benchmark files use
 /// {"t", "qm", "vir", "gtau"}.

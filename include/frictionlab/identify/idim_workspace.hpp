@@ -8,7 +8,7 @@
 #include "frictionlab/signal/filter_workspace.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Work space of the IDIM recipe for records of N samples: the filter input with its padding
 /// (N + 2 padlen doubles), the filtered velocity and acceleration (N each), the columns of terms

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 struct LeastSquaresOptions {
   /// Refuse (ok false, message naming the parameters) when the condition number of the

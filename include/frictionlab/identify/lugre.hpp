@@ -23,7 +23,7 @@
 #include "frictionlab/models/parameter.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Samples of an experiment on a rigid axis. Shapes: all of length N >= 3, time strictly
 /// increasing and regularly sampled. The record should start at rest (bristles unloaded) and

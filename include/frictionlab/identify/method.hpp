@@ -31,7 +31,7 @@
   X(validate)
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// A method by its registration (FRICTIONLAB_METHODS): MethodId::sweep.
 enum class MethodId {

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// What an option's value is.
 enum class OptionType {

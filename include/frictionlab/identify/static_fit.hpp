@@ -11,7 +11,7 @@
 #include "frictionlab/models/friction_law.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// The static laws a friction-velocity map can be fitted with.
 enum class StaticFitModel { coulomb_viscous, coulomb_viscous_asymmetric, stribeck, stribeck_asymmetric };

@@ -12,7 +12,7 @@
 #include "frictionlab/models/parameter.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Samples of a sweep run. Shapes: all of length N; time strictly increasing (s).
 struct SweepData {

@@ -26,7 +26,7 @@
 #include "frictionlab/identify/result.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// What a method knows about each parameter before the uncertainty is assessed.
 struct ParameterState {

@@ -20,7 +20,7 @@
 #include "frictionlab/simulate/scenario.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// The identified model a validation simulates.
 struct IdentifiedModel {

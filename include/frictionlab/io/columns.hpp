@@ -11,7 +11,7 @@
 #include "frictionlab/signal/sampling.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// The column `name` of `data`. `role` says what it is used as, for the message (e.g. "time",
 /// "--position"). \throws std::invalid_argument "FILE: no column 'NAME' (ROLE); the file has

@@ -8,7 +8,7 @@
 #include "frictionlab/io/dataset.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Whether a CSV file must start with a header row.
 enum class CsvHeader {

@@ -13,7 +13,7 @@
 #include "frictionlab/signal/sampling.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Named columns of doubles (all of the same length), named scalars, and the source file.
 /// Units are whatever the file holds; io/columns.hpp converts to SI (scale factors).

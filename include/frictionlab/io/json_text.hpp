@@ -8,7 +8,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// `s` with every byte that is not part of a well-formed UTF-8 sequence written as the four
 /// characters \xNN (hex); valid text is returned unchanged.

@@ -7,7 +7,7 @@
 #include "frictionlab/io/dataset.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// `.csv` (any case) -> read_csv(path, csv_options), `.mat` -> read_mat(path).
 /// \throws std::invalid_argument naming the file and the accepted extensions for any other

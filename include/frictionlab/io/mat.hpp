@@ -6,7 +6,7 @@
 #include "frictionlab/io/dataset.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Reads every real numeric variable of a MAT file: vectors (1xN or Nx1) become columns, 1x1
 /// values become scalars; any numeric class (double, single, integers) is converted to double.

@@ -9,7 +9,7 @@
 #include "frictionlab/models/scalar.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Direction-asymmetric form of a symmetric static law `Law`: `pos` acts for v > 0 (and a stuck
 /// contact pushed in +), `neg` for v < 0. Both are stored with positive levels.

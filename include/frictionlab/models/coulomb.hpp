@@ -7,7 +7,7 @@
 #include "frictionlab/models/scalar.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Coulomb (kinetic) friction F = Fc sign(v). A stuck contact holds up to Fc.
 template <class S = double>

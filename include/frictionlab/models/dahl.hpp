@@ -10,7 +10,7 @@
 #include "frictionlab/models/scalar.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Dahl model: stiffness sigma0 at rest, saturating at Fc while sliding. No stiction peak.
 template <class S = double>

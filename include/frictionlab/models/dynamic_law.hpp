@@ -7,7 +7,7 @@
 #include <span>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// A dynamic law with `num_states()` states:
 /// - `derivative(z, v, dz)`: dz/dt (m/s or rad/s per state) for the continuous model (the integrators);

@@ -27,7 +27,7 @@
 #include "frictionlab/models/viscous.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// A law as written in a file: its name and named values. Scalars are parameters (SI units);
 /// arrays serve `table` (velocity, force) and `gms` (k, alpha); strings serve `smooth` (shape).

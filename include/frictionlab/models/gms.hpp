@@ -18,7 +18,7 @@
 #include "frictionlab/models/stribeck.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 template <class S = double>
 struct GmsT {

@@ -9,7 +9,7 @@
 #include "frictionlab/models/scalar.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Karnopp model. Trade-off of `dv`: wider sticks more reliably at large steps, but lets a
 /// body creep at speeds below dv; narrower needs smaller steps. The hybrid engine of

@@ -13,7 +13,7 @@
 #include "frictionlab/models/stribeck.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Outcome of a passivity check: a set that is not passive is still accepted (the 1995 paper's
 /// Table I set is not), but energy may then grow locally in simulation.

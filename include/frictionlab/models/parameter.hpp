@@ -12,7 +12,7 @@
 #include "frictionlab/format.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// The kind of axis decides the units printed: N, N s/m, kg, m/s or N m, N m s/rad, kg m^2, rad/s.
 enum class Axis { linear, rotary };
@@ -80,7 +80,7 @@ struct Parameter {
   static std::string unit_text(Quantity q, Axis axis) { return std::string(::frictionlab::unit(q, axis)); }
 };
 
-namespace FRICTIONLAB_NO_EXPORT detail {
+namespace detail FRICTIONLAB_NO_EXPORT {
 /// The name the laws' checks use for format_number (format.hpp) with 10 significant digits,
 /// enough to tell values apart.
 inline std::string format_value(double value, int digits = 10) { return format_number(value, digits); }

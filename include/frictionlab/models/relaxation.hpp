@@ -9,7 +9,7 @@
 #include "frictionlab/models/scalar.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// The exact solution of dz/dt = rate (target - z) over one step in which rate (1/s, >= 0) and
 /// target hold: target + (z - target) decay, with decay = exp(-rate dt) in (0, 1] (the caller

@@ -7,7 +7,7 @@
 #include <type_traits>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// The plain value of a scalar: the value itself for arithmetic types, the real part of a Jet.
 template <class T>

@@ -14,7 +14,7 @@
 #include "frictionlab/models/stribeck.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// 2|x| beyond which tanh(x) rounds to +-1 in double precision (1 - tanh(20) = 8e-18).
 inline constexpr double kTanhSaturation = 40.0;

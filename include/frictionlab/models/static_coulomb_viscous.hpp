@@ -8,7 +8,7 @@
 #include "frictionlab/models/scalar.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Static + Coulomb + viscous: stuck while |applied| <= Fs; sliding force Fc sign(v) + Fv v.
 template <class S = double>

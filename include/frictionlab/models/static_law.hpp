@@ -10,7 +10,7 @@
 #include "frictionlab/models/scalar.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// A static friction law: `sliding(v)` is the force for v != 0 (N or N m, sign of v);
 /// `breakaway_positive()` / `breakaway_negative()` are the largest applied force (magnitude)

@@ -9,9 +9,9 @@
 #include "frictionlab/models/scalar.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
-namespace FRICTIONLAB_NO_EXPORT detail {
+namespace detail FRICTIONLAB_NO_EXPORT {
 /// The rules of a Stribeck level Fc + (Fs - Fc) exp(-|v/vs|^delta), shared by every law built on
 /// it (stribeck, smooth, lugre, elasto-plastic, gms): Fc >= 0 (> 0 when `Fc_positive`, as the
 /// bristle laws divide by it), Fs >= Fc, vs > 0, delta > 0, all finite.

@@ -7,7 +7,7 @@
 #include "frictionlab/models/scalar.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Friction as a measured function of velocity, interpolated monotonically between the points
 /// (piecewise cubic Hermite with Fritsch-Carlson slopes: no overshoot between measured points).

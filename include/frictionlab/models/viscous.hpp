@@ -7,7 +7,7 @@
 #include "frictionlab/models/scalar.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Linear viscous friction F = Fv v. A stuck contact holds no force.
 template <class S = double>

@@ -12,7 +12,7 @@
 #include "frictionlab/plants/plant.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// One axis of a MultiAxis.
 struct NamedAxis {

@@ -14,7 +14,7 @@
 #include "frictionlab/core/input.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 class FrictionLaw;  // models/friction_law.hpp
 

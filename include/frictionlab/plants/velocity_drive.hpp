@@ -6,7 +6,7 @@
 #include "frictionlab/plants/plant.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Parameters of a velocity drive.
 struct VelocityDriveParams {

@@ -25,7 +25,7 @@ class Node;
 }
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Reads a law from a YAML mapping. `where` names the place for messages (file and key path,
 /// e.g. "scenario.yaml: friction"). Throws std::invalid_argument naming `where` and the key

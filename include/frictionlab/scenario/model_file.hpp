@@ -8,7 +8,7 @@
 #include "frictionlab/models/friction_law.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// A model file's law and, when the file has one (the MODEL.json of `identify idim` or `decay`),
 /// the identified inertia M (kg or kg m^2): the disturbance observer's default.

@@ -7,7 +7,7 @@
 #include "frictionlab/analysis/plan/rig.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Reads the prior (its "law", or the file as a law; parameters.M, when present, replaces an
 /// axis plant's inertia; "axis" sets the units) and the scenario (its friction section may be

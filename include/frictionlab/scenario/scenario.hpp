@@ -95,7 +95,7 @@ class Node;
 }
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// An identified model of one axis: its friction law, inertia M (kg or kg m^2) and offset (N or N m).
 struct AxisModel {

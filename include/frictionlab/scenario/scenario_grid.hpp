@@ -12,7 +12,7 @@
 #include "frictionlab/scenario/scenario.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// The scenario file, read once, and the keys varied in it.
 class ScenarioGrid {

@@ -8,7 +8,7 @@
 #include "frictionlab/signal/transfer_function.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Zeros, poles and gain of an order-`order` digital Butterworth low-pass with cut-off `wn`
 /// (normalised: 1 is the Nyquist frequency; -3 dB at wn). scipy.signal.butter(..., output='zpk').

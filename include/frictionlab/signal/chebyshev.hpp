@@ -5,7 +5,7 @@
 #include "frictionlab/signal/transfer_function.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Zeros, poles and gain of an order-`order` Chebyshev type I low-pass with pass-band ripple
 /// `ripple_db` (dB, > 0) and cut-off `wn` (normalised by Nyquist; the gain leaves the ripple

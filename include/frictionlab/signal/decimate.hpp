@@ -6,7 +6,7 @@
 #include "frictionlab/signal/filtfilt.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Low-pass with an order-8 Chebyshev type I filter (0.05 dB ripple, cut-off 0.8 / q of the
 /// Nyquist frequency, second-order sections) run forward and backward (sosfiltfilt, odd

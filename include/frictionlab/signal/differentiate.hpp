@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Central differences (x(k+1) - x(k-1)) / (2 dt) inside, one-sided first differences at the
 /// two ends, as numpy.gradient(x, dt) (edge_order=1). Units: those of x per second when dt is

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Work space of sosfiltfilt_columns and decimate_columns: the padded, interleaved copy of up to
 /// four columns that the forward and backward passes run over ((N + 2 padlen) x 4 doubles for

@@ -11,7 +11,7 @@
 #include "frictionlab/signal/transfer_function.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Columns of equal length that live elsewhere (filtered without first copying them into a matrix).
 using ColumnViews = std::vector<Eigen::Map<const Eigen::VectorXd>>;

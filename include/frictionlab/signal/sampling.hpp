@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Names sample k (0-based) in messages, e.g. "line 17" for a CSV row or "sample 18".
 using RowLabeller = std::function<std::string(Eigen::Index)>;

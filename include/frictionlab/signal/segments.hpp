@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// A run of samples [begin, end) and the time it covers, from time(begin) to time(end - 1).
 struct IndexRange {

@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Transfer function H(z) = (b0 + b1 z^-1 + ...) / (a0 + a1 z^-1 + ...), coefficients in
 /// descending powers of z as scipy.signal returns them (a0 = 1 for the designs here).

@@ -13,7 +13,7 @@
 #include "frictionlab/simulate/trajectory.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// The outcome of one run of a batch: a trajectory, or the exception simulate() threw.
 struct BatchResult {

@@ -13,7 +13,7 @@
 #include "frictionlab/plants/plant.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// A PID (control/pid.hpp) closed around `inner` (a 1-DOF plant). States: the inner plant's, then
 /// the PID's own (continuous: the integral of the error; sampled: the integral, the applied and

@@ -11,7 +11,7 @@
 #include "frictionlab/plants/plant.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Discrete EMPS PD loop around `inner`, integrated by the engine through Plant::sample_period()
 /// and Plant::sample(). States: the inner plant's, then 6 discrete ones (derivative 0):

@@ -8,7 +8,7 @@
 #include "frictionlab/simulate/options.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Rows a run outputs: floor(duration * output_rate) + 1, as a double (it may not fit a size_t).
 double output_rows(const SimulationOptions& o);

@@ -10,7 +10,7 @@
 #include "frictionlab/simulate/options.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Everything simulate() needs. Scenario files (scenario/scenario.hpp) produce one.
 struct Scenario {

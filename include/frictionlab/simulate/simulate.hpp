@@ -38,7 +38,7 @@
 #include <span>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Simulates `plant` with friction `law` driven by `input`.
 /// \returns rows at t = k / output_rate (see SimulationOptions).

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// What kind of mode switch an event was (hybrid mode).
 enum class SwitchKind {

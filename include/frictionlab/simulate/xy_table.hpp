@@ -24,7 +24,7 @@
 #include "frictionlab/plants/plant.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// One axis of an XyTable: body, friction, drive and controller gains.
 struct XyAxis {

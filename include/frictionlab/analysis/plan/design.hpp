@@ -25,7 +25,7 @@
 #include "frictionlab/analysis/plan/rig.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// The methods a plan can be made for.
 enum class PlanMethod { breakaway, sweep, idim, lugre };

@@ -23,7 +23,7 @@
 #include "frictionlab/simulate/trajectory.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// A-priori std of a method's parameters, in the method's parameter order.
 struct AprioriSpread {

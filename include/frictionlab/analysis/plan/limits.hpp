@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Limits of the rig (SI units; force means torque on a rotary axis). An infinite value (the
 /// default) is no limit.

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// Standard deviations of white Gaussian measurement noise (SI units), and the encoder step.
 /// All >= 0; 0 (the default) is a clean signal.

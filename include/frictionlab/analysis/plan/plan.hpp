@@ -10,7 +10,7 @@
 #include "frictionlab/analysis/plan/predict.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 struct PlanOptions {
   PlanDesignOptions design;

@@ -20,7 +20,7 @@
 #include "frictionlab/simulate/trajectory.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// What the rig would record: samples at the profile's rate (SI units, length N each).
 struct PlanMeasurement {

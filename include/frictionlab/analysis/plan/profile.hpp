@@ -8,7 +8,7 @@
 #include "frictionlab/core/input.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// One figure of a plan's design ("ramp_rate" = 0.0023 A/s), with its unit and what it is.
 struct PlanFigure {

@@ -11,7 +11,7 @@
 #include "frictionlab/simulate/scenario.hpp"
 
 #include "frictionlab/export.hpp"
-namespace FRICTIONLAB_API frictionlab {
+namespace frictionlab FRICTIONLAB_API {
 
 /// What the plan commands.
 enum class PlanDrive {
