@@ -5,7 +5,8 @@
 #  - the shared library exports the public API and no detail:: symbol, and has its soname;
 #  - the consumer example (examples/cpp_consumer: a friction law and a short simulation) configures
 #    with find_package(frictionlab) without a word about the library's private dependencies, builds
-#    and runs, once against the installed prefix and once against the build tree.
+#    and runs, once against the installed prefix and once against the build tree, and once more
+#    against the prefix built with Clang (the public headers must suit both compilers).
 set -euo pipefail
 build=$(cd "$1" && pwd)
 here=$(cd "$(dirname "$0")" && pwd)
@@ -49,8 +50,9 @@ fi
 
 # The consumer example against a prefix (CMAKE_PREFIX_PATH) and against the build tree.
 consumer() {
-  local what=$1 path=$2 dir="$scratch/consumer-$1" log
-  if ! log=$(cmake -S "$source_dir/examples/cpp_consumer" -B "$dir" -DCMAKE_PREFIX_PATH="$path" -DCMAKE_BUILD_TYPE=Release 2>&1); then
+  local what=$1 path=$2 dir="$scratch/consumer-${1// /-}" log
+  shift 2  # further arguments go to cmake (a compiler)
+  if ! log=$(cmake -S "$source_dir/examples/cpp_consumer" -B "$dir" -DCMAKE_PREFIX_PATH="$path" -DCMAKE_BUILD_TYPE=Release "$@" 2>&1); then
     fail "consumer against the $what: configure failed"; echo "$log" >&2; return
   fi
   if grep -qi 'ceres\|sundials' <<<"$log"; then
@@ -67,6 +69,7 @@ consumer() {
 }
 consumer prefix "$prefix"
 consumer "build tree" "$build"
+if command -v clang++ >/dev/null; then consumer "prefix with Clang" "$prefix" -DCMAKE_CXX_COMPILER=clang++; fi
 
 echo "install-test: $passed passed, $failed failed"
 ((failed == 0))
