@@ -11,24 +11,6 @@
 #include "yaml_keys.hpp"
 
 namespace frictionlab {
-namespace {
-
-// Adds `where: ` in front of a law's own message so the user learns the file and key.
-template <class F>
-FrictionLaw with_context(const std::string& where, F&& make) {
-  try {
-    return make();
-  } catch (const std::invalid_argument& e) {
-    ErrorFields f = error_fields(e);
-    const ErrorFields at = detail::key_fields(where);
-    if (f.file.empty()) f.file = at.file;
-    if (f.key.empty()) f.key = at.key;
-    const std::string code = dynamic_cast<const InputError*>(&e) ? error_code(e) : std::string(errc::scenario_value);
-    throw InputError(code, where + ": " + e.what(), f);
-  }
-}
-
-}  // namespace
 
 FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
   if (!node || !node.IsMap())
@@ -80,7 +62,7 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
   if (spec.name.empty())
     throw InputError(errc::scenario_key_missing, where + ": missing 'law' (one of the friction law names, e.g. stribeck)",
                      detail::key_fields(where, "law"));
-  return with_context(where, [&] { return FrictionLaw::from_spec(spec); });
+  return detail::with_context(where, [&] { return FrictionLaw::from_spec(spec); });
 }
 
 FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
@@ -122,7 +104,7 @@ FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
                        detail::key_fields(where, key));
     }
   }
-  return with_context(where, [&] { return FrictionLaw::from_spec(spec); });
+  return detail::with_context(where, [&] { return FrictionLaw::from_spec(spec); });
 }
 
 nlohmann::json read_model_json(const std::string& path) {

@@ -130,22 +130,6 @@ class Section {
   std::string path_;
 };
 
-// Wraps a constructor's own message ("axis: M = 0 must be > 0") with the file and key path
-// (keeping the code of an InputError; others are scenario.value, a value the model refused).
-template <class F>
-auto with_context(const std::string& where, F&& make) {
-  try {
-    return make();
-  } catch (const std::invalid_argument& e) {
-    ErrorFields f = error_fields(e);
-    const ErrorFields at = detail::key_fields(where);
-    if (f.file.empty()) f.file = at.file;
-    if (f.key.empty()) f.key = at.key;
-    const std::string code = dynamic_cast<const InputError*>(&e) ? error_code(e) : std::string(errc::scenario_value);
-    throw InputError(code, where + ": " + e.what(), f);
-  }
-}
-
 // A name chosen from a fixed list: `key` of `s` (or `fallback` when absent) looked up in
 // `choices`; an unknown one is refused naming the key, the value and the valid names in the
 // table's order ("FILE: solver.mode: unknown solver mode 'x'; valid modes: auto, hybrid, ...").
@@ -208,7 +192,7 @@ class DataSource {
     if (!d)
       throw std::invalid_argument(s.at(key) + ": '" + name +
                                   "' is not a number, and the scenario names no data file to read a scalar from (top-level 'data')");
-    return with_context(s.at(key), [&] { return resolve_constant(*d, name, key); });
+    return detail::with_context(s.at(key), [&] { return resolve_constant(*d, name, key); });
   }
 
   std::string resolve(const std::string& name) const {
@@ -308,7 +292,7 @@ std::shared_ptr<const Compensator> read_compensation(const Section& s, const Com
     std::filesystem::path path(s.text("model", ""));
     if (path.is_relative() && !ctx.base_dir.empty()) path = std::filesystem::path(ctx.base_dir) / path;
     if (ctx.files_read) ctx.files_read->push_back(path.string());
-    const ModelFile m = with_context(s.at("model"), [&] { return read_model_file(path.string()); });
+    const ModelFile m = detail::with_context(s.at("model"), [&] { return read_model_file(path.string()); });
     law = m.law;
     law_key = "model";
     if (observer && m.inertia && !values.count("inertia")) inertia = m.inertia;
@@ -316,12 +300,12 @@ std::shared_ptr<const Compensator> read_compensation(const Section& s, const Com
     law = law_from_yaml(s.node("friction"), s.at("friction"));
     law_key = "friction";
   } else if (!observer) {
-    law = with_context(s.path(), ctx.law);  // the exact model: the contact's own law
+    law = detail::with_context(s.path(), ctx.law);  // the exact model: the contact's own law
   }
   const double scale = s.number("scale", 1.0);
   if (!(std::isfinite(scale) && scale > 0))
     throw std::invalid_argument(s.at("scale") + ": " + detail::format_value(scale) + " must be > 0 (factor on the law's forces)");
-  if (law && scale != 1.0) law = with_context(s.at("scale"), [&] { return scaled_law(*law, scale); });
+  if (law && scale != 1.0) law = detail::with_context(s.at("scale"), [&] { return scaled_law(*law, scale); });
   auto build = [&]() -> std::shared_ptr<const Compensator> {
     CompensationParams q = params;
     if (auto* dob = std::get_if<DisturbanceObserverParams>(&q); dob && inertia && !values.count("inertia"))
@@ -347,7 +331,7 @@ PlantPtr read_axis(const Section& s, const PlantContext&) {
   AxisParams p;
   p.M = s.number("M");
   p.offset = s.number("offset", p.offset);
-  return with_context(s.path(), [&] { return std::make_shared<const RigidAxis>(p); });
+  return detail::with_context(s.path(), [&] { return std::make_shared<const RigidAxis>(p); });
 }
 
 PlantPtr read_pendulum(const Section& s, const PlantContext&) {
@@ -357,7 +341,7 @@ PlantPtr read_pendulum(const Section& s, const PlantContext&) {
   p.l = s.number("l");
   p.g = s.number("g", p.g);
   p.B = s.number("B", p.B);
-  return with_context(s.path(), [&] { return std::make_shared<const Pendulum>(p); });
+  return detail::with_context(s.path(), [&] { return std::make_shared<const Pendulum>(p); });
 }
 
 PlantPtr read_spring_base(const Section& s, const PlantContext&) {
@@ -368,7 +352,7 @@ PlantPtr read_spring_base(const Section& s, const PlantContext&) {
   p.V0 = s.number("V0");
   p.c = s.number("c", p.c);
   p.x0 = s.number("x0", p.x0);
-  return with_context(s.path(), [&] { return std::make_shared<const SpringBase>(p); });
+  return detail::with_context(s.path(), [&] { return std::make_shared<const SpringBase>(p); });
 }
 
 PlantPtr read_dc_motor(const Section& s, const PlantContext&) {
@@ -383,14 +367,14 @@ PlantPtr read_dc_motor(const Section& s, const PlantContext&) {
   p.L = p.drive == MotorDrive::voltage ? s.number("L") : s.number("L", p.L);  // a current drive hides L
   p.Ka = s.number("Ka", p.Ka);
   p.load = s.number("load", p.load);
-  return with_context(s.path(), [&] { return std::make_shared<const DcMotor>(p); });
+  return detail::with_context(s.path(), [&] { return std::make_shared<const DcMotor>(p); });
 }
 
 PlantPtr read_velocity_drive(const Section& s, const PlantContext&) {
   s.allow({"type", "M"});
   VelocityDriveParams p;
   p.M = s.number("M", p.M);
-  return with_context(s.path(), [&] { return std::make_shared<const VelocityDrive>(p); });
+  return detail::with_context(s.path(), [&] { return std::make_shared<const VelocityDrive>(p); });
 }
 
 // Position-loop gains and force limit of an xy-table axis (N per m, m/s, m/s^2; N): the plant's
@@ -450,7 +434,7 @@ XyAxis read_xy_axis(const Section& s, const std::string& name, const PidParams& 
     cc.base_dir = ctx.base_dir;
     cc.files_read = ctx.options ? ctx.options->files_read : nullptr;
     cc.law = a.law ? std::function<FrictionLaw()>([law = *a.law] { return law; }) : ctx.fallback;
-    cc.inertia = with_context(s.path(), [&] { return a.equivalent_mass(); });
+    cc.inertia = detail::with_context(s.path(), [&] { return a.equivalent_mass(); });
     a.compensator = own ? read_compensation(Section(own, s.at("compensation")), cc) : read_compensation(*shared, cc);
   }
   return a;
@@ -483,7 +467,7 @@ PlantPtr read_xy_table(const Section& s, const PlantContext& ctx) {
   // A bad identified mass or offset is the model file's (the caller checks it; this names the axis).
   const bool modelled = ctx.options && !ctx.options->axis_models.empty();
   const std::string source = modelled && !ctx.options->model_source.empty() ? ctx.options->model_source : s.path();
-  return with_context(source, [&] { return std::make_shared<const XyTable>(std::move(x), std::move(y), timing); });
+  return detail::with_context(source, [&] { return std::make_shared<const XyTable>(std::move(x), std::move(y), timing); });
 }
 
 constexpr std::pair<const char*, PlantPtr (*)(const Section&, const PlantContext&)> kPlantReaders[] = {
@@ -519,7 +503,7 @@ PlantPtr read_plant(const Section& s, const ScenarioOptions& o, const PlantConte
     s.allow({"type", "M", "offset"});
     // M and offset come from the identified model: a bad value is the model file's.
     const std::string source = o.model_source.empty() ? s.path() : o.model_source + ": parameters";
-    return with_context(source, [&] { return std::make_shared<const RigidAxis>(*o.axis); });
+    return detail::with_context(source, [&] { return std::make_shared<const RigidAxis>(*o.axis); });
   }
   const std::string type = s.text("type", "");
   if (type.empty())
@@ -542,7 +526,7 @@ InputSignal read_data_input(const Section& s, DataSource& src) {
   if (!d) throw std::invalid_argument(s.path() + ": no data file: give 'file' here or a top-level 'data'");
   const double scale = s.number("scale", 1.0);
   if (!std::isfinite(scale)) throw std::invalid_argument(s.at("scale") + ": " + detail::format_value(scale) + " must be a finite number");
-  InputSignal in = with_context(s.path(), [&] { return input_from_column(*d, s.text("time", "time"), column, scale, read_interpolation(s)); });
+  InputSignal in = detail::with_context(s.path(), [&] { return input_from_column(*d, s.text("time", "time"), column, scale, read_interpolation(s)); });
   src.data_step = in.times.size() > 1 ? in.times[1] - in.times[0] : 0.0;
   src.time_column = s.text("time", "time");
   return in;
@@ -677,7 +661,7 @@ Contour read_path(const Section& s, DataSource& src) {
     throw std::invalid_argument(s.at("scale") + ": " + detail::format_value(scale) + " must be > 0 (m per file unit)");
   const std::string tn = s.text("time", "time"), xn = s.text("x", "x"), yn = s.text("y", "y");
   const auto column = [&](const std::string& name, const char* role) {
-    return with_context(s.path(), [&]() -> const Eigen::VectorXd& { return finite_column(*d, name, role); });
+    return detail::with_context(s.path(), [&]() -> const Eigen::VectorXd& { return finite_column(*d, name, role); });
   };
   const Eigen::VectorXd t = column(tn, "time"), x = column(xn, "x"), y = column(yn, "y");
   for (Eigen::Index k = 1; k < t.size(); ++k)
@@ -736,7 +720,7 @@ EmpsPdParams read_emps_pd(const Section& s, DataSource& src) {
     if (!d) throw std::invalid_argument(s.at("pulses") + ": the scenario names no data file to read column '" + column + "' from");
     if (d->has_column(column)) {
       const std::string time = src.time_column.empty() ? "time" : src.time_column;
-      p.pulses = with_context(s.at("pulses"), [&] { return input_from_column(*d, time, column, scale, true); });
+      p.pulses = detail::with_context(s.at("pulses"), [&] { return input_from_column(*d, time, column, scale, true); });
     } else if (!optional) {
       throw std::invalid_argument(s.at("pulses") + ": " + d->where() + "no column '" + column +
                                   "'; the file has columns: " + d->describe_contents() + " (set optional: true to run without pulses)");
@@ -770,13 +754,13 @@ std::shared_ptr<const Compensator> loop_compensation(const Section& s, const Pla
 PlantPtr close_pid(const Section& s, DataSource&, const PlantPtr& plant, const CompensationContext& cc) {
   const PidParams c = read_controller(s);
   const std::shared_ptr<const Compensator> comp = loop_compensation(s, plant, cc);
-  return with_context(s.path(), [&] { return close_loop(plant, c, comp); });
+  return detail::with_context(s.path(), [&] { return close_loop(plant, c, comp); });
 }
 
 PlantPtr close_emps_pd(const Section& s, DataSource& src, const PlantPtr& plant, const CompensationContext& cc) {
   const EmpsPdParams p = read_emps_pd(s, src);
   const std::shared_ptr<const Compensator> comp = loop_compensation(s, plant, cc);
-  return with_context(s.path(), [&] { return close_loop(plant, p, comp); });
+  return detail::with_context(s.path(), [&] { return close_loop(plant, p, comp); });
 }
 
 constexpr std::pair<const char*, PlantPtr (*)(const Section&, DataSource&, const PlantPtr&, const CompensationContext&)>
@@ -940,7 +924,7 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
       if (!(n < kLongEnd)) throw std::invalid_argument(s.at("max_steps") + ": " + detail::format_value(n) + " must be < 9.2e18 (steps)");
       o.max_steps = static_cast<long>(n);
     }
-    with_context(s.at("mode"), [&] { return resolve_solver_mode(std::span<const FrictionLaw* const>(laws), o.mode); });
+    detail::with_context(s.at("mode"), [&] { return resolve_solver_mode(std::span<const FrictionLaw* const>(laws), o.mode); });
   }
   if (two_axis) {
     // The axes start at rest on the contour's first point (no step at t = 0), unless `initial`
@@ -977,7 +961,7 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
       const auto d = src.get();
       const std::string name = pos.as<std::string>();
       if (!d) throw std::invalid_argument(s.at("position") + ": '" + name + "' is not a number, and the scenario names no data file");
-      const Eigen::VectorXd& q = with_context(s.at("position"), [&]() -> const Eigen::VectorXd& { return select_column(*d, name, "initial position"); });
+      const Eigen::VectorXd& q = detail::with_context(s.at("position"), [&]() -> const Eigen::VectorXd& { return select_column(*d, name, "initial position"); });
       if (q.size() == 0) throw std::invalid_argument(s.at("position") + ": column '" + name + "' is empty");
       o.initial_position = q[0];
     } else {

@@ -22,6 +22,23 @@ inline ErrorFields key_fields(const std::string& where, const std::string& key =
   return f;
 }
 
+// Wraps a constructor's own message ("axis: M = 0 must be > 0") with the file and key path
+// `where`, keeping the code of an InputError; any other refusal is scenario.value (a value the
+// model refused).
+template <class F>
+auto with_context(const std::string& where, F&& make) {
+  try {
+    return make();
+  } catch (const std::invalid_argument& e) {
+    ErrorFields f = error_fields(e);
+    const ErrorFields at = key_fields(where);
+    if (f.file.empty()) f.file = at.file;
+    if (f.key.empty()) f.key = at.key;
+    const std::string code = dynamic_cast<const InputError*>(&e) ? error_code(e) : std::string(errc::scenario_value);
+    throw InputError(code, where + ": " + e.what(), f);
+  }
+}
+
 /// Refuses a mapping that gives a key twice (`k: 2.0` then `k: 3.0`), anywhere in the document:
 /// yaml-cpp keeps both pairs and a lookup silently finds one of them, so the user's intent is
 /// unknown. Also refuses keys that are not plain scalars (a list or mapping as a key).
