@@ -103,9 +103,8 @@ Handler register_simulate(CLI::App& app) {
     const Trajectory tr = simulate(sc);
     if (!args->plot.empty()) {
       progress_stage("drawing " + args->plot);
-      // Pendulums and motors turn (rad, N m); the other plants translate (m, N).
-      const std::string type = sc.plant->type();
-      const Axis axis = (type == "pendulum" || type == "dc-motor") ? Axis::rotary : Axis::linear;
+      // Pendulums and motors turn (rad, N m); the other plants translate (m, N): the plant says.
+      const Axis axis = sc.plant->motion_axis();
       const std::string title = std::filesystem::path(args->scenario).filename().string();
       // A two-axis table: its path in the plane (the circular test's polar error plot).
       const std::optional<Figure> xy = xy_figure(tr, title);

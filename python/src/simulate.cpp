@@ -136,6 +136,12 @@ A simulation problem: plant, friction law, input and options, read from a scenar
                     "Friction law on the plant's friction body (FrictionLaw; a dict is accepted when set).")
       .def_property_readonly("plant", [](const Scenario& s) { return s.plant ? s.plant->type() : std::string(); },
                              "Plant type ('axis', 'pendulum', 'spring-base', 'dc-motor', 'velocity-drive', closed loops).")
+      .def_property_readonly(
+          "axis",
+          [](const Scenario& s) {
+            return std::string(s.plant && s.plant->motion_axis() == Axis::rotary ? "rotary" : "linear");
+          },
+          "How the plant moves: 'rotary' (rad, N m: pendulum, dc-motor) or 'linear' (m, N: the others).")
       .def_property("duration", [](const Scenario& s) { return s.options.duration; },
                     [](Scenario& s, double v) { s.options.duration = v; }, "Simulated time, s (> 0).")
       .def_property("output_rate", [](const Scenario& s) { return s.options.output_rate; },

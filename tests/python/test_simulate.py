@@ -25,6 +25,9 @@ def test_dict_scenario_exact_solution():
 def test_overrides_and_scenario_object():
     sc = fl.Scenario(AXIS)
     assert (sc.plant, sc.law.name, sc.duration) == ("axis", "coulomb", 1.0)
+    # The plant says how it moves (the units of its results and figures); a pendulum turns.
+    assert sc.axis == "linear"
+    assert fl.Scenario(dict(AXIS, plant={"type": "pendulum", "m": 1.0, "l": 0.5})).axis == "rotary"
     tr = fl.simulate(sc, law={"law": "coulomb", "Fc": 0.5}, duration=2.0, output_rate=10)
     assert len(tr) == 21 and tr["velocity"][-1] == pytest.approx(1.5 * 2.0, rel=1e-9)
     assert sc.law.name == "coulomb" and sc.law.parameters["Fc"] == 1.0  # the passed scenario is not changed

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "frictionlab/models/parameter.hpp"
+#include "frictionlab/models/relaxation.hpp"
 #include "frictionlab/models/scalar.hpp"
 #include "frictionlab/models/stribeck.hpp"
 
@@ -114,13 +115,9 @@ struct LuGreT {
   /// Returns the force at the end of the step (N or N m).
   double step(std::span<double> z, double v, double dt) const {
     // g(v) and the damping are evaluated once: this runs in a control loop (target < 20 ns).
-    const double g = level(v);
-    const double rate = sigma0 * std::abs(v) / g;  // 1/s
-    if (v != 0.0) {
-      const double zss = (v > 0 ? g : -g) / sigma0;
-      z[0] = zss + (z[0] - zss) * std::exp(-rate * dt);
-    }
-    const double zdot = v - rate * z[0];
+    const BristleRelaxation<double> r = bristle_relaxation(*this, v);
+    if (v != 0.0) z[0] = relax(z[0], r.target, std::exp(-r.rate * dt));  // at rest z holds
+    const double zdot = v - r.rate * z[0];
     return sigma0 * z[0] + damping(v) * zdot + sigma2 * v;
   }
 

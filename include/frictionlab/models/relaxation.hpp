@@ -1,11 +1,11 @@
 #pragma once
 // The exact relaxation of a first-order state over one step, and LuGre's bristles as one: the
-// update that the LuGre observer (control/lugre_observer.hpp) and the LuGre fit
-// (identify/lugre.hpp) share. Templated on the scalar: double, or a Ceres Jet in the fit.
+// update that LuGre's own step (models/lugre.hpp), the LuGre observer (control/lugre_observer.hpp)
+// and the LuGre fit (identify/lugre.hpp) share. Templated on the scalar: double, or a Ceres Jet
+// in the fit.
 
 #include <cmath>
 
-#include "frictionlab/models/lugre.hpp"
 #include "frictionlab/models/scalar.hpp"
 
 #include "frictionlab/export.hpp"
@@ -28,9 +28,10 @@ struct BristleRelaxation {
 };
 
 /// The relaxation of `law`'s bristle state at velocity v (m/s or rad/s): with relax(), the exact
-/// state after a step at constant v (what LuGreT::step computes).
-template <class S, class T>
-BristleRelaxation<T> bristle_relaxation(const LuGreT<S>& law, const T& v) {
+/// state after a step at constant v. `law` is any bristle law with a stiffness `sigma0` (N/m or
+/// N m/rad, > 0) and a steady sliding level `level(v)` (N or N m, > 0), e.g. LuGreT.
+template <class Law, class T>
+BristleRelaxation<T> bristle_relaxation(const Law& law, const T& v) {
   using std::abs;
   const T g = law.level(v);
   return {T(law.sigma0) * abs(v) / g, sgn(v) * g / T(law.sigma0)};

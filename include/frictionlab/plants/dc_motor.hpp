@@ -35,6 +35,7 @@ class DcMotor : public SingleContactPlant {
   /// \throws std::invalid_argument naming the first parameter out of range.
   explicit DcMotor(DcMotorParams p);
   std::string type() const override { return "dc-motor"; }
+  Axis motion_axis() const override { return Axis::rotary; }
   int num_states() const override { return p_.drive == MotorDrive::voltage ? 3 : 2; }
   double inertia(int = 0) const override { return p_.J; }
   double applied(double t, std::span<const double> x, const InputValue& u) const override;

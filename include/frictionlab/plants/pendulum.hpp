@@ -21,6 +21,7 @@ class Pendulum : public SingleContactPlant {
   /// \throws std::invalid_argument naming the first parameter out of range.
   explicit Pendulum(PendulumParams p);
   std::string type() const override { return "pendulum"; }
+  Axis motion_axis() const override { return Axis::rotary; }
   int num_states() const override { return 2; }
   double inertia(int = 0) const override { return p_.m * p_.l * p_.l; }
   double applied(double t, std::span<const double> x, const InputValue& u) const override;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "frictionlab/core/input.hpp"
+#include "frictionlab/models/parameter.hpp"
 
 #include "frictionlab/export.hpp"
 namespace frictionlab FRICTIONLAB_API {
@@ -46,6 +47,9 @@ class Plant {
 
   /// The scenario-file name of the plant type ("axis", "dc-motor", ...).
   virtual std::string type() const = 0;
+  /// How the plant moves, so that results and figures are in its units: rotary (rad, N m) for a
+  /// pendulum or a motor, linear (m, N) otherwise. Default linear.
+  virtual Axis motion_axis() const { return Axis::linear; }
   /// Number of states (>= 2 num_contacts()).
   virtual int num_states() const = 0;
   /// Number of inputs (>= 1). Default 1.

@@ -46,6 +46,7 @@ class ClosedLoop : public SingleContactPlant {
   ///         Ts or delay), or when `inner` is null, kinematic or not 1-DOF.
   ClosedLoop(std::shared_ptr<const Plant> inner, PidParams c, std::shared_ptr<const Compensator> compensator = nullptr);
   std::string type() const override { return inner_->type(); }
+  Axis motion_axis() const override { return inner_->motion_axis(); }
   int num_states() const override { return n_inner_ + n_pid_ + n_comp_; }
   double inertia(int = 0) const override { return inner_->inertia(); }
   void initial_extras(std::span<double> x) const override;

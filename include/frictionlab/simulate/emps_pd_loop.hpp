@@ -33,6 +33,7 @@ class EmpsPdLoop : public SingleContactPlant {
   ///         EmpsPdParams::validate (a parameter out of range: the message names it, its value and unit).
   EmpsPdLoop(std::shared_ptr<const Plant> inner, EmpsPdParams p, std::shared_ptr<const Compensator> compensator = nullptr);
   std::string type() const override { return inner_->type(); }
+  Axis motion_axis() const override { return inner_->motion_axis(); }
   int num_states() const override { return n_inner_ + kDiscrete + n_comp_; }
   using SingleContactPlant::initial_extras;
   void initial_extras(std::span<double> x, Inputs u) const override;
