@@ -6,12 +6,15 @@
 #include "../flag_names.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/identify/idim.hpp"
+#include "frictionlab/io/columns.hpp"
 #include "method.hpp"
 
 namespace frictionlab::cli {
 namespace {
 
-IdimData idim_data(const Dataset& d, const DataOptions& c, const std::string& from) {
+// The record's columns; the load and temperature columns (--load, --temperature) when given.
+IdimData idim_data(const Dataset& d, const DataOptions& c, const OptionValues& options) {
+  const std::string from = options.text("from");
   IdimData x;
   x.time = time_column(d, c);
   const bool use_velocity =
@@ -19,6 +22,8 @@ IdimData idim_data(const Dataset& d, const DataOptions& c, const std::string& fr
   if (use_velocity) x.velocity = velocity_column(d, c);
   else x.position = position_column(d, c);
   x.force = force_column(d, c);
+  if (options.given("load")) x.load = finite_column(d, options.text("load"), "--load");
+  if (options.given("temperature")) x.temperature = finite_column(d, options.text("temperature"), "--temperature");
   x.file = d.file;
   x.sha256 = d.sha256;
   return x;
@@ -27,15 +32,14 @@ IdimData idim_data(const Dataset& d, const DataOptions& c, const std::string& fr
 Result run(const MethodIO& io, const OptionValues& options) {
   IdimOptions o = make_idim_options(options);
   o.axis = io.columns.parsed_axis();
-  const std::string from = options.text("from");
   const Dataset d = load_data(io.data, io.columns);
-  const IdimData data = idim_data(d, io.columns, from);
+  const IdimData data = idim_data(d, io.columns, options);
   Result r = identify_idim(data, o);
   r.data_file = data.file;
   r.data_sha256 = data.sha256;
   note_data(r, d);
   if (r.ok() && options.given("validate"))
-    r.validation = cross_test(r, idim_data(load_data(options.text("validate"), io.columns), io.columns, from), o);
+    r.validation = cross_test(r, idim_data(load_data(options.text("validate"), io.columns), io.columns, options), o);
   name_flags(r);
   return r;
 }

@@ -2,6 +2,7 @@
 #include "frictionlab/identify/idim.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -74,6 +75,83 @@ IdimTerm sample_term(const char* parameter, Quantity quantity, F f) {
 // Selects rather than converts a comparison, so that loops over it are vectorised.
 double sign_of(double v) { return (v > 0 ? 1.0 : 0.0) - (v < 0 ? 1.0 : 0.0); }
 
+// A term of a measured condition at one sample, f(qd, c), with c the kinematics' `condition`
+// (load or temperature), in both forms as sample_term.
+template <class F>
+IdimTerm condition_term(std::string parameter, Quantity quantity, IdimKinematics::View IdimKinematics::*condition,
+                        const char* needs, F f) {
+  auto fill = [parameter, condition, needs, f](const IdimKinematics& k, Eigen::Ref<Vec> out) {
+    const IdimKinematics::View& c = k.*condition;
+    if (c.size() != out.size())
+      throw std::invalid_argument("idim: parameter " + parameter + " needs " + needs + " (" + std::to_string(c.size()) +
+                                  " samples given; expected " + std::to_string(out.size()) + ")");
+    for (Eigen::Index i = 0; i < out.size(); ++i) out(i) = f(k.qd(i), c(i));
+  };
+  auto column = [fill](const IdimKinematics& k) {
+    Vec v(k.qd.size());
+    fill(k, v);
+    return v;
+  };
+  return {std::move(parameter), quantity, column, fill};
+}
+
+// The ripple's sine (or cosine) of harmonic h: sin(2 pi h q / period) of the filtered position.
+IdimTerm ripple_term(int h, bool cosine, double period) {
+  std::string parameter = std::string(cosine ? "ripple_cos_" : "ripple_sin_") + std::to_string(h);
+  const double wavenumber = 2.0 * M_PI * h / period;  // rad per m (or per rad)
+  auto fill = [parameter, cosine, wavenumber](const IdimKinematics& k, Eigen::Ref<Vec> out) {
+    if (k.q.size() != out.size())
+      throw std::invalid_argument("idim: parameter " + parameter +
+                                  " needs the position (the ripple repeats with position); the regressors were built "
+                                  "from the velocity");
+    for (Eigen::Index i = 0; i < out.size(); ++i) out(i) = cosine ? std::cos(wavenumber * k.q(i)) : std::sin(wavenumber * k.q(i));
+  };
+  auto column = [fill](const IdimKinematics& k) {
+    Vec v(k.qd.size());
+    fill(k, v);
+    return v;
+  };
+  return {std::move(parameter), Quantity::force, column, fill};
+}
+
+// The terms of a measured condition or of position that one term name adds ("load" adds two,
+// "ripple" two per harmonic); empty for any other name.
+std::vector<IdimTerm> condition_terms(const std::string& name, const IdimOptions& o) {
+  if (name == "load") {
+    constexpr const char* kLoad = "the load column (N or N m; --load COLUMN, Python load=array)";
+    return {condition_term("load_gain", Quantity::dimensionless, &IdimKinematics::load, kLoad,
+                           [](double, double load) { return load; }),
+            condition_term("mu_load", Quantity::dimensionless, &IdimKinematics::load, kLoad,
+                           [](double qd, double load) { return sign_of(qd) * std::abs(load); })};
+  }
+  if (name == "temperature") {
+    if (!std::isfinite(o.temperature_ref))
+      throw std::invalid_argument("idim: temperature_ref = " + detail::format_value(o.temperature_ref, 6) +
+                                  " must be a finite temperature (degC or K) for the 'temperature' term");
+    const double ref = o.temperature_ref;
+    return {condition_term("Fv_per_K", Quantity::viscous_per_kelvin, &IdimKinematics::temperature,
+                           "the temperature column (degC or K; --temperature COLUMN, Python temperature=array)",
+                           [ref](double qd, double t) { return qd * (t - ref); })};
+  }
+  if (name == "ripple") {
+    if (!(o.ripple_period > 0.0) || !std::isfinite(o.ripple_period))
+      throw std::invalid_argument("idim: ripple period = " + detail::format_value(o.ripple_period, 6) +
+                                  " must be > 0 (m or rad) for the 'ripple' term (--ripple-period P)");
+    if (o.ripple_harmonics < 1)
+      throw std::invalid_argument("idim: ripple harmonics = " + std::to_string(o.ripple_harmonics) + " must be >= 1");
+    std::vector<IdimTerm> out;
+    for (int h = 1; h <= o.ripple_harmonics; ++h) {
+      out.push_back(ripple_term(h, false, o.ripple_period));
+      out.push_back(ripple_term(h, true, o.ripple_period));
+    }
+    return out;
+  }
+  return {};
+}
+
+// True when `terms` asks for the term `name`.
+bool asks_for(const IdimOptions& o, const char* name) { return std::find(o.terms.begin(), o.terms.end(), name) != o.terms.end(); }
+
 IdimTerm builtin(const std::string& name, const IdimOptions& o) {
   if (name == "inertia") return sample_term("M", Quantity::inertia, [](double, double qdd) { return qdd; });
   if (name == "viscous") return sample_term("Fv", Quantity::viscous, [](double qd, double) { return qd; });
@@ -95,7 +173,7 @@ IdimTerm builtin(const std::string& name, const IdimOptions& o) {
   }
   throw std::invalid_argument("idim: unknown term '" + name +
                               "'; known terms: inertia, viscous, coulomb, offset, asymmetric, viscous_pos, "
-                              "coulomb_pos, viscous_neg, coulomb_neg, stribeck");
+                              "coulomb_pos, viscous_neg, coulomb_neg, stribeck, load, temperature, ripple");
 }
 
 std::string model_name(const std::vector<IdimTerm>& terms, bool custom) {
@@ -130,15 +208,32 @@ IdimRateDefaults idim_rate_defaults(double fs) {
 }
 
 namespace {
-// `o` with the rate-dependent settings it asks for filled in from the data's mean step dt (s).
-IdimOptions resolved(const IdimOptions& o, double dt) {
-  if (!o.auto_cutoff && !o.auto_decimation && !o.auto_skip) return o;
-  const IdimRateDefaults d = idim_rate_defaults(1.0 / dt);
+// The measured condition `name` (load, temperature) that a term of `o` needs, checked: present,
+// as long as time, finite.
+void check_condition(const IdimData& d, const IdimOptions& o, const char* term, const Vec& v, const char* what) {
+  if (!asks_for(o, term)) return;
+  if (v.size() == 0) throw std::invalid_argument(where(d) + "the '" + term + "' term needs " + what);
+  check_signal(d, v, term, d.time.size());
+}
+
+// `o` with the settings it leaves to the data filled in: the rate-dependent ones from the mean
+// step dt (s), the temperature term's reference from the mean temperature over the used samples.
+IdimOptions resolved(const IdimOptions& o, const IdimData& data, double dt) {
+  check_condition(data, o, "load", data.load, "the load column (N or N m; --load COLUMN, Python load=array)");
+  check_condition(data, o, "temperature", data.temperature,
+                  "the temperature column (degC or K; --temperature COLUMN, Python temperature=array)");
   IdimOptions r = o;
-  if (o.auto_cutoff) r.cutoff_hz = d.cutoff_hz;
-  if (o.auto_decimation) r.decimation = d.decimation;
-  if (o.auto_skip) r.skip = d.skip;
-  r.auto_cutoff = r.auto_decimation = r.auto_skip = false;
+  if (o.auto_cutoff || o.auto_decimation || o.auto_skip) {
+    const IdimRateDefaults d = idim_rate_defaults(1.0 / dt);
+    if (o.auto_cutoff) r.cutoff_hz = d.cutoff_hz;
+    if (o.auto_decimation) r.decimation = d.decimation;
+    if (o.auto_skip) r.skip = d.skip;
+    r.auto_cutoff = r.auto_decimation = r.auto_skip = false;
+  }
+  if (asks_for(o, "temperature") && std::isnan(o.temperature_ref)) {
+    const Eigen::Index n = data.temperature.size(), used = n - r.skip - r.skip_end;
+    r.temperature_ref = used > 0 ? data.temperature.segment(r.skip, used).mean() : data.temperature.mean();
+  }
   return r;
 }
 }  // namespace
@@ -148,6 +243,8 @@ std::vector<IdimTerm> idim_terms(const IdimOptions& options) {
   for (const auto& name : options.terms) {
     if (name == "asymmetric") {
       for (const char* n : {"viscous_pos", "coulomb_pos", "viscous_neg", "coulomb_neg"}) out.push_back(builtin(n, options));
+    } else if (auto more = condition_terms(name, options); !more.empty()) {
+      for (auto& t : more) out.push_back(std::move(t));
     } else {
       out.push_back(builtin(name, options));
     }
@@ -194,6 +291,7 @@ struct Pass {
   IdimRegression reg;
   bool from_velocity = false;
   Vec velocity;  // decimated like the columns; empty unless asked for
+  std::optional<IdimKinematics> kinematics;  // views of the workspace, valid until it is used again
 };
 
 Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt, bool want_velocity_column,
@@ -223,6 +321,9 @@ Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt
   const TransferFunction lp = butter(options.filter_order, normalized_cutoff(options.cutoff_hz, reg.dt));
   const Vec* measured = nullptr;
   pass.from_velocity = regressors_from_velocity(data, options);
+  if (pass.from_velocity && asks_for(options, "ripple"))
+    throw std::invalid_argument(where(data) + "the 'ripple' term needs the position (the ripple repeats with position), "
+                                "but the regressors are built from the velocity: give a position column, or --from position");
   if (options.source == IdimSource::position && data.position.size() == 0)
     throw std::invalid_argument(where(data) + "no position given; the regressors were asked to be built from the position");
   if (options.source == IdimSource::velocity && data.velocity.size() == 0)
@@ -249,8 +350,10 @@ Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt
   else qd = filtered;
   gradient(qd, reg.dt, qdd);
   using View = IdimKinematics::View;
-  const IdimKinematics k{from_position ? View(filtered.data(), n) : View(nullptr, 0), View(qd.data(), n),
-                         View(qdd.data(), n)};
+  const auto condition = [n](const Vec& c) { return c.size() == n ? View(c.data(), n) : View(nullptr, 0); };
+  const IdimKinematics& k = pass.kinematics.emplace(
+      IdimKinematics{from_position ? View(filtered.data(), n) : View(nullptr, 0), View(qd.data(), n), View(qdd.data(), n),
+                     condition(data.load), condition(data.temperature)});
 
   // 3-4: columns, drop the start, decimate.
   const Eigen::Index used = n - options.skip - options.skip_end;
@@ -317,6 +420,13 @@ Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt
   return pass;
 }
 
+// The speed at or below which a pass has no motion at all: min_velocity, or for a position the
+// rounding level of a constant record filtered and differentiated, m/s or rad/s.
+double no_motion_speed(const IdimData& data, const IdimOptions& options, const Pass& pass) {
+  const double floor = pass.from_velocity ? 0.0 : 1e-9 * data.position.cwiseAbs().maxCoeff() / pass.reg.dt;
+  return std::max(options.min_velocity, floor);
+}
+
 }  // namespace
 
 IdimRegression idim_regression(const IdimData& data, const IdimOptions& options) {
@@ -326,7 +436,7 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options)
 
 IdimRegression idim_regression(const IdimData& data, const IdimOptions& options, IdimWorkspace& workspace) {
   const double dt = checked_step(data);
-  return regression_pass(data, resolved(options, dt), dt, false, workspace).reg;
+  return regression_pass(data, resolved(options, data, dt), dt, false, workspace).reg;
 }
 
 namespace {
@@ -396,7 +506,9 @@ MethodInfo detail::idim_method_info() {
       {.name = "terms", .type = OptionType::list, .default_value = d.terms,
        .help = "Regressors in column order: inertia, viscous, coulomb, offset, asymmetric (Fv_pos, Fc_pos, Fv_neg, "
                "Fc_neg; then leave out offset), each of viscous_pos, coulomb_pos, viscous_neg, coulomb_neg alone, "
-               "stribeck (Fs_minus_Fc with --vs, --delta); an unknown term is refused with the list"},
+               "stribeck (Fs_minus_Fc with --vs, --delta), load (load_gain, mu_load; needs --load), temperature "
+               "(Fv_per_K; needs --temperature), ripple (ripple_sin_k, ripple_cos_k; needs --ripple-period); an "
+               "unknown term is refused with the list"},
       {.name = "cutoff", .type = OptionType::number, .unit = "Hz",
        .help = "Position low-pass cut-off. Default from the sample rate fs: min(100 Hz, fs/10) (EMPS: 100 Hz at 1 kHz)",
        .min = 0, .min_open = true, .deprecated_keywords = {"cutoff_hz"}},
@@ -434,6 +546,22 @@ MethodInfo detail::idim_method_info() {
        .default_value = d.min_velocity, .help = "No excitation when the largest |velocity| is not above this", .min = 0},
       {.name = "max-condition", .type = OptionType::number, .default_value = d.max_condition,
        .help = "Largest condition number of the column-normalised regressor accepted", .min = 1},
+      {.name = "load", .type = OptionType::column, .unit = "N", .rotary_unit = "N m",
+       .help = "Column of the load force or torque the contact transmits, for the load term (Python: an array of "
+               "the data's length)"},
+      {.name = "temperature", .type = OptionType::column, .unit = "degC or K",
+       .help = "Column of the contact's temperature (grease, gearbox), for the temperature term (Python: an array of "
+               "the data's length)"},
+      {.name = "temperature-ref", .type = OptionType::number, .unit = "degC or K",
+       .help = "Reference temperature T_ref of the temperature term, in the temperature column's unit. Default: the "
+               "mean temperature of the used samples (reported)"},
+      {.name = "ripple-period", .type = OptionType::number, .unit = "m", .rotary_unit = "rad",
+       .help = "Period P of the ripple term: the distance over which cogging or a screw's pitch repeats (required by "
+               "the ripple term)",
+       .min = 0, .min_open = true},
+      {.name = "ripple-harmonics", .type = OptionType::integer,
+       .default_value = static_cast<long long>(d.ripple_harmonics),
+       .help = "Harmonics K of the ripple term: parameters ripple_sin_1, ripple_cos_1, ... ripple_cos_K", .min = 1},
       {.name = "validate", .type = OptionType::file,
        .help = "Second data file for a cross-test with the identified parameters (Python: a dict with time, force "
                "and position or velocity)"},
@@ -463,6 +591,9 @@ IdimOptions make_idim_options(const OptionValues& v) {
   o.input_delay = static_cast<Eigen::Index>(v.integer("delay"));
   o.min_velocity = v.number("min-velocity");
   o.max_condition = v.number("max-condition");
+  if (v.given("temperature-ref")) o.temperature_ref = v.number("temperature-ref");
+  if (v.given("ripple-period")) o.ripple_period = v.number("ripple-period");
+  o.ripple_harmonics = static_cast<int>(v.integer("ripple-harmonics"));
   return o;
 }
 
@@ -491,6 +622,80 @@ void add_idim_adequacy(Result& r, const IdimData& data, const IdimOptions& o) {
 }
 }  // namespace
 
+namespace {
+
+// What the attached law leaves to the parameters (it is the friction at zero load, at T_ref and
+// without the ripple), and a viscous coefficient that the temperature term turns negative
+// within the log's temperature range.
+void describe_conditions(Result& r, const IdimData& data, const IdimOptions& o) {
+  std::vector<std::string> left;
+  if (asks_for(o, "load")) left.push_back("at zero load (mu_load |load| adds to Fc)");
+  if (asks_for(o, "temperature"))
+    left.push_back("at T_ref = " + detail::format_value(o.temperature_ref, 6) + " (Fv_per_K (T - T_ref) adds to Fv)");
+  if (asks_for(o, "ripple")) left.push_back("without the position ripple (ripple_sin_k, ripple_cos_k)");
+  if (left.empty()) return;
+  std::string text = "the law is the friction ";
+  for (std::size_t i = 0; i < left.size(); ++i) text += (i ? ", " : "") + left[i];
+  r.diagnostics.texts["law_conditions"] = text;
+  if (asks_for(o, "temperature") && r.find("Fv") != nullptr) {
+    const double fv = r.value("Fv"), per_k = r.value("Fv_per_K");
+    for (const double t : {data.temperature.minCoeff(), data.temperature.maxCoeff()}) {
+      const double at = fv + per_k * (t - o.temperature_ref);
+      if (at < 0) {
+        r.diagnostics.warnings.push_back(
+            "the viscous coefficient Fv + Fv_per_K (T - T_ref) = " + detail::format_value(at, 6) + " " +
+            std::string(unit(Quantity::viscous, o.axis)) + " is negative at T = " + detail::format_value(t, 6) +
+            ", within the log's temperature range: the temperature term is not physical there (is the temperature "
+            "confounded with the speed schedule? a warm-up run at constant speed separates them)");
+        break;
+      }
+    }
+  }
+}
+
+// The Stribeck velocity, on a log grid from 1e-4 to 0.5 of the top speed, whose identification has
+// the smallest relative error: the identification residual alone chooses, never the cross-test.
+// Only the Stribeck column depends on vs, and decimation is linear and column by column, so the
+// recipe runs once and each trial rebuilds and decimates that one column and refits (the same
+// numbers as running the whole recipe per trial). options.stribeck_vs when no trial gives a fit.
+double searched_stribeck_vs(const IdimData& data, const IdimOptions& options, double dt, IdimWorkspace& workspace) {
+  Pass base = regression_pass(data, options, dt, false, workspace);
+  IdimRegression& reg = base.reg;
+  // A record without motion or force gives no fit at any vs: identify_idim_fixed says why.
+  if (!(reg.max_speed > no_motion_speed(data, options, base)) || !(reg.y.cwiseAbs().maxCoeff() > 0.0))
+    return options.stribeck_vs;
+  std::vector<std::string> names;
+  Eigen::Index j = -1;  // the Stribeck column (a built-in term: extras come after)
+  for (const auto& t : reg.terms) {
+    if (t.parameter == "Fs_minus_Fc" && j < 0) j = static_cast<Eigen::Index>(names.size());
+    names.push_back(t.parameter);
+  }
+  const Eigen::Index n = data.time.size(), used = n - options.skip - options.skip_end;
+  Eigen::Map<Vec> column(workspace.buffer(kFirstColumnBuffer + static_cast<std::size_t>(j), static_cast<std::size_t>(n)).data(), n);
+  LeastSquaresOptions lso;
+  lso.max_condition = options.max_condition;
+  const double y_norm = reg.y.norm();
+  IdimOptions o = options;
+  double best = std::numeric_limits<double>::infinity(), best_vs = options.stribeck_vs;
+  constexpr int kGrid = 40;
+  for (int i = 0; i < kGrid; ++i) {
+    o.stribeck_vs = reg.max_speed * std::pow(10.0, -4.0 + (4.0 - std::log10(2.0)) * i / (kGrid - 1));
+    builtin("stribeck", o).fill(*base.kinematics, column);
+    if (options.decimation == 1) reg.X.col(j) = column.segment(options.skip, used);
+    else reg.X.col(j) = decimate_columns(ColumnViews{{column.data() + options.skip, used}}, options.decimation, workspace.filter());
+    const LeastSquaresFit fit = linear_least_squares(reg.X, reg.y, names, lso);
+    if (fit.refusal != LeastSquaresRefusal::none || !fit.theta.allFinite()) continue;
+    const double error_percent = 100.0 * std::sqrt(fit.residual.squaredNorm()) / y_norm;
+    if (error_percent < best) {
+      best = error_percent;
+      best_vs = o.stribeck_vs;
+    }
+  }
+  return best_vs;
+}
+
+}  // namespace
+
 Result identify_idim(const IdimData& data, const IdimOptions& options) {
   IdimWorkspace workspace;  // the regressions of a vs search share it
   return identify_idim(data, options, workspace);
@@ -498,28 +703,20 @@ Result identify_idim(const IdimData& data, const IdimOptions& options) {
 
 Result identify_idim(const IdimData& data, const IdimOptions& options_in, IdimWorkspace& workspace) {
   const double dt = checked_step(data);
-  const IdimOptions options = resolved(options_in, dt);
+  const IdimOptions options = resolved(options_in, data, dt);
   const auto terms = idim_terms(options);
   const bool has_stribeck = std::any_of(terms.begin(), terms.end(), [](const IdimTerm& t) { return t.parameter == "Fs_minus_Fc"; });
   IdimOptions o = options;
-  if (options.search_stribeck_vs && has_stribeck) {
-    // Log grid over the speed range; the identification residual alone chooses (never the cross-test).
-    const double top = regression_pass(data, options, dt, false, workspace).reg.max_speed;
-    double best = std::numeric_limits<double>::infinity(), best_vs = options.stribeck_vs;
-    constexpr int kGrid = 40;
-    for (int i = 0; i < kGrid; ++i) {
-      o.stribeck_vs = top * std::pow(10.0, -4.0 + (4.0 - std::log10(2.0)) * i / (kGrid - 1));
-      const Result trial = identify_idim_fixed(data, o, dt, workspace);
-      if (trial.ok() && trial.fit.relative_error_percent < best) {
-        best = trial.fit.relative_error_percent;
-        best_vs = o.stribeck_vs;
-      }
-    }
-    o.stribeck_vs = best_vs;
-  }
+  if (options.search_stribeck_vs && has_stribeck) o.stribeck_vs = searched_stribeck_vs(data, options, dt, workspace);
   Vec v;  // the filtered velocity at the fitted samples, for the friction map
   Result r = identify_idim_fixed(data, o, dt, workspace, &v);
   if (has_stribeck) r.diagnostics.numbers["stribeck_vs"] = o.stribeck_vs;
+  if (asks_for(o, "temperature")) r.diagnostics.numbers["temperature_ref"] = o.temperature_ref;
+  if (asks_for(o, "ripple")) r.diagnostics.numbers["ripple_period"] = o.ripple_period;
+  if (data.load.size() > 0 && !asks_for(o, "load"))
+    r.diagnostics.warnings.push_back("a load column was given, but the terms do not include 'load': it is not used");
+  if (data.temperature.size() > 0 && !asks_for(o, "temperature"))
+    r.diagnostics.warnings.push_back("a temperature column was given, but the terms do not include 'temperature': it is not used");
   if (options.input_delay > 0) r.diagnostics.numbers["input_delay"] = static_cast<double>(options.input_delay);
   {
     auto& defaults = r.diagnostics.groups["defaults"];  // the settings chosen from the sample rate
@@ -543,13 +740,18 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in, IdimWo
     }
     const IdimKinematics k{IdimKinematics::View(nullptr, 0), IdimKinematics::View(grid.data(), grid.size()),
                            IdimKinematics::View(zero.data(), zero.size())};
+    // The velocity terms only: a user's term may need the position; the ripple averages out over
+    // position, the temperature term is 0 at T_ref, and the load term is taken at the mean load.
     IdimOptions ov = o;
-    ov.extra_terms.clear();  // the built-in terms only (a user's term may need the position)
+    ov.extra_terms.clear();
+    std::erase_if(ov.terms, [](const std::string& t) { return t == "load" || t == "temperature" || t == "ripple"; });
     for (const auto& t : idim_terms(ov))
       if (t.parameter != "M" && t.parameter != "offset") curve += r.value(t.parameter) * t.column(k);
+    if (asks_for(o, "load")) curve += r.value("mu_load") * data.load.cwiseAbs().mean() * grid.unaryExpr([](double v) { return sign_of(v); });
     r.series["law_velocity"].assign(grid.data(), grid.data() + grid.size());
     r.series["law_force"].assign(curve.data(), curve.data() + curve.size());
     add_idim_adequacy(r, data, o);
+    describe_conditions(r, data, o);
   }
   return r;
 }
@@ -580,11 +782,7 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, dou
     return error_result(r, where(data) + std::to_string(nobs) + " samples after decimation for " + std::to_string(p) +
                                " parameters; expected more samples than parameters");
   }
-  // Velocities at the rounding level of the position (a constant record filtered and
-  // differentiated) are no motion at all.
-  const double velocity_floor =
-      from_velocity ? 0.0 : 1e-9 * data.position.cwiseAbs().maxCoeff() / reg.dt;
-  if (!(reg.max_speed > std::max(options.min_velocity, velocity_floor))) {
+  if (!(reg.max_speed > no_motion_speed(data, options, pass))) {
     return error_result(r, where(data) + "no excitation: the velocity never exceeds " + detail::format_value(options.min_velocity, 6) +
                                " (max |qd| = " + detail::format_value(reg.max_speed, 6) +
                                "); IDIM needs a trajectory that moves in both directions");
@@ -638,7 +836,8 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, dou
     Vec friction = reg.y, friction_model = Vec::Zero(nobs);
     for (Eigen::Index j = 0; j < p; ++j) {
       const std::string& name = reg.terms[static_cast<std::size_t>(j)].parameter;
-      const bool is_friction = j < p - static_cast<Eigen::Index>(options.extra_terms.size()) && name != "M" && name != "offset";
+      const bool is_friction = j < p - static_cast<Eigen::Index>(options.extra_terms.size()) && name != "M" &&
+                               name != "offset" && name != "load_gain";
       if (is_friction) friction_model += reg.X.col(j) * theta(j);
       else friction -= reg.X.col(j) * theta(j);
     }
@@ -653,7 +852,9 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, dou
       r.diagnostics.warnings.push_back(q.name + " = " + detail::format_value(q.value, 6) + " " + q.unit + " is poorly identified (std " +
                                        detail::format_value(q.std, 6) + ")");
     }
-    const bool must_be_positive = q.name == "M" || q.name.rfind("Fv", 0) == 0 || q.name.rfind("Fc", 0) == 0;
+    // Fv_per_K may be negative (grease thins as it warms); the coefficients themselves may not.
+    const bool must_be_positive = q.name == "M" || q.name == "mu_load" ||
+                                  ((q.name.rfind("Fv", 0) == 0 || q.name.rfind("Fc", 0) == 0) && q.name != "Fv_per_K");
     if (must_be_positive && q.value < 0) {
       r.diagnostics.warnings.push_back(q.name + " = " + detail::format_value(q.value, 6) + " " + q.unit + " is negative: not physical");
     }
@@ -674,9 +875,11 @@ ValidationFigures cross_test(const Result& identified, const IdimData& data, con
     throw std::invalid_argument("cross_test: the identification failed (" + identified.message + "); nothing to test");
   }
   const double dt = checked_step(data);
-  IdimOptions o = resolved(options, dt);
+  IdimOptions o = resolved(options, data, dt);
   if (const auto it = identified.diagnostics.numbers.find("stribeck_vs"); it != identified.diagnostics.numbers.end())
     o.stribeck_vs = it->second;  // the value the identification used (searched or given)
+  if (const auto it = identified.diagnostics.numbers.find("temperature_ref"); it != identified.diagnostics.numbers.end())
+    o.temperature_ref = it->second;  // the identification's reference, not this record's mean
   const IdimRegression reg = regression_pass(data, o, dt, false, workspace).reg;
   Vec theta(reg.X.cols());
   for (std::size_t j = 0; j < reg.terms.size(); ++j) theta(static_cast<Eigen::Index>(j)) = identified.value(reg.terms[j].parameter);

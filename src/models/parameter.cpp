@@ -17,6 +17,7 @@ std::string_view unit(Quantity q, Axis axis) {
     case Quantity::force_rate: return rot ? "N m/s" : "N/s";
     case Quantity::dimensionless: return "";
     case Quantity::energy: return "J";
+    case Quantity::viscous_per_kelvin: return rot ? "N m s/rad/K" : "N s/m/K";
   }
   return "";
 }

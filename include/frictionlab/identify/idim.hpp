@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,12 @@ struct IdimData {
   Eigen::VectorXd position;  ///< m or rad, length N; leave empty to use `velocity` instead
   Eigen::VectorXd velocity;  ///< m/s or rad/s, length N; used (filtered, not differentiated) when position is empty
   Eigen::VectorXd force;     ///< applied force or torque (gain * drive input), N or N m, length N
+  /// Load force or torque that the contact transmits (a weight on a vertical screw, a gearbox's
+  /// output torque), N or N m, length N; needed by the "load" term, else may stay empty.
+  Eigen::VectorXd load;
+  /// Temperature of the contact (grease, gearbox), degC or K, length N; needed by the
+  /// "temperature" term, else may stay empty.
+  Eigen::VectorXd temperature;
   std::string file;          ///< source file, for results and messages
   std::string sha256;        ///< its digest
 };
@@ -40,6 +47,8 @@ struct IdimKinematics {
   View q{nullptr, 0};    ///< filtered position, m or rad (empty when velocity was given)
   View qd{nullptr, 0};   ///< velocity, m/s or rad/s
   View qdd{nullptr, 0};  ///< acceleration, m/s^2 or rad/s^2
+  View load{nullptr, 0};         ///< IdimData::load as measured (not filtered), N or N m; empty when not given
+  View temperature{nullptr, 0};  ///< IdimData::temperature as measured, degC or K; empty when not given
 };
 
 /// One regressor column and the parameter multiplying it: force = sum(parameter * column).
@@ -85,7 +94,16 @@ struct IdimOptions {
   /// sign(qd)), "offset" (offset, 1), "asymmetric" (= viscous_pos, coulomb_pos, viscous_neg,
   /// coulomb_neg: Fv_pos qd (qd>0), Fc_pos (qd>0), Fv_neg qd (qd<0), Fc_neg -(qd<0)), each of
   /// those four alone, and "stribeck" (Fs_minus_Fc, sign(qd) exp(-|qd/vs|^delta), with
-  /// stribeck_vs and stribeck_delta). Default: inertia, viscous, coulomb, offset.
+  /// stribeck_vs and stribeck_delta). Terms of the conditions, linear in their parameters:
+  ///   "load" (IdimData::load L needed): load_gain L (dimensionless: 1 when the load acts on the
+  ///     axis like a weight, 0 when it only presses the contact like a preload) and
+  ///     mu_load |L| sign(qd) (dimensionless: the Coulomb level grows as Fc + mu_load |L|);
+  ///   "temperature" (IdimData::temperature T needed): Fv_per_K qd (T - temperature_ref)
+  ///     (N s/m/K or N m s/rad/K: the viscous coefficient is Fv + Fv_per_K (T - T_ref));
+  ///   "ripple" (a position needed; ripple_period P): ripple_sin_k sin(2 pi k q / P) and
+  ///     ripple_cos_k cos(2 pi k q / P), k = 1 .. ripple_harmonics (N or N m: a force that
+  ///     repeats with position, e.g. cogging or a screw's pitch).
+  /// Default: inertia, viscous, coulomb, offset.
   std::vector<std::string> terms = {"inertia", "viscous", "coulomb", "offset"};
   /// Further terms appended after `terms`.
   std::vector<IdimTerm> extra_terms;
@@ -111,6 +129,14 @@ struct IdimOptions {
   /// speed) that minimises the identification residual; reported as diagnostics "stribeck_vs".
   bool search_stribeck_vs = false;
   double stribeck_delta = 2.0;
+  /// Period P of the "ripple" term, m or rad (> 0 when the term is used). Default 0 (none).
+  double ripple_period = 0.0;
+  /// Harmonics K of the "ripple" term (>= 1). Default 1.
+  int ripple_harmonics = 1;
+  /// Reference temperature T_ref of the "temperature" term, in the temperature column's unit
+  /// (degC or K); NaN: the mean temperature over the used samples. The result reports the value
+  /// used as diagnostics.numbers["temperature_ref"]. Default NaN.
+  double temperature_ref = std::numeric_limits<double>::quiet_NaN();
   /// No excitation when max |qd| over the used samples is not above this, m/s or rad/s. Default 0.
   double min_velocity = 0.0;
   /// Status error when the condition number of the column-normalised regressor exceeds this.

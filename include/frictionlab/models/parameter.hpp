@@ -31,6 +31,7 @@ enum class Quantity {
   force_rate,     ///< N/s or N m/s (force ramps, GMS attraction constant)
   dimensionless,  ///< exponents, fractions
   energy,         ///< J on either axis (energy lost per half cycle of a free decay)
+  viscous_per_kelvin,  ///< N s/m/K or N m s/rad/K (how a viscous coefficient changes with temperature)
 };
 
 /// Unit string for a quantity on the given axis, e.g. unit(Quantity::viscous, Axis::rotary) = "N m s/rad".

@@ -59,7 +59,8 @@ def identify_idim(time, force, position=None, velocity=None, *, axis="linear", s
     m/s) or "rotary" (N m, kg m^2, rad/s); ``source``: the Data from load() (or a path) the
     arrays came from, its file name and sha256 go into the result; ``validate``: a second run
     for a cross-test, a dict with "time", "force" and "position" or "velocity" (and optionally
-    "source"); sets result.validation.
+    "source"; "load" and "temperature" for those terms); sets result.validation. ``load`` (N or N m)
+    and ``temperature`` (degC or K): arrays of length N for the terms "load" and "temperature".
 
     Returns a Result; ``result.law`` is the identified friction law. The arrays and options
     are kept on the result (``result.inputs``, ``result.options``) for idim_reconstruction and
@@ -67,9 +68,11 @@ def identify_idim(time, force, position=None, velocity=None, *, axis="linear", s
     """
     values, opts, inputs = _idim_options("identify_idim", dict(options, axis=axis), time)
     file, sha = _source(source)
-    r = _core._identify_idim(time, force, position, velocity, opts, file, sha)
+    load, temperature = inputs.get("load"), inputs.get("temperature")
+    r = _core._identify_idim(time, force, position, velocity, load, temperature, opts, file, sha)
     r._record_options(values)
-    r.inputs = {"time": time, "force": force, "position": position, "velocity": velocity}
+    r.inputs = {"time": time, "force": force, "position": position, "velocity": velocity, "load": load,
+                "temperature": temperature}
     r.options = opts
     validate = inputs.get("validate")
     if validate is not None and r.ok:
@@ -86,11 +89,13 @@ def cross_test(result, time, force, position=None, velocity=None, *, source=None
     relative_error_percent, rmse in N or N m, samples). Raises ValueError when the result is
     not ok or lacks a parameter of a term, and for bad data.
     """
+    options = dict(options)
+    load, temperature = options.pop("load", None), options.pop("temperature", None)
     opts = getattr(result, "options", None) if not options else None
     if opts is None:
         _, opts, _ = _idim_options("cross_test", options)
     file, sha = _source(source)
-    return _core._cross_test(result, time, force, position, velocity, opts, file, sha)
+    return _core._cross_test(result, time, force, position, velocity, load, temperature, opts, file, sha)
 
 
 def idim_regression(time, force, position=None, velocity=None, **options):
@@ -98,13 +103,15 @@ def idim_regression(time, force, position=None, velocity=None, **options):
     n x p), ``y`` (decimated force, N or N m), ``parameters`` (the p names, column order),
     ``dt`` (mean raw sample step, s) and ``max_speed`` (m/s or rad/s). Options as identify_idim.
     """
-    return _core._idim_regression(time, force, position, velocity, _idim_options("idim_regression", options)[1])
+    _, opts, inputs = _idim_options("idim_regression", options)
+    return _core._idim_regression(time, force, position, velocity, inputs.get("load"), inputs.get("temperature"), opts)
 
 
-def idim_reconstruction(result, time=None, force=None, position=None, velocity=None):
+def idim_reconstruction(result, time=None, force=None, position=None, velocity=None, load=None, temperature=None):
     """Measured and reconstructed force of an idim result (for plots): dict with ``time`` (s,
     the decimated sample times), ``measured`` and ``reconstructed`` (N or N m) and ``residual``.
-    Uses the result's own data and options unless arrays are given.
+    Uses the result's own data and options unless arrays are given (load and temperature, N or N m
+    and degC or K, for results with those terms).
     """
     if not result.ok:
         raise ValueError(f"idim result has status error: {result.message}")
@@ -114,7 +121,8 @@ def idim_reconstruction(result, time=None, force=None, position=None, velocity=N
         if inputs is None:
             raise ValueError("idim_reconstruction: the result carries no data; pass time, force and position")
         time, force, position, velocity = (inputs[k] for k in ("time", "force", "position", "velocity"))
-    reg = _core._idim_regression(time, force, position, velocity, opts)
+        load, temperature = inputs.get("load"), inputs.get("temperature")
+    reg = _core._idim_regression(time, force, position, velocity, load, temperature, opts)
     theta = np.array([result.value(name) for name in reg["parameters"]])
     t = np.asarray(time, dtype=float)
     t = t[opts.skip:len(t) - opts.skip_end][::opts.decimation]

@@ -9,7 +9,8 @@ namespace frictionlab::python {
 namespace {
 
 IdimData idim_data(const char* function, const py::object& time, const py::object& force, const py::object& position,
-                   const py::object& velocity, const std::string& file, const std::string& sha256) {
+                   const py::object& velocity, const py::object& load, const py::object& temperature,
+                   const std::string& file, const std::string& sha256) {
   IdimData d;
   d.time = vector_arg(time, function, "time");
   d.force = vector_arg(force, function, "force");
@@ -17,8 +18,10 @@ IdimData idim_data(const char* function, const py::object& time, const py::objec
   optional.optional = true;
   d.position = vector_arg(position, function, "position", optional);
   d.velocity = vector_arg(velocity, function, "velocity", optional);
+  d.load = vector_arg(load, function, "load", optional);
+  d.temperature = vector_arg(temperature, function, "temperature", optional);
   same_length(function, {{"time", d.time.size()}, {"force", d.force.size()}, {"position", d.position.size()},
-                         {"velocity", d.velocity.size()}});
+                         {"velocity", d.velocity.size()}, {"load", d.load.size()}, {"temperature", d.temperature.size()}});
   d.file = file;
   d.sha256 = sha256;
   return d;
@@ -28,7 +31,8 @@ void bind(py::module_& m) {
   auto idim_opts = py::class_<IdimOptions>(m, "IdimOptions", "Options of identify_idim; defaults are the EMPS recipe.");
   idim_opts.def(py::init<>())
       .def_readwrite("terms", &IdimOptions::terms, "Regressor terms in column order: inertia, viscous, coulomb, offset, asymmetric, "
-                                                   "viscous_pos, coulomb_pos, viscous_neg, coulomb_neg, stribeck.")
+                                                   "viscous_pos, coulomb_pos, viscous_neg, coulomb_neg, stribeck, "
+                                                   "load, temperature, ripple.")
       .def_readwrite("cutoff_hz", &IdimOptions::cutoff_hz, "Position low-pass cut-off, Hz (100).")
       .def_readwrite("filter_order", &IdimOptions::filter_order, "Butterworth order (4).")
       .def_readwrite("padlen", &IdimOptions::padlen, "Odd padding of the zero-phase filter, samples (12).")
@@ -45,6 +49,10 @@ void bind(py::module_& m) {
       .def_readwrite("stribeck_vs", &IdimOptions::stribeck_vs, "Stribeck velocity of the stribeck term, m/s or rad/s (0.01).")
       .def_readwrite("search_stribeck_vs", &IdimOptions::search_stribeck_vs, "Search the Stribeck velocity (False).")
       .def_readwrite("stribeck_delta", &IdimOptions::stribeck_delta, "Stribeck exponent (2).")
+      .def_readwrite("ripple_period", &IdimOptions::ripple_period, "Period of the ripple term, m or rad (0: none).")
+      .def_readwrite("ripple_harmonics", &IdimOptions::ripple_harmonics, "Harmonics of the ripple term (1).")
+      .def_readwrite("temperature_ref", &IdimOptions::temperature_ref,
+                     "Reference temperature of the temperature term, degC or K (NaN: the mean of the used samples).")
       .def_readwrite("min_velocity", &IdimOptions::min_velocity, "No excitation at or below this max |qd|, m/s or rad/s (0).")
       .def_readwrite("max_condition", &IdimOptions::max_condition, "Largest condition number accepted (1e8).");
   m.def("_make_idim_options", &make_idim_options, py::arg("values"),
@@ -66,20 +74,23 @@ void bind(py::module_& m) {
       "recipe (100 Hz, 10, 49) at 1 kHz. Raises ValueError when fs is not a positive finite number.");
 
   m.def("_identify_idim", [](py::object time, py::object force, py::object position, py::object velocity,
-                             const IdimOptions& o, const std::string& file, const std::string& sha256) {
-    const IdimData d = idim_data("identify_idim", time, force, position, velocity, file, sha256);
+                             py::object load, py::object temperature, const IdimOptions& o, const std::string& file,
+                             const std::string& sha256) {
+    const IdimData d = idim_data("identify_idim", time, force, position, velocity, load, temperature, file, sha256);
     py::gil_scoped_release release;
     return identify_idim(d, o);
   });
   m.def("_cross_test", [](const Result& r, py::object time, py::object force, py::object position, py::object velocity,
-                          const IdimOptions& o, const std::string& file, const std::string& sha256) {
-    const IdimData d = idim_data("cross_test", time, force, position, velocity, file, sha256);
+                          py::object load, py::object temperature, const IdimOptions& o, const std::string& file,
+                          const std::string& sha256) {
+    const IdimData d = idim_data("cross_test", time, force, position, velocity, load, temperature, file, sha256);
     py::gil_scoped_release release;
     return cross_test(r, d, o);
   });
   m.def("_idim_regression", [](py::object time, py::object force, py::object position, py::object velocity,
-                               const IdimOptions& o) {
-    const IdimRegression reg = idim_regression(idim_data("idim_regression", time, force, position, velocity, "", ""), o);
+                               py::object load, py::object temperature, const IdimOptions& o) {
+    const IdimRegression reg =
+        idim_regression(idim_data("idim_regression", time, force, position, velocity, load, temperature, "", ""), o);
     py::dict d;
     d["X"] = reg.X;
     d["y"] = reg.y;
