@@ -46,12 +46,30 @@ assert names == ["Fs", "vs", "delta", "offset"], names
 assert j["left_out"][0]["unit"] == "N" and j["left_out"][0]["value"] == 1.5 and j["left_out"][0]["reason"]
 PY
 
+# The command's own file loads in MuJoCo (its C library through ctypes; libmujoco-dev is installed by
+# scripts/setup.sh, and tests/export/mujoco/ checks the values and the motion).
+mujoco_loads() {
+  /usr/bin/python3 - "$1" <<'PY'
+import ctypes, sys
+lib = ctypes.CDLL("libmujoco.so")
+lib.mj_loadXML.restype = ctypes.c_void_p
+lib.mj_loadXML.argtypes = [ctypes.c_char_p, ctypes.c_void_p, ctypes.c_char_p, ctypes.c_int]
+lib.mj_deleteModel.argtypes = [ctypes.c_void_p]
+error = ctypes.create_string_buffer(1000)
+m = lib.mj_loadXML(sys.argv[1].encode(), None, error, len(error))
+assert m, error.value.decode()
+lib.mj_deleteModel(m)
+PY
+}
+mujoco_loads "$tmp/axis.xml" || fail "MuJoCo does not load the file"
+
 # A rotary axis gives a hinge with the inertia about its axis, a share of it as armature; --json -
 # prints the JSON on stdout and the text on stderr; --mjcf - prints the XML.
 expect 0 "" export "$tmp/rotary.json" --mjcf "$tmp/hinge.xml" --armature 0.2 --timestep 0.001 --json -
 grep -q 'type="hinge" axis="0 0 1" frictionloss="0.5" damping="0.02" armature="0.2"' "$tmp/hinge.xml" || fail "hinge"
 grep -q 'diaginertia="0.6000000000000001 ' "$tmp/hinge.xml" || grep -q 'diaginertia="0.6 ' "$tmp/hinge.xml" || fail "hinge inertia"
 grep -q 'timestep="0.001"' "$tmp/hinge.xml" || fail "--timestep"
+mujoco_loads "$tmp/hinge.xml" || fail "MuJoCo does not load the hinge"
 /usr/bin/python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); assert j["mjcf"]["joint"]=="hinge" and j["left_out"]==[], j' \
   "$tmp/out.txt" || fail "--json - on stdout"
 grep -q "left out: nothing" "$tmp/err.txt" || fail "text on stderr with --json -"

@@ -129,3 +129,14 @@ def test_export_mjcf_bad_input_names_the_argument():
         fl.export_mjcf({"law": "coulomb", "Fc": 1.0}, inertia="heavy")
     with pytest.raises(TypeError, match="export_mjcf: argument model"):
         fl.export_mjcf(3.0)
+
+
+def test_export_mjcf_of_an_identification_result(emps):
+    # The EMPS axis identified in Python: M, Fc, Fv and the offset come from the Result itself.
+    r = fl.identify_idim(emps["t"], emps["gtau"] * emps["vir"], position=emps["qm"], source=emps)
+    p = {name: x.value for name, x in r.parameters.items()}
+    out = fl.export_mjcf(r)
+    assert out["joint"] == ("hinge" if r.axis == "rotary" else "slide")
+    assert out["frictionloss"] == p["Fc"] and out["damping"] == p["Fv"] and out["body_inertia"] == p["M"]
+    offset = [x for x in out["left_out"] if x["name"] == "offset"]
+    assert len(offset) == 1 and offset[0]["value"] == pytest.approx(p["offset"], rel=1e-15)
