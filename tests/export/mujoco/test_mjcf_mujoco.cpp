@@ -188,10 +188,10 @@ TEST_P(MjcfInMujoco, BelowFcMujocoCreepsWhereTheExactEngineSticks) {
 
   const double vc = creep_velocity(F, c.M);
   const char* unit = std::string(c.axis) == "rotary" ? "rad" : "m";
-  std::printf("MuJoCo %d, %s axis (Euler, timestep 0.002 s, solreffriction 0.02 1, solimpfriction 0.9 0.95 0.001 0.5 2):\n"
+  std::printf("MuJoCo %d.%d.%d, %s axis (Euler, timestep 0.002 s, solreffriction 0.02 1, solimpfriction 0.9 0.95 0.001 0.5 2):\n"
               "  M = %g, Fc = %g, F = 0.5 Fc = %g held %g s from rest: creep %.4g %s, velocity %.4g %s/s\n"
               "  (predicted steady creep velocity (1 - d) / d F / (M b) = %.4g %s/s); exact engine: 0 and 0\n",
-              mj_version(), c.axis, c.M, Fc, F, duration, x, unit, v, unit, vc, unit);
+              mj_version() / 100, mj_version() / 10 % 10, mj_version() % 10, c.axis, c.M, Fc, F, duration, x, unit, v, unit, vc, unit);
   // MuJoCo creeps (a test that it does not would mean the file is not MuJoCo's soft friction) in
   // the direction of the force, at the predicted steady velocity. The creep reaches that speed at
   // the rate d b = 95 /s (same derivation), so the position at 1 s lags vc t by about vc / (d b):
