@@ -47,6 +47,7 @@ from ._core import (
     __version__,
     analyze_contour,
     export_c,
+    export_mjcf,
     law_names,
     load_law,
     sha256_file,
@@ -67,7 +68,7 @@ __all__ = [
     "ArgumentTypeError", "BreakawayOptions", "ContourResult", "Data", "DecayOptions", "Diagnostics", "Error", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
     "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
-    "analyze_contour", "analyze_map", "decay_envelope", "detect_stick_slip", "export_c", "fit_static_law", "law_names", "load",
+    "analyze_contour", "analyze_map", "decay_envelope", "detect_stick_slip", "export_c", "export_mjcf", "fit_static_law", "law_names", "load",
     "load_law", "methods", "plan", "sha256_file", "simulate", *_METHOD_FUNCTIONS,
 ]
 

@@ -37,4 +37,5 @@ kRelTol=0.035  # the README's "within 3.2 %", rounded up to the last digit it pr
 check_parameters joint2.json "$(rel M 0.8 $kRelTol) and $(rel Fv 1.5 $kRelTol) and $(rel Fc 2.0 $kRelTol)"
 [ -s joint2/report.html ] || fail "joint2/report.html was not written"
 [ -s friction.h ] || fail "friction.h was not written"
+grep -q "frictionloss=" axis.xml || fail "axis.xml (export --mjcf) was not written"
 echo "PASS readme_commands"

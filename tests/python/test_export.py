@@ -1,6 +1,7 @@
-"""frictionlab.export_c: the C99 header of a law and a compensation, from Python."""
+"""frictionlab.export_c (the C99 header of a law and a compensation) and export_mjcf (the MuJoCo model), from Python."""
 import ctypes
 import json
+import math
 import shutil
 import subprocess
 
@@ -78,3 +79,64 @@ def test_bad_compensations_name_the_argument():
         fl.export_c(STRIBECK_ASYM, prefix="a-b")
     with pytest.raises(TypeError, match="export_c: argument model"):
         fl.export_c(3.0)
+
+
+# export_mjcf: the MuJoCo model (tests/export/mujoco/ loads the same text in MuJoCo itself).
+
+def test_export_mjcf_maps_the_model_and_lists_what_is_left_out(tmp_path):
+    model = tmp_path / "model.json"
+    model.write_text(json.dumps({"status": "ok", "axis": "linear",
+                                 "law": {"law": "stribeck", "Fc": 1.25, "Fs": 1.5, "vs": 0.001, "Fv": 0.4},
+                                 "parameters": {"M": {"value": 2.5, "std": 0.01, "unit": "kg"},
+                                                "offset": {"value": 0.3, "std": 0.01, "unit": "N"}}}))
+    out = tmp_path / "axis.xml"
+    r = fl.export_mjcf(model, out)
+    assert out.read_text() == r["xml"]
+    assert r["joint"] == "slide" and r["frictionloss"] == 1.25 and r["damping"] == 0.4 and r["body_inertia"] == 2.5
+    assert 'frictionloss="1.25" damping="0.4"' in r["xml"] and 'mass="2.5"' in r["xml"]
+    assert [x["name"] for x in r["left_out"]] == ["Fs", "vs", "delta", "offset"]
+    assert r["left_out"][0] == {"name": "Fs", "value": 1.5, "unit": "N", "reason": r["left_out"][0]["reason"]}
+    assert "Fs = 1.5 N" in r["xml"]
+    with pytest.raises(ValueError, match="export_mjcf: argument path: .*exists; pass overwrite=True"):
+        fl.export_mjcf(model, out)
+    # The same text as the command line's for the same file (one writer).
+    assert fl.export_mjcf(model, out, overwrite=True)["xml"] == r["xml"]
+
+
+def test_export_mjcf_of_a_law_needs_the_inertia_and_takes_the_axis():
+    law = {"law": "coulomb-viscous", "Fc": 0.5, "Fv": 0.02}
+    with pytest.raises(ValueError, match="export_mjcf: argument inertia: missing"):
+        fl.export_mjcf(law)
+    r = fl.export_mjcf(law, inertia=0.8, armature=0.2, axis="rotary", timestep=0.001)
+    assert r["joint"] == "hinge" and r["armature"] == 0.2 and abs(r["body_inertia"] - 0.6) <= 1e-15
+    assert 'type="hinge"' in r["xml"] and 'timestep="0.001"' in r["xml"] and r["left_out"] == []
+
+
+def test_export_mjcf_bad_input_names_the_argument():
+    with pytest.raises(ValueError, match="law viscous has no Fc"):
+        fl.export_mjcf({"law": "viscous", "Fv": 1.0}, inertia=1.0)
+    with pytest.raises(ValueError, match=r"export_mjcf: argument inertia = -1 must be > 0 \(kg or kg m\^2\)"):
+        fl.export_mjcf({"law": "coulomb", "Fc": 1.0}, inertia=-1.0)
+    with pytest.raises(ValueError, match="export_mjcf: argument armature = 1 must be >= 0 and < the inertia 1"):
+        fl.export_mjcf({"law": "coulomb", "Fc": 1.0}, inertia=1.0, armature=1.0)
+    with pytest.raises(ValueError, match="export_mjcf: argument timestep = 0 must be > 0"):
+        fl.export_mjcf({"law": "coulomb", "Fc": 1.0}, inertia=1.0, timestep=0.0)
+    with pytest.raises(ValueError, match="export_mjcf: argument axis"):
+        fl.export_mjcf({"law": "coulomb", "Fc": 1.0}, inertia=1.0, axis="diagonal")
+    with pytest.raises(ValueError, match="export_mjcf: argument inertia = nan must be > 0"):
+        fl.export_mjcf({"law": "coulomb", "Fc": 1.0}, inertia=math.nan)
+    with pytest.raises(TypeError, match="inertia"):
+        fl.export_mjcf({"law": "coulomb", "Fc": 1.0}, inertia="heavy")
+    with pytest.raises(TypeError, match="export_mjcf: argument model"):
+        fl.export_mjcf(3.0)
+
+
+def test_export_mjcf_of_an_identification_result(emps):
+    # The EMPS axis identified in Python: M, Fc, Fv and the offset come from the Result itself.
+    r = fl.identify_idim(emps["t"], emps["gtau"] * emps["vir"], position=emps["qm"], source=emps)
+    p = {name: x.value for name, x in r.parameters.items()}
+    out = fl.export_mjcf(r)
+    assert out["joint"] == ("hinge" if r.axis == "rotary" else "slide")
+    assert out["frictionloss"] == p["Fc"] and out["damping"] == p["Fv"] and out["body_inertia"] == p["M"]
+    offset = [x for x in out["left_out"] if x["name"] == "offset"]
+    assert len(offset) == 1 and offset[0]["value"] == pytest.approx(p["offset"], rel=1e-15)

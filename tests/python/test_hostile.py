@@ -66,7 +66,7 @@ def array_calls(idim_ok, emps, source_dir):
 
 
 # Public functions whose arguments are a path or a scenario (not arrays): name -> argument.
-PATH_CALLS = {"analyze_map": "scenario", "load": "path", "load_law": "path", "sha256_file": "path", "simulate": "scenario", "export_c": "model"}
+PATH_CALLS = {"analyze_map": "scenario", "load": "path", "load_law": "path", "sha256_file": "path", "simulate": "scenario", "export_c": "model", "export_mjcf": "model"}
 # Public functions of files and keyword options, each with its own test below.
 OTHER_CALLS = {"plan"}
 # Public names that take no array: result and option classes (made by the package or with no

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "frictionlab/models/friction_law.hpp"
+#include "frictionlab/models/parameter.hpp"
 
 #include "frictionlab/export.hpp"
 namespace frictionlab FRICTIONLAB_API {
@@ -15,11 +16,16 @@ namespace frictionlab FRICTIONLAB_API {
 struct ModelFile {
   FrictionLaw law;
   std::optional<double> inertia;
+  /// The axis MODEL.json names ("axis": "linear" or "rotary"); nullopt when it names none (a law file).
+  std::optional<Axis> axis = std::nullopt;
+  /// The identified constant force offset parameters.offset (N or N m); nullopt when it has none.
+  std::optional<double> offset = std::nullopt;
 };
 
 /// Reads MODEL.json (read_model_json, law_from_json: the strict model reader) or a law file
 /// (.yaml/.yml through load_law; scenario/law_file.hpp). \throws std::invalid_argument naming the
-/// file when it cannot be read or parsed, or its law or inertia is not valid.
+/// file (and key) when it cannot be read or parsed, or its law, inertia, axis ("linear" or
+/// "rotary") or offset (a number) is not valid.
 ModelFile read_model_file(const std::string& path);
 
 }  // namespace frictionlab
