@@ -200,9 +200,12 @@ IdimRateDefaults idim_rate_defaults(double fs) {
   if (!(fs > 0) || !std::isfinite(fs))
     throw std::invalid_argument("idim: sample rate = " + detail::format_value(fs, 6) + " Hz must be a positive finite number");
   IdimRateDefaults d;
-  // A rate within 1e-6 of 1 kHz (a mean step with rounding) is 1 kHz: exactly the recipe's 100 Hz.
-  d.cutoff_hz = fs / 10.0 >= 100.0 * (1 - 1e-6) ? 100.0 : fs / 10.0;
-  d.decimation = static_cast<int>(std::clamp(std::floor(fs / 100.0 * (1 + 1e-6)), 1.0, 10.0));
+  // A rate within 0.1 % below 1 kHz is 1 kHz: a mean step with rounding, or the median step of a
+  // jittered log put on a grid by --resample (1.0001 ms), gets exactly the recipe's 100 Hz and 10,
+  // not 99.99 Hz and 9.
+  constexpr double kRateTolerance = 1e-3;
+  d.cutoff_hz = fs / 10.0 >= 100.0 * (1 - kRateTolerance) ? 100.0 : fs / 10.0;
+  d.decimation = static_cast<int>(std::clamp(std::floor(fs / 100.0 * (1 + kRateTolerance)), 1.0, 10.0));
   d.skip = static_cast<Eigen::Index>(std::lround(5.0 * fs / d.cutoff_hz)) - 1;
   return d;
 }

@@ -183,6 +183,11 @@ TEST(RealRigs, IdimDefaultsFollowTheSampleRate) {
   EXPECT_EQ(at(1000).skip, 49);
   EXPECT_EQ(at(1000 * (1 + 1e-12)).cutoff_hz, 100.0);  // a mean step with rounding
   EXPECT_EQ(at(999.9999999).decimation, 10);
+  // A jittered log resampled at its median step (1.0001 ms) is a 1 kHz record.
+  EXPECT_EQ(at(1.0 / 1.0001e-3).cutoff_hz, 100.0);
+  EXPECT_EQ(at(1.0 / 1.0001e-3).decimation, 10);
+  EXPECT_EQ(at(1.0 / 1.0001e-3).skip, 49);
+  EXPECT_EQ(at(990.0).decimation, 9);  // 1 % off is another rate
   for (double fs : {100.0, 500.0, 1000.0, 8000.0}) {
     const auto d = at(fs);
     EXPECT_LT(d.cutoff_hz, 0.5 * fs / 4) << fs;  // well below the raw Nyquist frequency

@@ -79,7 +79,8 @@ enum class IdimSource {
 ///                the band of both sides of the regression alike;
 ///   skip       = round(5 fs / cutoff_hz) - 1: five periods of the cut-off, the filter's start
 ///                transient (49 samples at 1 kHz, 100 Hz).
-/// E.g. 100 Hz: 10 Hz, 1, 49; 500 Hz: 50 Hz, 5, 49; 8 kHz: 100 Hz, 10, 399.
+/// E.g. 100 Hz: 10 Hz, 1, 49; 500 Hz: 50 Hz, 5, 49; 8 kHz: 100 Hz, 10, 399. A rate within 0.1 %
+/// below 1 kHz (a resampled jittered log's median step, 1.0001 ms) counts as 1 kHz.
 /// \throws std::invalid_argument when fs is not a positive finite number.
 struct IdimRateDefaults {
   double cutoff_hz = 100;
