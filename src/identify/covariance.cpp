@@ -68,6 +68,22 @@ HacCovariance hac_covariance(const Eigen::MatrixXd& X, const Eigen::VectorXd& e,
                                 " must be finite (min_bandwidth >= 0)");
   const Eigen::MatrixXd u = X.array().colwise() * e.array();
   HacCovariance h;
+  // Prewhitening (Andrews and Monahan 1992): u_t = B u_{t-1} + v_t by least squares, the kernel
+  // estimate on v, recoloured by (I - B)^-1. B's singular values are held at or below 0.97, as
+  // theirs, so that I - B stays well away from singular.
+  Eigen::MatrixXd v = u;
+  Eigen::MatrixXd recolour = Eigen::MatrixXd::Identity(p, p);
+  h.prewhitened = o.prewhiten && n > 2 * p + 2;
+  if (h.prewhitened) {
+    const Eigen::MatrixXd lagged = u.topRows(n - 1), next = u.bottomRows(n - 1);
+    Eigen::MatrixXd B = lagged.completeOrthogonalDecomposition().solve(next).transpose();  // p x p
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(B, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    constexpr double kMaxSingular = 0.97;
+    if (svd.singularValues().maxCoeff() > kMaxSingular)
+      B = svd.matrixU() * svd.singularValues().cwiseMin(kMaxSingular).asDiagonal() * svd.matrixV().transpose();
+    v = next - lagged * B.transpose();
+    recolour = (Eigen::MatrixXd::Identity(p, p) - B).inverse();
+  }
   if (o.bandwidth >= 0) {
     h.bandwidth = std::floor(o.bandwidth);
     h.rho = std::numeric_limits<double>::quiet_NaN();
@@ -79,9 +95,11 @@ HacCovariance hac_covariance(const Eigen::MatrixXd& X, const Eigen::VectorXd& e,
     }
     if (!(weights.sum() > 0)) weights.setOnes();
     const double cap = std::floor(static_cast<double>(n) / 4);
-    h.bandwidth = std::min(cap, std::floor(std::max(o.min_bandwidth, andrews_bandwidth(u, weights, &h.rho))));
+    h.bandwidth = std::min(cap, std::floor(std::max(o.min_bandwidth, andrews_bandwidth(v, weights, &h.rho))));
   }
-  h.meat = newey_west_meat(u, h.bandwidth) * (static_cast<double>(n) / static_cast<double>(n - p));
+  h.meat = recolour * newey_west_meat(v, h.bandwidth) * recolour.transpose() *
+           (static_cast<double>(n) / static_cast<double>(n - p));
+  h.meat = 0.5 * (h.meat + h.meat.transpose()).eval();
   // (X'X)^-1 on the unit-diagonal scaled matrix, a pseudo-inverse (a zero column gives zeros).
   const Eigen::MatrixXd A = X.transpose() * X;
   Eigen::VectorXd d(p);

@@ -591,7 +591,7 @@ void set_idim_uncertainty(Result& r, const Eigen::MatrixXd& X, const LeastSquare
                           const std::vector<std::string>& names) {
   const HacCovariance hac = hac_covariance(X, fit.residual);
   set_uncertainty_from_sandwich(r, names, fit.information, hac.meat, fit.residual_variance);
-  r.diagnostics.texts["covariance"] = "newey-west";
+  r.diagnostics.texts["covariance"] = hac.prewhitened ? "newey-west-prewhitened" : "newey-west";
   r.diagnostics.numbers["covariance_bandwidth"] = hac.bandwidth;
   r.diagnostics.numbers["covariance_rho"] = hac.rho;
 }

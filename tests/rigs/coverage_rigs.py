@@ -33,7 +33,7 @@ OFFSET = 0.5        # N (not in the asymmetric model: idim's asymmetric terms ab
 NOISE_STD = 0.3     # N, the force noise (about 5 % of the force's rms)
 NOISE_TAU = 0.02    # s, correlation time of the AR(1) noise
 ENCODER = 1e-6      # m per count
-VELOCITY_NOISE = 2e-3  # m/s, std of a velocity sensor's white noise
+VELOCITY_NOISE = 2e-4  # m/s, std of a velocity sensor's white noise (a good tachometer: 0.13 % of the peak speed)
 DURATION = 12.0     # s
 KP, KD = 4.0e4, 400.0  # N/m, N s/m: the closed loop's PD (about 20 Hz)
 
@@ -137,8 +137,9 @@ def closed_loop(kind, t, q_ref, qd_ref, qdd_ref, disturbance):
     return qs, vs, us
 
 
-def make_log(kind, noise_kind, sensor, fs, loop, seed, duration=DURATION):
-    """One log: dict(time, force, position or velocity) and the truth (truth(kind))."""
+def make_log(kind, noise_kind, sensor, fs, loop, seed, duration=DURATION, velocity_noise=VELOCITY_NOISE):
+    """One log: dict(time, force, position or velocity) and the truth (truth(kind)); a velocity
+    sensor's white noise has the standard deviation `velocity_noise` (m/s)."""
     rng = np.random.default_rng(seed)
     t = np.arange(int(round(duration * fs))) / fs
     q, qd, qdd = trajectory(t, rng)
@@ -155,7 +156,7 @@ def make_log(kind, noise_kind, sensor, fs, loop, seed, duration=DURATION):
     if sensor == "position":
         log["position"] = np.round(pos / ENCODER) * ENCODER
     elif sensor == "velocity":
-        log["velocity"] = vel + rng.normal(0.0, VELOCITY_NOISE, t.size)
+        log["velocity"] = vel + rng.normal(0.0, velocity_noise, t.size)
     else:
         raise ValueError(f"unknown sensor {sensor!r}")
     return log, truth(kind)

@@ -17,6 +17,13 @@
 // never below `min_bandwidth` (a floor the caller ties to the memory its filters leave in the
 // residual) and at most n/4. The factor n/(n-p) makes it the OLS covariance for white
 // residuals and L = 0 (the usual small-sample correction, HC1).
+// By default the scores are prewhitened first (Andrews and Monahan 1992): a VAR(1)
+// u_t = B u_{t-1} + v_t is fitted by least squares, the kernel estimate above is made on v (its
+// bandwidth from v) and recoloured, Omega = (I - B)^-1 Omega_v (I - B)^-T, with B's singular
+// values held at or below 0.97. Measured on the synthetic rigs of tests/rigs (docs/coverage.md):
+// with AR(1) drive noise the plain Bartlett estimate at Andrews' bandwidth covered 86 to 92 % of
+// the true values with its 95 % intervals (twice or three times the bandwidth did not help), the
+// prewhitened one 92 to 97 %.
 
 #include <Eigen/Core>
 #include <string>
@@ -31,6 +38,8 @@ struct HacOptions {
   /// Least bandwidth of the automatic rule, samples (>= 0): the residual correlation the caller
   /// knows its own filters leave (e.g. the decimation filter's memory). Default 0.
   double min_bandwidth = 0;
+  /// Prewhiten the scores by a VAR(1) before the kernel estimate (see above). Default true.
+  bool prewhiten = true;
 };
 
 /// The HAC covariance and how it was made.
@@ -39,7 +48,8 @@ struct HacCovariance {
   /// Omega scaled by n/(n-p) (p x p, unit of y squared over the parameters' units squared): the
   /// "meat" of the sandwich; covariance = A^-1 meat A^-1 with A = X'X.
   Eigen::MatrixXd meat;
-  double bandwidth = 0;  ///< L used, samples (an integer)
+  double bandwidth = 0;  ///< L used, samples (an integer), on the prewhitened scores when prewhitened
+  bool prewhitened = false;  ///< the VAR(1) prewhitening was applied (asked for, and n > 2 p + 2)
   /// The AR(1) coefficient of Andrews' rule, a weighted mean over the columns (NaN when the
   /// bandwidth was given).
   double rho = 0;
@@ -48,7 +58,7 @@ struct HacCovariance {
 /// The Newey-West covariance of the least-squares estimate of y = X theta from the regressor
 /// matrix `X` (n x p, n > p, columns in any units) and the residuals `residual` = y - X theta
 /// (n, unit of y), with the options above. A constant column (an offset) is left out of the
-/// bandwidth rule, not of the covariance.
+/// bandwidth rule, not of the covariance or the prewhitening.
 /// (X'X)^-1 is taken as the pseudo-inverse of the unit-diagonal scaled X'X, so a singular X'X
 /// gives a covariance, not an error (identify/uncertainty.hpp tells which parameters it leaves
 /// undetermined).

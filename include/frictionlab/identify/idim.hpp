@@ -10,8 +10,8 @@
 //   4. every column and y: scipy.signal.decimate(x, 10) (order-8 Chebyshev I, zero phase);
 //   5. optionally leave out the rows with |qd| below exclude_below (near standstill, where the
 //      sign of the Coulomb column follows noise); ordinary least squares;
-//   6. std from the Newey-West covariance (identify/covariance.hpp: Bartlett kernel, Andrews'
-//      bandwidth), which holds for the correlated residuals that filtering, decimation and
+//   6. std from the Newey-West covariance (identify/covariance.hpp: VAR(1) prewhitening, Bartlett
+//      kernel, Andrews' bandwidth), which holds for the correlated residuals that filtering, decimation and
 //      coloured drive noise leave; std_ols = s sqrt(diag((X'X)^-1)), s^2 = ||e||^2 / (N - p),
 //      the recipe's figure, alongside (a lower bound when the residuals are correlated).
 
@@ -176,9 +176,10 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options,
 /// above max_condition, or fit figures that are not finite. Standard deviations and the
 /// correlation matrix come from identify/uncertainty.hpp (std NaN for undetermined parameters)
 /// with the Newey-West covariance of identify/covariance.hpp; each parameter's std_ols is the
-/// ordinary least-squares figure. diagnostics.texts["covariance"] is "newey-west",
-/// diagnostics.numbers "covariance_bandwidth" its lag count (decimated samples) and
-/// "covariance_rho" the AR(1) coefficient its rule used.
+/// ordinary least-squares figure. diagnostics.texts["covariance"] is "newey-west-prewhitened"
+/// (or "newey-west" on records too short to prewhiten), diagnostics.numbers
+/// "covariance_bandwidth" its lag count (decimated samples) and "covariance_rho" the AR(1)
+/// coefficient its bandwidth rule used.
 /// diagnostics.texts["regressors_from"] is "position" or "velocity".
 /// \throws std::invalid_argument on bad input, as idim_regression.
 Result identify_idim(const IdimData& data, const IdimOptions& options = {});
