@@ -6,8 +6,9 @@ it makes `--cases` seeded logs with coverage_rigs.py (numpy only, independent of
 simulator), identifies each through the Python package and counts, per parameter, how often the
 reported 95 % interval value +- 1.96 std holds the truth; the same for std_ols (the ordinary
 least-squares figure). A cell whose model can represent the rig must cover each parameter in at
-least 90 % of the cases (against the nominal 95 %: with 100 cases an honest 95 % interval falls
-below 90 with probability about 0.02, and the cases are seeded, so the verdict is repeatable).
+least 90 % of the cases, or else pass a one-sided binomial test at the 1 % level against the
+nominal 95 % (with 100 cases: 89 hits pass, 88 fail; an honest 95 % interval fails it with
+probability below 0.01). The cases are seeded, so the verdict is repeatable.
 Cells where least squares is biased (a closed loop whose disturbance the loop reacts to, a
 Stribeck rig fitted without the Stribeck term) are reported, not asserted: widening the std does
 not fix a bias. There the adequacy checks should speak, and the table says how often they do.
@@ -30,7 +31,8 @@ import coverage_rigs as rigs  # noqa: E402
 
 import frictionlab as fl  # noqa: E402
 
-REQUIRED = 0.90  # least share of cases whose 95 % interval holds the truth, per parameter
+REQUIRED = 0.90  # least share of cases whose 95 % interval holds the truth, per parameter ...
+BINOMIAL_LEVEL = 0.01  # ... unless P(hits <= observed | 95 % coverage) is at least this
 Z95 = 1.959963984540054
 
 STRIBECK_TERMS = "inertia,viscous,coulomb,offset,stribeck"
@@ -68,18 +70,21 @@ def all_cells():
     for noise in ("white", "ar1"):
         cells.append(Cell("stribeck", noise, "position", 1000, terms="inertia,viscous,coulomb,offset",
                           expect="biased", note="model lacks the Stribeck term"))
-    for noise in ("white", "ar1"):
-        cells.append(Cell("coulomb-viscous", noise, "position", 1000, loop="closed", expect="biased",
+    # A white disturbance in the loop biases M beyond its std; an AR(1) one's wider std covers it.
+    for noise, expect in (("white", "biased"), ("ar1", "covers")):
+        cells.append(Cell("coulomb-viscous", noise, "position", 1000, loop="closed", expect=expect,
                           note="the loop reacts to the disturbance"))
         cells.append(Cell("coulomb-viscous", noise, "position", 1000, loop="closed", options={"exclude_below": 0.005},
-                          expect="biased", note="the loop reacts to the disturbance"))
+                          expect=expect, note="the loop reacts to the disturbance"))
     return cells
 
 
 def fast_cells():
-    """The subset `make test` runs: each friction kind, both noises, both sensors, the three rates."""
+    """The subset `make test` runs (about 30 s): each friction kind, both noises, both sensors,
+    the three rates."""
     return [Cell("coulomb-viscous", "ar1", "position", 1000), Cell("coulomb-viscous", "white", "velocity", 100),
-            Cell("stribeck", "ar1", "velocity", 1000), Cell("asymmetric", "ar1", "position", 8000)]
+            Cell("stribeck", "ar1", "velocity", 1000), Cell("asymmetric", "ar1", "position", 100),
+            Cell("coulomb-viscous", "ar1", "position", 8000)]
 
 
 def run_cell(cell, cases, seed0=1):
@@ -117,6 +122,14 @@ def run_cell(cell, cases, seed0=1):
             "findings": findings / cases, "bandwidth": float(np.median(bandwidths))}
 
 
+def covers(share, cases):
+    """The cell's verdict for one parameter: at least REQUIRED, or not rejected by a one-sided
+    binomial test at BINOMIAL_LEVEL against 95 %."""
+    from scipy.stats import binom
+
+    return share >= REQUIRED or binom.cdf(round(share * cases), cases, 0.95) >= BINOMIAL_LEVEL
+
+
 def markdown(rows, cases, seconds):
     out = ["| cell | cases | coverage of value ± 1.96 std (std_ols), per parameter | mean bias / std | "
            "adequacy finding | bandwidth | verdict |", "|---|---|---|---|---|---|---|"]
@@ -124,14 +137,14 @@ def markdown(rows, cases, seconds):
         c = row["cell"]
         cov = ", ".join(f"{k} {100 * row['coverage'][k]:.0f} ({100 * row['coverage_ols'][k]:.0f})" for k in row["coverage"])
         bias = ", ".join(f"{k} {row['bias'][k]:+.1f}" for k in row["bias"])
-        ok = all(v >= REQUIRED for v in row["coverage"].values())
+        ok = all(covers(v, row["cases"]) for v in row["coverage"].values())
         verdict = ("covers" if ok else "**fails**") if c.expect == "covers" else \
             ("covers" if ok else "biased: " + c.note)
         out.append(f"| {c.name} | {row['cases']} | {cov} | {bias} | {100 * row['findings']:.0f} % | "
                    f"{row['bandwidth']:g} | {verdict} |")
     out.append("")
-    out.append(f"{len(rows)} cells, {cases} cases each, {seconds:.0f} s on {platform.node() and 'this machine'} "
-               f"({os.cpu_count()} cores, {platform.processor() or platform.machine()}), frictionlab {fl.__version__}.")
+    out.append(f"{len(rows)} cells, {cases} cases each, {seconds:.0f} s on {os.cpu_count()} cores "
+               f"({platform.machine()}), frictionlab {fl.__version__}.")
     return "\n".join(out) + "\n"
 
 
@@ -148,13 +161,14 @@ def main():
         t0 = time.time()
         row = run_cell(cell, a.cases)
         rows.append(row)
-        low = {k: v for k, v in row["coverage"].items() if v < REQUIRED}
+        low = {k: v for k, v in row["coverage"].items() if not covers(v, a.cases)}
         line = ", ".join(f"{k} {100 * v:.0f} % ({100 * row['coverage_ols'][k]:.0f} %)" for k, v in row["coverage"].items())
         print(f"{cell.name}: {line}; findings {100 * row['findings']:.0f} %; L {row['bandwidth']:g}; "
               f"{time.time() - t0:.1f} s", flush=True)
         if cell.expect == "covers" and low:
             failures.append(f"{cell.name}: " + ", ".join(f"{k} covered in {100 * v:.0f} % of {a.cases} cases, expected "
-                                                         f">= {100 * REQUIRED:.0f} %" for k, v in low.items()))
+                                                         f">= {100 * REQUIRED:.0f} % (or a binomial test at the 1 % level)"
+                                                         for k, v in low.items()))
     table = markdown(rows, a.cases, time.time() - start)
     if a.markdown:
         pathlib.Path(a.markdown).write_text(table)
