@@ -53,9 +53,9 @@ def test_emps_std_accounts_for_correlated_residuals(emps, emps_result):
     # EMPS's residual is correlated (lag-1 autocorrelation above 0.5): the std that accounts for it
     # is larger than the ordinary one for every parameter.
     assert all(r.std[k] > r.std_ols[k] for k in r.std), (r.std, r.std_ols)
-    assert r.diagnostics.texts["covariance"] == "newey-west-prewhitened"
     assert r.diagnostics.numbers["covariance_bandwidth"] >= 1
     j = json.loads(r.to_json())
+    assert j["diagnostics"]["covariance"] == "newey-west-prewhitened"
     assert j["parameters"]["Fc"]["std_ols"] == pytest.approx(r.std_ols["Fc"], rel=1e-12)
     assert j["parameters"]["Fc"]["std"] == pytest.approx(r.std["Fc"], rel=1e-12)
     # the correlation matrix comes from the same covariance as std: unit diagonal, symmetric
