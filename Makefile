@@ -2,6 +2,7 @@
 #   make demo   install what is missing, build, identify friction on the bundled EMPS data, write a report
 #   make test   install what is missing, build, run every test (C++, CLI, Python, examples)
 # Others: make build, make sanitize (tests under ASan+UBSan), make bench, make install-test,
+# make coverage (the whole coverage table of idim's standard deviations, docs/coverage.md),
 # make fuzz (the libFuzzer targets of tests/fuzz, FUZZ_SECONDS each), make fuzz-merge, make clean.
 
 BUILD      ?= build
@@ -19,7 +20,7 @@ FUZZ_SECONDS      ?= 600
 FUZZ_TEST_SECONDS ?= 15
 FUZZERS            = fuzz_csv fuzz_mat fuzz_scenario fuzz_law
 
-.PHONY: all deps build test demo sanitize bench install-test clean fuzz-build fuzz fuzz-test fuzz-merge
+.PHONY: all deps build test demo sanitize bench install-test coverage clean fuzz-build fuzz fuzz-test fuzz-merge
 
 all: build
 
@@ -48,6 +49,14 @@ bench: deps
 	@cmake --build $(BUILD)-bench -j $(JOBS) --target frictionlab_bench frictionlab_compare frictionlab_cli frictionlab_python
 	@$(BUILD)-bench/bench/frictionlab_bench
 	@$(PYTHON) bench/compare --build $(BUILD)-bench --no-build --json bench/results.json
+
+# The coverage of idim's 95 % intervals on every synthetic rig cell (tests/rigs/idim_coverage.py;
+# make test runs a fast subset): the table goes to $(BUILD)/coverage.md, for docs/coverage.md.
+COVERAGE_CASES ?= 100
+coverage: build
+	@PYTHONPATH=$(BUILD)/python $(PYTHON) tests/rigs/idim_coverage.py --cells all --cases $(COVERAGE_CASES) \
+		--markdown $(BUILD)/coverage.md
+	@echo "table: $(BUILD)/coverage.md"
 
 # Installs the library into a scratch prefix and builds a consumer with find_package(frictionlab).
 install-test: build

@@ -71,6 +71,9 @@ void init_result(py::module_& m) {
       .def_readonly("value", &Parameter::value, "Estimate, SI unit `unit`.")
       .def_readonly("std", &Parameter::std, "Standard deviation, same unit (NaN when unknown).")
       .def_readonly("unit", &Parameter::unit, "Unit, e.g. 'N', 'N s/m', 'kg', 'N m', 'N m s/rad', 'kg m^2'.")
+      .def_readonly("std_ols", &Parameter::std_ols,
+                    "The ordinary least-squares std s sqrt(diag((X'X)^-1)), same unit, when `std` accounts for "
+                    "correlated residuals instead (idim); None for methods without it, NaN where std is NaN.")
       .def("__iter__", [](const Parameter& p) { return py::iter(py::make_tuple(p.value, p.std, p.unit)); })
       .def("__repr__", [](const Parameter& p) {
         return "Parameter(" + p.name + " = " + num(p.value) + " \u00b1 " + num(p.std, 3) + " " + p.unit + ")";
@@ -137,6 +140,10 @@ A status of 'error' (data that cannot give an answer) is not an exception: check
                              "Parameter values by name (SI units).")
       .def_property_readonly("std", [](const Result& r) { return by_name(r.parameters, [](const Parameter& p) { return p.std; }); },
                              "Standard deviations by name (SI units).")
+      .def_property_readonly("std_ols", [](const Result& r) {
+        return by_name(r.parameters, [](const Parameter& p) { return p.std_ols; }); },
+                             "Ordinary least-squares standard deviations by name (SI units; None for methods "
+                             "without them): idim's std accounts for correlated residuals, std_ols does not.")
       .def_property_readonly("units", [](const Result& r) { return by_name(r.parameters, [](const Parameter& p) { return p.unit; }); },
                              "Units by name.")
       .def_property_readonly("axis", [](const Result& r) { return axis_name(r.axis); }, "'linear' or 'rotary': the axis the units are on.")

@@ -215,15 +215,16 @@ Adequacy assess_residuals(const std::vector<double>& velocity, const std::vector
     a.findings.push_back("the residual is correlated from sample to sample (lag-1 autocorrelation " +
                          num(a.autocorrelation.front()) + "; " + std::to_string(n) + " samples count as about " +
                          num(a.effective_samples) + " independent ones): standard deviations that assume"
-                         " independent residuals are too small by about " +
-                         num(std::sqrt(inflation)) + " times");
+                         " independent residuals (idim's std_ols) are too small by about " +
+                         num(std::sqrt(inflation)) + " times; idim's std accounts for the correlation");
   }
   constexpr double kStandstillShare = 0.2;  // beyond this share, stuck samples weigh on the Coulomb level
   if (a.standstill_share > kStandstillShare) {
     a.findings.push_back(num(100 * a.standstill_share) + " % of the samples are near standstill (|v| < " +
                          num(a.standstill_speed) + " " + velocity_unit +
                          "), where the Coulomb term's sign follows noise: they bias the Coulomb level; record"
-                         " more motion or leave those samples out");
+                         " more motion or leave those samples out (idim: --exclude-below " +
+                         num(a.standstill_speed) + ")");
   }
   return a;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "frictionlab/identify/adequacy.hpp"
+#include "frictionlab/identify/covariance.hpp"
 #include "frictionlab/identify/method.hpp"
 #include "method_support.hpp"
 #include "frictionlab/identify/least_squares.hpp"
@@ -297,6 +298,25 @@ struct Pass {
   std::optional<IdimKinematics> kinematics;  // views of the workspace, valid until it is used again
 };
 
+// Keeps the rows of the decimated columns `reduced` whose velocity (column `velocity_col`) is
+// at least options.exclude_below in magnitude; records each kept row's raw sample and the count
+// left out in `reg`.
+void exclude_slow_rows(Eigen::MatrixXd& reduced, Eigen::Index velocity_col, const IdimOptions& options,
+                       IdimRegression& reg) {
+  if (!(options.exclude_below >= 0) || !std::isfinite(options.exclude_below))
+    throw std::invalid_argument("idim: exclude_below = " + detail::format_value(options.exclude_below, 6) +
+                                " must be a finite speed >= 0 (m/s or rad/s)");
+  Eigen::Index kept = 0;
+  for (Eigen::Index k = 0; k < reduced.rows(); ++k) {
+    if (!(std::abs(reduced(k, velocity_col)) >= options.exclude_below)) continue;
+    if (kept != k) reduced.row(kept) = reduced.row(k);
+    reg.sample.push_back(options.skip + k * std::max(1, options.decimation));
+    ++kept;
+  }
+  reg.excluded = reduced.rows() - kept;
+  reduced.conservativeResize(kept, Eigen::NoChange);
+}
+
 Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt, bool want_velocity_column,
                      IdimWorkspace& workspace) {
   Pass pass;
@@ -401,7 +421,7 @@ Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt
   // The velocity for the friction map: the built-in viscous column is qd itself; without one,
   // qd joins the decimation as one more column.
   Eigen::Index velocity_col = -1;
-  if (want_velocity_column) {
+  if (want_velocity_column || options.exclude_below > 0) {
     for (Eigen::Index j = 0; j < builtin_terms && velocity_col < 0; ++j)
       if (reg.terms[static_cast<std::size_t>(j)].parameter == "Fv") velocity_col = j + 1;
     if (velocity_col < 0) {
@@ -417,6 +437,9 @@ Pass regression_pass(const IdimData& data, const IdimOptions& options, double dt
   } else {
     reduced = decimate_columns(views, options.decimation, workspace.filter());
   }
+  if (options.exclude_below > 0) exclude_slow_rows(reduced, velocity_col, options, reg);
+  else
+    for (Eigen::Index k = 0; k < reduced.rows(); ++k) reg.sample.push_back(options.skip + k * std::max(1, options.decimation));
   reg.y = reduced.col(0);
   reg.X = reduced.middleCols(1, p);
   if (velocity_col >= 0) pass.velocity = reduced.col(velocity_col);
@@ -492,7 +515,7 @@ void attach_law(Result& r, const IdimOptions& o, double vs) {
 }
 
 Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, double dt, IdimWorkspace& workspace,
-                           Vec* velocity = nullptr);
+                           Vec* velocity = nullptr, std::vector<Eigen::Index>* sample = nullptr);
 
 }  // namespace
 
@@ -547,6 +570,11 @@ MethodInfo detail::idim_method_info() {
        .min = 0, .deprecated_keywords = {"input_delay"}},
       {.name = "min-velocity", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s",
        .default_value = d.min_velocity, .help = "No excitation when the largest |velocity| is not above this", .min = 0},
+      {.name = "exclude-below", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s",
+       .default_value = d.exclude_below,
+       .help = "Leave out the samples (after decimation) whose filtered |velocity| is below this: near standstill "
+               "the Coulomb term's sign follows noise and biases Fc; 0 keeps all",
+       .min = 0},
       {.name = "max-condition", .type = OptionType::number, .default_value = d.max_condition,
        .help = "Largest condition number of the column-normalised regressor accepted", .min = 1},
       {.name = "load", .type = OptionType::column, .unit = "N", .rotary_unit = "N m",
@@ -593,6 +621,7 @@ IdimOptions make_idim_options(const OptionValues& v) {
   o.stribeck_delta = v.number("delta");
   o.input_delay = static_cast<Eigen::Index>(v.integer("delay"));
   o.min_velocity = v.number("min-velocity");
+  o.exclude_below = v.number("exclude-below");
   o.max_condition = v.number("max-condition");
   if (v.given("temperature-ref")) o.temperature_ref = v.number("temperature-ref");
   if (v.given("ripple-period")) o.ripple_period = v.number("ripple-period");
@@ -604,14 +633,13 @@ namespace {
 // Is anything left in the residual? Residual checks against velocity, position and time
 // (identify/adequacy.hpp), on the fitted (decimated) samples; the position is the recorded one
 // at those samples.
-void add_idim_adequacy(Result& r, const IdimData& data, const IdimOptions& o) {
+void add_idim_adequacy(Result& r, const IdimData& data, const IdimOptions& o, const std::vector<Eigen::Index>& sample) {
   const auto& f = r.series.at("force");
   const auto& fm = r.series.at("force_model");
   std::vector<double> residual(f.size()), position;
   for (std::size_t i = 0; i < f.size(); ++i) residual[i] = f[i] - fm[i];
   if (data.position.size() > 0) {
-    const Eigen::Index step = std::max(1, o.decimation);
-    for (std::size_t k = 0; k < f.size(); ++k) position.push_back(data.position[o.skip + static_cast<Eigen::Index>(k) * step]);
+    for (std::size_t k = 0; k < f.size(); ++k) position.push_back(data.position[sample[k]]);
   }
   constexpr std::size_t kMinSamples = 20;  // assess_residuals' least
   if (residual.size() < kMinSamples) return;
@@ -684,8 +712,14 @@ double searched_stribeck_vs(const IdimData& data, const IdimOptions& options, do
   for (int i = 0; i < kGrid; ++i) {
     o.stribeck_vs = reg.max_speed * std::pow(10.0, -4.0 + (4.0 - std::log10(2.0)) * i / (kGrid - 1));
     builtin("stribeck", o).fill(*base.kinematics, column);
-    if (options.decimation == 1) reg.X.col(j) = column.segment(options.skip, used);
-    else reg.X.col(j) = decimate_columns(ColumnViews{{column.data() + options.skip, used}}, options.decimation, workspace.filter());
+    const Vec all = options.decimation == 1
+                        ? Vec(column.segment(options.skip, used))
+                        : Vec(decimate_columns(ColumnViews{{column.data() + options.skip, used}}, options.decimation,
+                                               workspace.filter()));
+    // The rows the regression kept (exclude_below may have left some out): row k is raw sample
+    // skip + k * decimation.
+    for (Eigen::Index k = 0; k < reg.X.rows(); ++k)
+      reg.X(k, j) = all((reg.sample[static_cast<std::size_t>(k)] - options.skip) / std::max(1, options.decimation));
     const LeastSquaresFit fit = linear_least_squares(reg.X, reg.y, names, lso);
     if (fit.refusal != LeastSquaresRefusal::none || !fit.theta.allFinite()) continue;
     const double error_percent = 100.0 * std::sqrt(fit.residual.squaredNorm()) / y_norm;
@@ -712,7 +746,8 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in, IdimWo
   IdimOptions o = options;
   if (options.search_stribeck_vs && has_stribeck) o.stribeck_vs = searched_stribeck_vs(data, options, dt, workspace);
   Vec v;  // the filtered velocity at the fitted samples, for the friction map
-  Result r = identify_idim_fixed(data, o, dt, workspace, &v);
+  std::vector<Eigen::Index> sample;  // the raw sample of each fitted row
+  Result r = identify_idim_fixed(data, o, dt, workspace, &v, &sample);
   if (has_stribeck) r.diagnostics.numbers["stribeck_vs"] = o.stribeck_vs;
   if (asks_for(o, "temperature")) r.diagnostics.numbers["temperature_ref"] = o.temperature_ref;
   if (asks_for(o, "ripple")) r.diagnostics.numbers["ripple_period"] = o.ripple_period;
@@ -753,17 +788,29 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in, IdimWo
     if (asks_for(o, "load")) curve += r.value("mu_load") * data.load.cwiseAbs().mean() * grid.unaryExpr([](double v) { return sign_of(v); });
     r.series["law_velocity"].assign(grid.data(), grid.data() + grid.size());
     r.series["law_force"].assign(curve.data(), curve.data() + curve.size());
-    add_idim_adequacy(r, data, o);
+    add_idim_adequacy(r, data, o, sample);
     describe_conditions(r, data, o);
   }
   return r;
 }
 
 namespace {
+// Standard deviations and correlation from the Newey-West covariance of the fit (identify/
+// covariance.hpp), with the undetermined parameters of uncertainty.hpp's rules; std_ols the
+// ordinary figure. The covariance used is named in the diagnostics.
+void set_idim_uncertainty(Result& r, const Eigen::MatrixXd& X, const LeastSquaresFit& fit,
+                          const std::vector<std::string>& names) {
+  const HacCovariance hac = hac_covariance(X, fit.residual);
+  set_uncertainty_from_sandwich(r, names, fit.information, hac.meat, fit.residual_variance);
+  r.diagnostics.texts["covariance"] = hac.prewhitened ? "newey-west-prewhitened" : "newey-west";
+  r.diagnostics.numbers["covariance_bandwidth"] = hac.bandwidth;
+  r.diagnostics.numbers["covariance_rho"] = hac.rho;
+}
+
 // One identification at options resolved for the mean step dt (s); `velocity`, when given, gets
 // the filtered velocity at the fitted samples.
 Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, double dt, IdimWorkspace& workspace,
-                           Vec* velocity) {
+                           Vec* velocity, std::vector<Eigen::Index>* sample) {
   Result r = new_result(method_info(MethodId::idim), "", options.axis);
   r.data_file = data.file;
   r.data_sha256 = data.sha256;
@@ -778,12 +825,18 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, dou
   r.diagnostics.numbers["decimation"] = options.decimation;
   r.diagnostics.numbers["skipped_samples"] = static_cast<double>(options.skip);
   r.diagnostics.numbers["max_speed"] = reg.max_speed;
+  if (options.exclude_below > 0) {
+    r.diagnostics.numbers["exclude_below"] = options.exclude_below;
+    r.diagnostics.numbers["excluded_samples"] = static_cast<double>(reg.excluded);
+  }
+  if (sample != nullptr) *sample = reg.sample;
   const bool from_velocity = pass.from_velocity;
   r.diagnostics.texts["regressors_from"] = from_velocity ? "velocity" : "position";
 
   if (nobs <= p) {
-    return error_result(r, where(data) + std::to_string(nobs) + " samples after decimation for " + std::to_string(p) +
-                               " parameters; expected more samples than parameters");
+    return error_result(r, where(data) + std::to_string(nobs) + " samples after decimation" +
+                               (reg.excluded > 0 ? " and exclude_below (" + std::to_string(reg.excluded) + " left out)" : "") +
+                               " for " + std::to_string(p) + " parameters; expected more samples than parameters");
   }
   if (!(reg.max_speed > no_motion_speed(data, options, pass))) {
     return error_result(r, where(data) + "no excitation: the velocity never exceeds " + detail::format_value(options.min_velocity, 6) +
@@ -826,12 +879,12 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, dou
     const auto& t = reg.terms[static_cast<std::size_t>(j)];
     r.parameters.push_back({t.parameter, theta(j), 0.0, std::string(unit(t.quantity, options.axis)), ""});
   }
-  // std = s sqrt(diag((X'X)^-1)) over the determined parameters.
-  set_uncertainty_from_information(r, names, fit.information, s2);
+  // std from the Newey-West covariance over the determined parameters, std_ols = s sqrt(diag((X'X)^-1)).
+  set_idim_uncertainty(r, reg.X, fit, names);
   {  // figure signals: the decimated samples keep every decimation-th sample after the skip
     const Vec model = reg.X * theta;
     auto& t = r.series["time"];
-    for (Eigen::Index k = 0; k < nobs; ++k) t.push_back(data.time[options.skip + k * std::max(1, options.decimation)]);
+    for (Eigen::Index k = 0; k < nobs; ++k) t.push_back(data.time[reg.sample[static_cast<std::size_t>(k)]]);
     r.series["force"].assign(reg.y.data(), reg.y.data() + nobs);
     r.series["force_model"].assign(model.data(), model.data() + nobs);
     // The friction map: the force less the non-friction terms (inertia, offset, user terms)
@@ -896,7 +949,7 @@ ValidationFigures cross_test(const Result& identified, const IdimData& data, con
   {  // figure signals, sampled as the identification's (see identify_idim_fixed)
     const Vec model = reg.X * theta;
     auto& t = v.series["time"];
-    for (Eigen::Index k = 0; k < e.size(); ++k) t.push_back(data.time[o.skip + k * std::max(1, o.decimation)]);
+    for (Eigen::Index k = 0; k < e.size(); ++k) t.push_back(data.time[reg.sample[static_cast<std::size_t>(k)]]);
     v.series["force"].assign(reg.y.data(), reg.y.data() + reg.y.size());
     v.series["force_model"].assign(model.data(), model.data() + model.size());
   }

@@ -39,7 +39,10 @@ std::string to_json(const Result& r, int indent) {
   j["data"] = {{"file", r.data_file}, {"sha256", r.data_sha256}};
   j["axis"] = r.axis == Axis::rotary ? "rotary" : "linear";
   nlohmann::json params = nlohmann::json::object();
-  for (const auto& p : r.parameters) params[p.name] = {{"value", number(p.value)}, {"std", number(p.std)}, {"unit", p.unit}};
+  for (const auto& p : r.parameters) {
+    params[p.name] = {{"value", number(p.value)}, {"std", number(p.std)}, {"unit", p.unit}};
+    if (p.std_ols) params[p.name]["std_ols"] = number(*p.std_ols);
+  }
   j["parameters"] = params;
   j["fit"] = {{"relative_error_percent", number(r.fit.relative_error_percent)},
               {"rmse", number(r.fit.rmse)},

@@ -41,11 +41,17 @@ bool is_at_bound(double value, double lower, double upper, double scale) {
   return near(lower) || near(upper);
 }
 
-Eigen::MatrixXd set_uncertainty_from_information(Result& r, const std::vector<std::string>& names,
-                                                 const Eigen::MatrixXd& A, double s2,
-                                                 const std::vector<ParameterState>& states_in,
-                                                 const UncertaintyOptions& o) {
+namespace {
+
+// The one assessment behind both public forms: with `meat` null the covariance over the
+// determined set is s2 (A_SS)^-1; with it, (A_SS)^-1 meat_SS (A_SS)^-1 and std_ols from s2.
+Eigen::MatrixXd assess(Result& r, const std::vector<std::string>& names, const Eigen::MatrixXd& A, double s2,
+                       const Eigen::MatrixXd* meat, const std::vector<ParameterState>& states_in,
+                       const UncertaintyOptions& o) {
   const auto p = static_cast<Eigen::Index>(names.size());
+  if (meat != nullptr && (meat->rows() != p || meat->cols() != p))
+    throw std::invalid_argument("uncertainty: the sandwich's meat is " + std::to_string(meat->rows()) + " x " +
+                                std::to_string(meat->cols()) + " for " + std::to_string(p) + " parameters");
   if (A.rows() != p || A.cols() != p)
     throw std::invalid_argument("uncertainty: information matrix is " + std::to_string(A.rows()) + " x " +
                                 std::to_string(A.cols()) + " for " + std::to_string(p) + " parameters");
@@ -98,6 +104,7 @@ Eigen::MatrixXd set_uncertainty_from_information(Result& r, const std::vector<st
     if (!excluded[static_cast<std::size_t>(i)]) keep.push_back(i);
   const auto nk = static_cast<Eigen::Index>(keep.size());
   Eigen::MatrixXd cov = Eigen::MatrixXd::Constant(p, p, kNaN);
+  Eigen::VectorXd var_ols = Eigen::VectorXd::Constant(p, kNaN);
   if (nk > 0) {
     Eigen::MatrixXd As(nk, nk);
     Eigen::VectorXd d(nk);
@@ -106,8 +113,21 @@ Eigen::MatrixXd set_uncertainty_from_information(Result& r, const std::vector<st
       for (Eigen::Index b = 0; b < nk; ++b) As(a, b) = d(a) * A(keep[a], keep[b]) * d(b);
     // Scaled, so the pseudo-inverse's threshold is relative to unit-diagonal entries.
     const Eigen::MatrixXd inv = As.completeOrthogonalDecomposition().pseudoInverse();
+    // (A_SS)^-1 = D inv D, symmetrised.
+    Eigen::MatrixXd Ainv(nk, nk);
     for (Eigen::Index a = 0; a < nk; ++a)
-      for (Eigen::Index b = 0; b < nk; ++b) cov(keep[a], keep[b]) = s2 * d(a) * 0.5 * (inv(a, b) + inv(b, a)) * d(b);
+      for (Eigen::Index b = 0; b < nk; ++b) Ainv(a, b) = d(a) * 0.5 * (inv(a, b) + inv(b, a)) * d(b);
+    for (Eigen::Index a = 0; a < nk; ++a) var_ols(keep[a]) = s2 * Ainv(a, a);
+    Eigen::MatrixXd ck = s2 * Ainv;
+    if (meat != nullptr) {
+      Eigen::MatrixXd Bs(nk, nk);
+      for (Eigen::Index a = 0; a < nk; ++a)
+        for (Eigen::Index b = 0; b < nk; ++b) Bs(a, b) = (*meat)(keep[a], keep[b]);
+      ck = Ainv * Bs * Ainv;
+      ck = 0.5 * (ck + ck.transpose()).eval();
+    }
+    for (Eigen::Index a = 0; a < nk; ++a)
+      for (Eigen::Index b = 0; b < nk; ++b) cov(keep[a], keep[b]) = ck(a, b);
   }
   // 4. Results: std, flags, warnings, lists, correlation.
   auto& diag = r.diagnostics;
@@ -117,6 +137,8 @@ Eigen::MatrixXd set_uncertainty_from_information(Result& r, const std::vector<st
     const auto u = static_cast<std::size_t>(i);
     Parameter& e = *est[u];
     diag.correlation.matrix[u][u] = 1.0;
+    if (meat != nullptr) e.std_ols = excluded[u] ? kNaN : std::sqrt(std::max(0.0, var_ols(i)));
+    else e.std_ols.reset();
     if (excluded[u]) {
       e.std = kNaN;
       e.flag = st[u].at_bound ? "at bound" : "undetermined";
@@ -146,6 +168,22 @@ Eigen::MatrixXd set_uncertainty_from_information(Result& r, const std::vector<st
     diag.warnings.push_back("the std of the other parameters assumes " + joined(correlated) +
                             " known; they are larger in truth");
   return cov;
+}
+
+}  // namespace
+
+Eigen::MatrixXd set_uncertainty_from_information(Result& r, const std::vector<std::string>& names,
+                                                 const Eigen::MatrixXd& information, double residual_variance,
+                                                 const std::vector<ParameterState>& states,
+                                                 const UncertaintyOptions& options) {
+  return assess(r, names, information, residual_variance, nullptr, states, options);
+}
+
+Eigen::MatrixXd set_uncertainty_from_sandwich(Result& r, const std::vector<std::string>& names,
+                                              const Eigen::MatrixXd& information, const Eigen::MatrixXd& meat,
+                                              double residual_variance, const std::vector<ParameterState>& states,
+                                              const UncertaintyOptions& options) {
+  return assess(r, names, information, residual_variance, &meat, states, options);
 }
 
 Eigen::MatrixXd set_uncertainty_from_covariance(Result& r, const std::vector<std::string>& names,

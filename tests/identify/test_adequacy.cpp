@@ -117,6 +117,7 @@ TEST(Adequacy, CorrelatedResidualGivesTheEffectiveSampleSize) {
   constexpr double kRelTol = 0.35;
   EXPECT_NEAR(a.effective_samples, expected, kRelTol * expected);
   EXPECT_TRUE(has(a, "correlated from sample to sample")) << all(a);
+  EXPECT_TRUE(has(a, "idim's std accounts for the correlation")) << all(a);
   // The binned means are judged with the wider standard errors: no structure is claimed.
   EXPECT_FALSE(has(a, "friction at low speed")) << all(a);
   EXPECT_FALSE(has(a, "depends on position")) << all(a);
@@ -129,6 +130,7 @@ TEST(Adequacy, StandstillShareIsReportedWithItsThreshold) {
   const fl::Adequacy a = fl::assess_residuals(r.v, r.q, r.t, e, "N", "m/s");
   EXPECT_NEAR(a.standstill_share, 0.5, 0.02);
   EXPECT_TRUE(has(a, "near standstill (|v| < 0.002 m/s)")) << all(a);
+  EXPECT_TRUE(has(a, "idim: --exclude-below 0.002)")) << "the suggestion names the option and the value; " << all(a);
 }
 
 TEST(Adequacy, ResultCarriesBinsAndFindingsAsWarnings) {

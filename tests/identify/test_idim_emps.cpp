@@ -63,10 +63,10 @@ TEST(IdimEmps, SymmetricModelMatchesPublishedAndScipy) {
   expect_rel(r.value("Fv"), 203.54744242925992, kScipyRelTol, "Fv (scipy)");
   expect_rel(r.value("Fc"), 20.38822845728166, kScipyRelTol, "Fc (scipy)");
   expect_rel(r.value("offset"), -3.1632188179640934, kScipyRelTol, "offset (scipy)");
-  expect_rel(r.find("M")->std, 0.10997334837875802, kScipyRelTol, "std M (scipy)");
-  expect_rel(r.find("Fv")->std, 1.1618640531949185, kScipyRelTol, "std Fv (scipy)");
-  expect_rel(r.find("Fc")->std, 0.10262646030169308, kScipyRelTol, "std Fc (scipy)");
-  expect_rel(r.find("offset")->std, 0.04498524660231365, kScipyRelTol, "std offset (scipy)");
+  expect_rel(*r.find("M")->std_ols, 0.10997334837875802, kScipyRelTol, "std_ols M (scipy)");
+  expect_rel(*r.find("Fv")->std_ols, 1.1618640531949185, kScipyRelTol, "std_ols Fv (scipy)");
+  expect_rel(*r.find("Fc")->std_ols, 0.10262646030169308, kScipyRelTol, "std_ols Fc (scipy)");
+  expect_rel(*r.find("offset")->std_ols, 0.04498524660231365, kScipyRelTol, "std_ols offset (scipy)");
   expect_rel(r.fit.relative_error_percent, 4.13722720504, kScipyRelTol, "relative error (scipy)");
   expect_rel(r.fit.rmse, 2.21272319658, kScipyRelTol, "rmse (scipy)");
   EXPECT_EQ(r.fit.samples, 2480u);

@@ -45,6 +45,42 @@ def test_emps_idim_matches_cpp_and_publication(emps_result):
     assert r.law.name == "coulomb-viscous" and r.law.parameters["Fc"] == r["Fc"]
 
 
+def test_emps_std_accounts_for_correlated_residuals(emps, emps_result):
+    r = emps_result
+    # std_ols: the recipe's s sqrt(diag((X'X)^-1)), the scipy figures of tests/identify/test_idim_emps.cpp.
+    assert r.std_ols["Fc"] == pytest.approx(0.10262646030169308, rel=CPP_REL_TOL)
+    assert r.parameters["M"].std_ols == pytest.approx(0.10997334837875802, rel=CPP_REL_TOL)
+    # EMPS's residual is correlated (lag-1 autocorrelation above 0.5): the std that accounts for it
+    # is larger than the ordinary one for every parameter.
+    assert all(r.std[k] > r.std_ols[k] for k in r.std), (r.std, r.std_ols)
+    assert r.diagnostics.numbers["covariance_bandwidth"] >= 1
+    j = json.loads(r.to_json())
+    assert j["diagnostics"]["covariance"] == "newey-west-prewhitened"
+    assert j["parameters"]["Fc"]["std_ols"] == pytest.approx(r.std_ols["Fc"], rel=1e-12)
+    assert j["parameters"]["Fc"]["std"] == pytest.approx(r.std["Fc"], rel=1e-12)
+    # the correlation matrix comes from the same covariance as std: unit diagonal, symmetric
+    m = np.array(j["diagnostics"]["correlation"]["matrix"], dtype=float)
+    np.testing.assert_allclose(np.diag(m), 1.0)
+    np.testing.assert_allclose(m, m.T)
+
+
+def test_exclude_below_leaves_out_slow_samples(emps):
+    d = emps
+    full = fl.identify_idim(d["t"], emps_force(d), position=d["qm"])
+    r = fl.identify_idim(d["t"], emps_force(d), position=d["qm"], exclude_below=0.01)
+    n = r.diagnostics.numbers["excluded_samples"]
+    assert r.diagnostics.numbers["exclude_below"] == 0.01
+    assert 0 < n < full.fit.samples and r.fit.samples == full.fit.samples - n
+    assert "excluded_samples" not in full.diagnostics.numbers
+    # every velocity the fit kept is at least the threshold
+    assert np.min(np.abs(r.series["velocity"])) >= 0.01
+    with pytest.raises(ValueError, match="exclude"):
+        fl.identify_idim(d["t"], emps_force(d), position=d["qm"], exclude_below=-1)
+    # a threshold above every speed leaves nothing: a status error naming it, not numbers
+    none = fl.identify_idim(d["t"], emps_force(d), position=d["qm"], exclude_below=10.0)
+    assert not none.ok and "exclude_below" in none.message
+
+
 def test_emps_cross_test_function_and_best_model(emps, emps_pulses):
     p = emps_pulses
     # tests/identify/test_idim_emps.cpp: asymmetric friction, a Stribeck term and the one-sample delay.

@@ -8,7 +8,12 @@
 //   3. regressor columns (one per term) and y = force; drop the first 49 samples (and
 //      optionally some at the end);
 //   4. every column and y: scipy.signal.decimate(x, 10) (order-8 Chebyshev I, zero phase);
-//   5. ordinary least squares; std = s sqrt(diag((X'X)^-1)), s^2 = ||e||^2 / (N - p).
+//   5. optionally leave out the rows with |qd| below exclude_below (near standstill, where the
+//      sign of the Coulomb column follows noise); ordinary least squares;
+//   6. std from the Newey-West covariance (identify/covariance.hpp: VAR(1) prewhitening, Bartlett
+//      kernel, Andrews' bandwidth), which holds for the correlated residuals that filtering, decimation and
+//      coloured drive noise leave; std_ols = s sqrt(diag((X'X)^-1)), s^2 = ||e||^2 / (N - p),
+//      the recipe's figure, alongside (a lower bound when the residuals are correlated).
 
 #include <Eigen/Core>
 #include <functional>
@@ -140,6 +145,11 @@ struct IdimOptions {
   double temperature_ref = std::numeric_limits<double>::quiet_NaN();
   /// No excitation when max |qd| over the used samples is not above this, m/s or rad/s. Default 0.
   double min_velocity = 0.0;
+  /// Leave out of the regression the rows (after decimation) whose filtered |qd| is below this,
+  /// m/s or rad/s (0: keep all). Near standstill the Coulomb column's sign follows noise and a
+  /// stuck axis's force is anywhere within the static level: such rows bias Fc. The result
+  /// reports diagnostics "exclude_below" and "excluded_samples". Default 0 (the EMPS recipe).
+  double exclude_below = 0.0;
   /// Status error when the condition number of the column-normalised regressor exceeds this.
   /// Default 1e8.
   double max_condition = 1e8;
@@ -166,6 +176,10 @@ struct IdimRegression {
   std::vector<IdimTerm> terms;          ///< p terms, column order
   double dt = 0;                        ///< s, mean sample step of the raw data
   double max_speed = 0;                 ///< max |qd| over the used raw samples, m/s or rad/s
+  /// The raw sample (0-based index into IdimData) of each row of X: skip + k * decimation, less
+  /// the rows left out by exclude_below.
+  std::vector<Eigen::Index> sample;
+  Eigen::Index excluded = 0;  ///< rows left out by exclude_below
 };
 
 /// The terms `options` asks for, in column order.
@@ -187,7 +201,12 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options,
 /// (no motion, no acceleration), no excitation (velocity never above min_velocity), a force that
 /// is zero throughout (e.g. a drive gain of 0), fewer samples than parameters, a condition number
 /// above max_condition, or fit figures that are not finite. Standard deviations and the
-/// correlation matrix come from identify/uncertainty.hpp (std NaN for undetermined parameters).
+/// correlation matrix come from identify/uncertainty.hpp (std NaN for undetermined parameters)
+/// with the Newey-West covariance of identify/covariance.hpp; each parameter's std_ols is the
+/// ordinary least-squares figure. diagnostics.texts["covariance"] is "newey-west-prewhitened"
+/// (or "newey-west" on records too short to prewhiten), diagnostics.numbers
+/// "covariance_bandwidth" its lag count (decimated samples) and "covariance_rho" the AR(1)
+/// coefficient its bandwidth rule used.
 /// diagnostics.texts["regressors_from"] is "position" or "velocity".
 /// \throws std::invalid_argument on bad input, as idim_regression.
 Result identify_idim(const IdimData& data, const IdimOptions& options = {});

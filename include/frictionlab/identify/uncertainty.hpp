@@ -59,6 +59,19 @@ Eigen::MatrixXd set_uncertainty_from_information(Result& r, const std::vector<st
                                                  const std::vector<ParameterState>& states = {},
                                                  const UncertaintyOptions& options = {});
 
+/// The same with the sandwich covariance of a least-squares fit whose residuals are correlated
+/// (identify/covariance.hpp): over the determined set S (chosen from `information` by the rules
+/// above, so the same parameters are undetermined as with the ordinary covariance), std and
+/// correlation come from (A_SS)^-1 meat_SS (A_SS)^-1, and each determined parameter's std_ols
+/// from residual_variance (A_SS)^-1 (NaN where std is NaN). `meat` is p x p, symmetric positive
+/// semi-definite, unit of the fitted signal squared over the parameters' units squared.
+/// \returns the p x p sandwich covariance (NaN rows and columns as above).
+/// \throws std::invalid_argument for mismatched sizes or a name not among r.parameters.
+Eigen::MatrixXd set_uncertainty_from_sandwich(Result& r, const std::vector<std::string>& names,
+                                              const Eigen::MatrixXd& information, const Eigen::MatrixXd& meat,
+                                              double residual_variance, const std::vector<ParameterState>& states = {},
+                                              const UncertaintyOptions& options = {});
+
 /// The same from a covariance matrix (p x p, symmetric positive semi-definite, parameters'
 /// units squared) when the method has no information matrix: the information is taken as its
 /// pseudo-inverse (residual variance 1). A zero or non-finite variance makes the parameter

@@ -3,6 +3,7 @@
 // validation check that names the law, the parameter, its value and the rule it broke.
 
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -55,6 +56,11 @@ struct Parameter {
   /// Why `std` is NaN, for text output and reports: "" (determined), "undetermined" (the data
   /// cannot determine it) or "at bound" (the fit ended at a bound). See identify/uncertainty.hpp.
   std::string flag;
+  /// The ordinary least-squares std s sqrt(diag((X'X)^-1)), same unit, when a method reports a
+  /// std that accounts for correlated residuals instead (idim: identify/covariance.hpp); a lower
+  /// bound when the residuals are coloured. Empty when the method has no such figure; NaN
+  /// exactly where `std` is NaN.
+  std::optional<double> std_ols;
 
   Parameter() = default;
   /// A law's parameter: no std, no axis yet.
