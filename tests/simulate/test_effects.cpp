@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "frictionlab/error.hpp"
 #include "frictionlab/plants/axis.hpp"
 #include "frictionlab/plants/velocity_drive.hpp"
 #include "frictionlab/simulate/simulate.hpp"
@@ -245,5 +246,44 @@ TEST(EffectsOptions, EnvironmentsMustMatchTheContacts) {
     FAIL();
   } catch (const std::invalid_argument& ex) {
     EXPECT_NE(std::string(ex.what()).find("tau"), std::string::npos) << ex.what();
+  }
+}
+
+TEST(LoadStiff, LuGreUnderLoadSlidesAtItsLoadedSteadyForce) {
+  // A velocity drive at 0.05 m/s through LuGre with mu_load 0.1 under 10 N: the force settles on
+  // the loaded law's steady-state (Stribeck) force, 1 + 1 (Fc') plus the decayed rise plus sigma2 v.
+  LawEffects e;
+  e.load = LoadDependence{0.1, 0.1};
+  const FrictionLaw law = FrictionLaw(LuGre{}).with_effects(e);
+  const VelocityDrive drive(VelocityDriveParams{0.0});
+  SimulationOptions o;
+  o.duration = 0.5;
+  o.environments = {load_of(constant(10.0))};
+  const Trajectory tr = simulate(drive, law, constant(0.05), o);
+  Conditions c;
+  c.load = 10.0;
+  const double steady = law.sliding(0.05, c);
+  EXPECT_NEAR(steady, 2.0 + 0.4 * 0.05, 1e-12);  // far past vs = 1 mm/s: Fc' + sigma2 v
+  constexpr double kRel = 1e-6;  // the bristle state after 25 mm of sliding (relaxation length Fc'/sigma0 = 20 um)
+  EXPECT_NEAR(tr.friction.back(), steady, kRel * steady);
+}
+
+TEST(ThermalHybrid, ARunThatHeatsPastTheLawsRangeStopsWithTheTypedError) {
+  // Viscous 1 N s/m at 2 m/s heats towards 20 + 4 * 10 = 60 degC; the law serves up to 40 degC.
+  LawEffects e;
+  e.temperature = TemperatureDependence{20.0, 0.0, -0.001, std::nullopt, 40.0};
+  const FrictionLaw law = FrictionLaw(Viscous{1.0}).with_effects(e);
+  const VelocityDrive drive(VelocityDriveParams{0.0});
+  SimulationOptions o;
+  o.duration = 100;
+  ContactEnvironment env;
+  env.thermal = ThermalModel{20.0, std::nullopt, 10.0, 10.0};
+  o.environments = {env};
+  try {
+    (void)simulate(drive, law, constant(2.0), o);
+    FAIL() << "the run went past T_max";
+  } catch (const InputError& ex) {
+    EXPECT_EQ(ex.code(), "law.parameter");
+    EXPECT_EQ(ex.fields().key, "T_max");
   }
 }
