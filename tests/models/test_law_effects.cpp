@@ -88,12 +88,14 @@ TEST(LoadEffect, ComposesWithEveryLawThatHasACoulombLevel) {
     const FrictionLaw law = FrictionLaw::from_spec(s);
     Conditions c;
     c.load = 10.0;  // raises every level by 1
+    // A difference of two forces of a few N, each a few roundings: well below 1e-12 N.
+    constexpr double kAbs = 1e-12;
     // Far past the Stribeck velocity the force rises by exactly the Coulomb rise.
-    EXPECT_NEAR(law.sliding(2.0, c) - plain.sliding(2.0), 1.0, 1e-12) << s.name;
-    EXPECT_NEAR(law.sliding(-2.0, c) - plain.sliding(-2.0), -1.0, 1e-12) << s.name;
+    EXPECT_NEAR(law.sliding(2.0, c) - plain.sliding(2.0), 1.0, kAbs) << s.name;
+    EXPECT_NEAR(law.sliding(-2.0, c) - plain.sliding(-2.0), -1.0, kAbs) << s.name;
     if (!law.is_dynamic()) {
-      EXPECT_NEAR(law.breakaway_positive(c) - plain.breakaway_positive(), 1.0, 1e-12) << s.name;
-      EXPECT_NEAR(law.breakaway_negative(c) - plain.breakaway_negative(), 1.0, 1e-12) << s.name;
+      EXPECT_NEAR(law.breakaway_positive(c) - plain.breakaway_positive(), 1.0, kAbs) << s.name;
+      EXPECT_NEAR(law.breakaway_negative(c) - plain.breakaway_negative(), 1.0, kAbs) << s.name;
     }
   }
 }
@@ -158,15 +160,17 @@ TEST(RippleEffect, AddsTheHarmonicsAndHoldsWhileTheRestWithinTheLevels) {
   const FrictionLaw law = FrictionLaw::from_spec(s);
   const double q = 0.0013, w = 2 * std::numbers::pi * q / 0.004;
   const double r = 0.2 * std::sin(w) + 0.05 * std::sin(2 * w) + 0.1 * std::cos(w);
-  EXPECT_NEAR(law.ripple(q), r, 1e-15);
-  EXPECT_NEAR(law.ripple(q + 0.004), r, 1e-13);  // periodic
+  constexpr double kAbs = 1e-15;        // N: the same sum of three terms, in another order at most
+  constexpr double kPeriodAbs = 1e-13;  // N: q + P rounds the phase by ~1e-16 of 2 pi, times the amplitudes
+  EXPECT_NEAR(law.ripple(q), r, kAbs);
+  EXPECT_NEAR(law.ripple(q + 0.004), r, kPeriodAbs);  // periodic
   Conditions c;
   c.position = q;
   // At rest: holds applied within r +- Fs, and is r + Fs beyond.
   EXPECT_EQ(law.force(0.0, r + 1.4, c), r + 1.4);
-  EXPECT_NEAR(law.force(0.0, r + 1.6, c), r + 1.5, 1e-15);
-  EXPECT_NEAR(law.force(0.0, r - 1.6, c), r - 1.5, 1e-15);
-  EXPECT_NEAR(law.force(0.5, 0.0, c), law.sliding(0.5) + r, 1e-15);
+  EXPECT_NEAR(law.force(0.0, r + 1.6, c), r + 1.5, kAbs);
+  EXPECT_NEAR(law.force(0.0, r - 1.6, c), r - 1.5, kAbs);
+  EXPECT_NEAR(law.force(0.5, 0.0, c), law.sliding(0.5) + r, kAbs);
   // Round trip of the file form.
   EXPECT_EQ(FrictionLaw::from_spec(law.to_spec()).ripple(q), law.ripple(q));
 }
@@ -179,9 +183,12 @@ TEST(RippleEffect, PotentialIsTheIntegralOfTheRipple) {
   const double h = q1 / n;
   double sum = r.force(0) + r.force(q1);
   for (int i = 1; i < n; ++i) sum += (i % 2 ? 4 : 2) * r.force(i * h);
-  EXPECT_NEAR(r.potential(q1), sum * h / 3, 1e-12);
-  // The slope is its derivative (central difference, h = 1e-7 of a 1e-2 period: error ~ 1e-9).
-  EXPECT_NEAR(r.slope(q1), (r.force(q1 + 1e-7) - r.force(q1 - 1e-7)) / 2e-7, 1e-6);
+  constexpr double kQuadratureAbs = 1e-12;  // J: the quadrature's error and roundoff on a 1e-3 J potential
+  EXPECT_NEAR(r.potential(q1), sum * h / 3, kQuadratureAbs);
+  // The slope is its derivative (central difference, h = 1e-7 of a 1e-2 period: truncation ~ 1e-9
+  // N/m, roundoff ~ 1e-16 / 1e-7 ~ 1e-9 N/m, against slopes of ~ 200 N/m).
+  constexpr double kDifferenceAbs = 1e-6;
+  EXPECT_NEAR(r.slope(q1), (r.force(q1 + 1e-7) - r.force(q1 - 1e-7)) / 2e-7, kDifferenceAbs);
 }
 
 TEST(EffectErrors, BadParametersAreRefusedWithTheirName) {
