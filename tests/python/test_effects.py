@@ -87,3 +87,10 @@ def test_scenario_with_a_falling_load_and_a_thermal_model(tmp_path):
     T = np.asarray(traj["temperature"])
     assert np.all(T[t < 3.0] == 20.0)  # no power while stuck
     assert T[-1] > 20.5  # sliding friction heats it
+
+
+def test_c_export_refuses_a_law_with_effects_instead_of_dropping_them():
+    with pytest.raises(fl.Error) as info:
+        fl.export_c({**STRIBECK, "mu_load": 0.05})
+    assert info.value.code == "law.parameter" and "effects" in str(info.value)
+    assert fl.export_c(STRIBECK).startswith("/* Friction law 'stribeck'")  # the plain law still exports
