@@ -37,6 +37,9 @@
 // | scenario.value         | a key whose value is of the wrong type or out of its range           | file, key, value |
 // | scenario.format        | a scenario or MODEL.json that cannot be parsed (YAML or JSON syntax, | file |
 // |                        | unreadable file)                                                      |        |
+// | law.parameter          | a friction law's load, temperature or ripple parameter out of its    | key, value |
+// |                        | range (key: the law file's parameter name; value: the value, or the  |        |
+// |                        | temperature at which a coefficient would turn negative)              |        |
 // | output.exists          | an output file that exists, without --overwrite                       | file, option |
 // | output.is_input        | an output that is one of the run's inputs (never replaced, even with | file, option, other_file, other_option |
 // |                        | --overwrite)                                                          |        |
@@ -84,6 +87,7 @@ inline constexpr const char* scenario_key_missing = "scenario.key_missing";
 inline constexpr const char* scenario_key_duplicate = "scenario.key_duplicate";
 inline constexpr const char* scenario_value = "scenario.value";
 inline constexpr const char* scenario_format = "scenario.format";
+inline constexpr const char* law_parameter = "law.parameter";
 inline constexpr const char* output_exists = "output.exists";
 inline constexpr const char* output_is_input = "output.is_input";
 inline constexpr const char* output_duplicate = "output.duplicate";

@@ -167,6 +167,52 @@ Raises ValueError naming the law and parameter for an unknown name, a missing or
       }, py::arg("v"), py::arg("dt"), py::arg("z0") = py::none(),
       "Fixed-step evaluation of a dynamic law over a velocity sequence v (m/s or rad/s, 1-D) at step dt (s): "
       "returns (force array in N or N m, final state in m or rad). Raises ValueError for a static law.")
+      .def_property_readonly("effects", [](const FrictionLaw& l) {
+        // The effect keys of to_dict(): the law's parameters left out.
+        LawSpec plain = l.without_effects().to_spec(), all = l.to_spec();
+        py::dict d;
+        for (const auto& [k, v] : all.scalars)
+          if (!plain.scalars.count(k)) d[py::str(k)] = v;
+        for (const auto& [k, v] : all.arrays)
+          if (!plain.arrays.count(k)) d[py::str(k)] = v;
+        return d;
+      }, "The law's load, temperature and ripple parameters (mu_load, T_ref, Fv_per_K, ripple_period, ripple_a, ...) "
+         "by name; empty for a plain velocity law.")
+      .def("sliding_at", [](const FrictionLaw& l, py::object v, double load, std::optional<double> temperature, double position) {
+        ArraySpec any;
+        any.min_size = 0;
+        any.any_shape = true;
+        const auto va = check_array(v, "FrictionLaw.sliding_at", "v", any);
+        Conditions c{load, temperature, position};
+        return py::vectorize([&](double x) { return l.sliding(x, c); })(va);
+      }, py::arg("v"), py::arg("load") = 0.0, py::arg("temperature") = py::none(), py::arg("position") = 0.0,
+      "Sliding force (N or N m) at velocity v (m/s or rad/s) with the levels moved to the load (N or N m; its "
+      "magnitude counts) and temperature (degC or K; None = T_ref); the ripple is not included (add ripple(q)). "
+      "Raises frictionlab.Error (code law.parameter) for a temperature that makes a coefficient negative.")
+      .def("breakaway_at", [](const FrictionLaw& l, double load, std::optional<double> temperature) {
+        Conditions c{load, temperature, 0.0};
+        return py::make_tuple(l.breakaway_positive(c), l.breakaway_negative(c));
+      }, py::arg("load") = 0.0, py::arg("temperature") = py::none(),
+      "(positive, negative) breakaway levels (N or N m) at the load (N or N m) and temperature (degC or K).")
+      .def("ripple", [](const FrictionLaw& l, py::object q) {
+        ArraySpec any;
+        any.min_size = 0;
+        any.any_shape = true;
+        const auto qa = check_array(q, "FrictionLaw.ripple", "q", any);
+        return py::vectorize([&](double x) { return l.ripple(x); })(qa);
+      }, py::arg("q"), "Position ripple force r(q) (N or N m) at positions q (m or rad); 0 without a ripple.")
+      .def("force_at", [](const FrictionLaw& l, py::object v, py::object applied, double load, std::optional<double> temperature,
+                          py::object position) {
+        ArraySpec any;
+        any.min_size = 0;
+        any.any_shape = true;
+        const auto va = check_array(v, "FrictionLaw.force_at", "v", any);
+        const auto aa = check_array(applied, "FrictionLaw.force_at", "applied", any);
+        const auto qa = check_array(position, "FrictionLaw.force_at", "position", any);
+        return py::vectorize([&](double x, double a, double q) { return l.force(x, a, Conditions{load, temperature, q}); })(va, aa, qa);
+      }, py::arg("v"), py::arg("applied"), py::arg("load") = 0.0, py::arg("temperature") = py::none(), py::arg("position") = 0.0,
+      "Static law's total friction (N or N m) with stiction at the conditions, ripple included: at v == 0 it balances "
+      "`applied` while applied - ripple(position) lies within the breakaway levels at that load and temperature.")
       .def("__eq__", [](const FrictionLaw& a, const FrictionLaw& b) {
         const LawSpec x = a.to_spec(), y = b.to_spec();
         return x.name == y.name && x.scalars == y.scalars && x.arrays == y.arrays && x.strings == y.strings;

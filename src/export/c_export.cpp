@@ -1,4 +1,5 @@
 #include "frictionlab/export/c_export.hpp"
+#include "frictionlab/error.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -583,6 +584,13 @@ std::string upper(std::string s) {
 
 std::string c_header(const FrictionLaw& law, const CExportOptions& options) {
   check_prefix(options.prefix);
+  // The C form has the velocity law only: a law whose levels move with load or temperature, or
+  // that carries a position ripple, is refused rather than exported without them.
+  if (law.has_effects())
+    throw InputError(errc::law_parameter,
+                     "export: law '" + law.name() +
+                         "' carries load, temperature or ripple effects, which the C header does not model; export the law without them",
+                     {.key = law.effects().load ? "mu_load" : law.effects().temperature ? "T_ref" : "ripple_period"});
   Writer w(options.prefix, options.single_precision);
   const std::string type = compensation_type(options.compensation);
   const std::string guard = upper(options.prefix) + "_FRICTION_H";

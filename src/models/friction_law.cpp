@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "frictionlab/error.hpp"
+
 namespace frictionlab {
 namespace {
 
@@ -112,8 +114,160 @@ std::vector<std::string> all_names(std::index_sequence<I...>) {
 
 }  // namespace
 
+namespace {
+// Takes the effects' keys out of `spec` (law_effects.hpp): what is left is the velocity law's.
+LawEffects take_effects(LawSpec& spec) {
+  LawEffects e;
+  auto take = [&](const char* key) -> std::optional<double> {
+    auto it = spec.scalars.find(key);
+    if (it == spec.scalars.end()) return std::nullopt;
+    const double v = it->second;
+    spec.scalars.erase(it);
+    return v;
+  };
+  auto take_list = [&](const char* key) -> std::optional<std::vector<double>> {
+    auto it = spec.arrays.find(key);
+    if (it == spec.arrays.end()) {
+      if (auto one = take(key)) return std::vector<double>{*one};  // one harmonic written as a number
+      return std::nullopt;
+    }
+    std::vector<double> v = std::move(it->second);
+    spec.arrays.erase(it);
+    return v;
+  };
+  auto refuse = [](const char* key, const std::string& why, std::optional<double> v = std::nullopt) {
+    throw InputError(errc::law_parameter, std::string(key) + ": " + why,
+                     {.key = key, .value = v ? detail::format_value(*v) : std::string()});
+  };
+  const auto mu = take("mu_load"), mu_s = take("mu_load_static"), mu_c = take("mu_load_coulomb");
+  if (mu && (mu_s || mu_c)) refuse("mu_load", "give mu_load alone (both levels) or mu_load_static with mu_load_coulomb, not both forms");
+  if (mu) {
+    if (!(std::isfinite(*mu) && *mu >= 0))
+      refuse("mu_load", detail::format_value(*mu) + " must be >= 0 (dimensionless: N of friction per N of load)", *mu);
+    e.load = LoadDependence{*mu, *mu};
+  } else if (mu_s || mu_c) {
+    if (!mu_s) refuse("mu_load_static", "missing: mu_load_coulomb needs mu_load_static (or give one mu_load for both levels)");
+    if (!mu_c) refuse("mu_load_coulomb", "missing: mu_load_static needs mu_load_coulomb (or give one mu_load for both levels)");
+    e.load = LoadDependence{*mu_s, *mu_c};
+  }
+  const auto T_ref = take("T_ref"), Fc_K = take("Fc_per_K"), Fv_K = take("Fv_per_K"), T_min = take("T_min"), T_max = take("T_max");
+  if (Fc_K || Fv_K || T_min || T_max || T_ref) {
+    if (!T_ref) refuse("T_ref", "missing: the temperature at which the law's Fc and Fv hold (degC or K) is needed with Fc_per_K, Fv_per_K, T_min, T_max");
+    if (!Fc_K && !Fv_K) refuse("Fv_per_K", "missing: T_ref needs Fv_per_K or Fc_per_K (the slopes per K)");
+    TemperatureDependence t;
+    t.T_ref = *T_ref;
+    t.Fc_per_K = Fc_K.value_or(0.0);
+    t.Fv_per_K = Fv_K.value_or(0.0);
+    t.T_min = T_min;
+    t.T_max = T_max;
+    e.temperature = t;
+  }
+  const auto P = take("ripple_period");
+  auto a = take_list("ripple_a"), b = take_list("ripple_b");
+  if (P || a || b) {
+    if (!P) refuse("ripple_period", "missing: the ripple's period P (m or rad) is needed with ripple_a, ripple_b");
+    PositionRipple r;
+    r.period = *P;
+    r.a = a.value_or(std::vector<double>{});
+    r.b = b.value_or(std::vector<double>{});
+    e.ripple = std::move(r);
+  }
+  return e;
+}
+
+void put_effects(const LawEffects& e, LawSpec& spec) {
+  if (e.load) {
+    if (e.load->mu_static == e.load->mu_coulomb) {
+      spec.scalars["mu_load"] = e.load->mu_static;
+    } else {
+      spec.scalars["mu_load_static"] = e.load->mu_static;
+      spec.scalars["mu_load_coulomb"] = e.load->mu_coulomb;
+    }
+  }
+  if (const auto& t = e.temperature) {
+    spec.scalars["T_ref"] = t->T_ref;
+    spec.scalars["Fc_per_K"] = t->Fc_per_K;
+    spec.scalars["Fv_per_K"] = t->Fv_per_K;
+    if (t->T_min) spec.scalars["T_min"] = *t->T_min;
+    if (t->T_max) spec.scalars["T_max"] = *t->T_max;
+  }
+  if (const auto& r = e.ripple) {
+    spec.scalars["ripple_period"] = r->period;
+    if (!r->a.empty()) spec.arrays["ripple_a"] = r->a;
+    if (!r->b.empty()) spec.arrays["ripple_b"] = r->b;
+  }
+}
+}  // namespace
+
 FrictionLaw FrictionLaw::from_spec(const LawSpec& spec) {
-  return from_name<Variant>(spec, std::make_index_sequence<std::variant_size_v<Variant>>());
+  LawSpec plain = spec;
+  const LawEffects effects = take_effects(plain);
+  FrictionLaw law = from_name<Variant>(plain, std::make_index_sequence<std::variant_size_v<Variant>>());
+  if (effects.empty()) return law;
+  try {
+    return law.with_effects(effects);
+  } catch (const InputError& e) {
+    // "stribeck: mu_load: ..." as the law's own messages read
+    throw InputError(e.code(), law.name() + ": " + e.what(), e.fields());
+  }
+}
+
+FrictionLaw FrictionLaw::with_effects(LawEffects effects) const {
+  std::visit([&](const auto& law) { check_effects(law, effects, law_name<std::decay_t<decltype(law)>>()); }, law_);
+  FrictionLaw out = *this;
+  out.effects_ = std::move(effects);
+  return out;
+}
+
+FrictionLaw FrictionLaw::without_effects() const {
+  FrictionLaw out = *this;
+  out.effects_ = LawEffects{};
+  return out;
+}
+
+double FrictionLaw::sliding(double v, const Conditions& c) const {
+  if (!effects_.moves_levels()) return sliding(v);
+  return std::visit(
+      [&](const auto& plain) -> double {
+        using Law = std::decay_t<decltype(plain)>;
+        const Law law = at_conditions(plain, effects_, c);
+        if constexpr (kIsDynamic<Law>) {
+          std::vector<double> z(static_cast<std::size_t>(law.num_states()));
+          law.steady_state(v, z);
+          return law.force(std::span<const double>(z), v);
+        } else {
+          return law.sliding(v);
+        }
+      },
+      law_);
+}
+
+double FrictionLaw::breakaway_positive(const Conditions& c) const {
+  if (!effects_.moves_levels()) return breakaway_positive();
+  return std::visit(
+      [&](const auto& plain) -> double {
+        using Law = std::decay_t<decltype(plain)>;
+        if constexpr (kIsDynamic<Law>) {
+          return 0.0;
+        } else {
+          return at_conditions(plain, effects_, c).breakaway_positive();
+        }
+      },
+      law_);
+}
+
+double FrictionLaw::breakaway_negative(const Conditions& c) const {
+  if (!effects_.moves_levels()) return breakaway_negative();
+  return std::visit(
+      [&](const auto& plain) -> double {
+        using Law = std::decay_t<decltype(plain)>;
+        if constexpr (kIsDynamic<Law>) {
+          return 0.0;
+        } else {
+          return at_conditions(plain, effects_, c).breakaway_negative();
+        }
+      },
+      law_);
 }
 
 const std::vector<std::string>& FrictionLaw::names() {
@@ -125,6 +279,7 @@ LawSpec FrictionLaw::to_spec() const {
   LawSpec spec;
   spec.name = name();
   for (const auto& p : parameters()) spec.scalars[p.name] = p.value;
+  put_effects(effects_, spec);
   std::visit(
       [&](const auto& law) {
         using Law = std::decay_t<decltype(law)>;
@@ -280,6 +435,60 @@ void FrictionLaw::steady_state(double v, std::span<double> z) const {
           law.steady_state(v, z);
         } else {
           wrong_kind(*this, "steady_state(v, z)");
+        }
+      },
+      law_);
+}
+
+double FrictionLaw::force(double v, double applied, const Conditions& c) const {
+  const double r = ripple(c.position);
+  return std::visit(
+             [&](const auto& plain) -> double {
+               using Law = std::decay_t<decltype(plain)>;
+               if constexpr (kIsDynamic<Law>) {
+                 wrong_kind(*this, "force(v, applied, conditions)");
+               } else {
+                 return friction_force(at_conditions(plain, effects_, c), v, applied - r);
+               }
+             },
+             law_) +
+         r;
+}
+
+void FrictionLaw::derivative(std::span<const double> z, double v, std::span<double> dz, const Conditions& c) const {
+  if (!effects_.moves_levels()) return derivative(z, v, dz);
+  std::visit(
+      [&](const auto& plain) {
+        if constexpr (kIsDynamic<std::decay_t<decltype(plain)>>) {
+          at_conditions(plain, effects_, c).derivative(z, v, dz);
+        } else {
+          wrong_kind(*this, "derivative(z, v, dz, conditions)");
+        }
+      },
+      law_);
+}
+
+double FrictionLaw::force(std::span<const double> z, double v, const Conditions& c) const {
+  if (!effects_.moves_levels()) return force(z, v);
+  return std::visit(
+      [&](const auto& plain) -> double {
+        if constexpr (kIsDynamic<std::decay_t<decltype(plain)>>) {
+          return at_conditions(plain, effects_, c).force(z, v);
+        } else {
+          wrong_kind(*this, "force(z, v, conditions)");
+        }
+      },
+      law_);
+}
+
+double FrictionLaw::step(std::span<double> z, double v, double dt, const Conditions& c) const {
+  if (!effects_.moves_levels()) return step(z, v, dt);
+  return std::visit(
+      [&](const auto& plain) -> double {
+        if constexpr (kIsDynamic<std::decay_t<decltype(plain)>>) {
+          return at_conditions(plain, effects_, c).step(z, v, dt);
+        } else {
+          wrong_kind(*this, "step(z, v, dt, conditions)");
         }
       },
       law_);

@@ -11,6 +11,24 @@
 #include "yaml_keys.hpp"
 
 namespace frictionlab {
+namespace {
+// FrictionLaw::from_spec with its messages prefixed by `where`; an effect's parameter error
+// (law.parameter, keyed by the bare parameter name) gets the file and the section's dotted key.
+FrictionLaw build_law(const LawSpec& spec, const std::string& where) {
+  return detail::with_context(where, [&] {
+    try {
+      return FrictionLaw::from_spec(spec);
+    } catch (const InputError& e) {
+      if (std::string(e.code()) != errc::law_parameter) throw;
+      ErrorFields f = e.fields();
+      const ErrorFields at = detail::key_fields(where, f.key);
+      f.file = at.file;
+      f.key = at.key;
+      throw InputError(e.code(), e.what(), f);
+    }
+  });
+}
+}  // namespace
 
 FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
   if (!node || !node.IsMap())
@@ -62,7 +80,7 @@ FrictionLaw law_from_yaml(const YAML::Node& node, const std::string& where) {
   if (spec.name.empty())
     throw InputError(errc::scenario_key_missing, where + ": missing 'law' (one of the friction law names, e.g. stribeck)",
                      detail::key_fields(where, "law"));
-  return detail::with_context(where, [&] { return FrictionLaw::from_spec(spec); });
+  return build_law(spec, where);
 }
 
 FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
@@ -104,7 +122,7 @@ FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
                        detail::key_fields(where, key));
     }
   }
-  return detail::with_context(where, [&] { return FrictionLaw::from_spec(spec); });
+  return build_law(spec, where);
 }
 
 nlohmann::json read_model_json(const std::string& path) {

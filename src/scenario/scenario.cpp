@@ -16,6 +16,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "frictionlab/control/compensation_spec.hpp"
 #include "frictionlab/error.hpp"
@@ -775,6 +776,65 @@ double positive(const Section& s, const std::string& key, double fallback, const
   return v;
 }
 
+// environment: {load: INPUT | {type: gravity, m, l, g, phase}, temperature: T | thermal: {T_ambient,
+// T0, tau, R}} (simulate/environment.hpp): the conditions of a one-contact plant's friction.
+ContactEnvironment read_environment(const Section& s, DataSource& src) {
+  s.allow({"load", "temperature", "thermal"});
+  ContactEnvironment env;
+  if (s.has("load")) {
+    const Section ls(s.node("load"), s.at("load"));
+    if (ls.text("type", "") == "gravity") {
+      // A joint's gravity load m g l cos(q + phase) (N m; l = 1 m gives the weight's share in N).
+      ls.allow({"type", "m", "l", "g", "phase"});
+      const double m = ls.number("m"), l = ls.number("l", 1.0), g = ls.number("g", 9.81), phase = ls.number("phase", 0.0);
+      for (const auto& [key, v] : {std::pair<const char*, double>{"m", m}, {"l", l}, {"g", g}, {"phase", phase}})
+        if (!std::isfinite(v) || (std::string(key) != "phase" && v < 0))
+          throw InputError(errc::scenario_value, ls.at(key) + ": " + detail::format_value(v) + " must be " +
+                               (std::string(key) == "phase" ? "finite (rad)" : ">= 0 (kg, m, m/s^2)"),
+                           ls.fields(key, detail::format_value(v)));
+      env.load.of_state = [w = m * g * l, phase](double, std::span<const double> x) { return w * std::cos(x[0] + phase); };
+    } else {
+      const std::string type = ls.text("type", "");
+      bool known = false;
+      for (const auto& r : kInputReaders) known = known || type == r.first;
+      if (!known)
+        throw InputError(type.empty() ? errc::scenario_key_missing : errc::scenario_value,
+                         ls.at("type") + ": " + (type.empty() ? "missing" : "unknown load type '" + type + "'") +
+                             "; valid load types: " + names_of(kInputReaders) + ", gravity",
+                         ls.fields("type", type));
+      // Any input type; a data column here must not become the run's data input (its duration).
+      const auto step = src.data_step;
+      const auto time = src.time_column;
+      env.load.signal = read_input(ls, src);
+      src.data_step = step;
+      src.time_column = time;
+    }
+  }
+  if (s.has("temperature") && s.has("thermal"))
+    throw InputError(errc::scenario_value, s.at("thermal") + ": give a fixed 'temperature' or a 'thermal' model, not both",
+                     s.fields("thermal"));
+  if (s.has("temperature")) env.temperature = s.number("temperature");
+  if (s.has("thermal")) {
+    const Section ts(s.node("thermal"), s.at("thermal"));
+    ts.allow({"T_ambient", "T0", "tau", "R"});
+    ThermalModel th;
+    th.T_ambient = ts.number("T_ambient", th.T_ambient);
+    if (ts.has("T0")) th.T0 = ts.number("T0");
+    for (const auto& [key, unit, field] : {std::tuple<const char*, const char*, double*>{"tau", "s", &th.tau}, {"R", "K/W", &th.R}}) {
+      *field = ts.number(key);
+      if (!(std::isfinite(*field) && *field > 0))
+        throw InputError(errc::scenario_value, ts.at(key) + ": " + detail::format_value(*field) + " must be > 0 (" + unit + ")",
+                         ts.fields(key, detail::format_value(*field)));
+    }
+    env.thermal = th;
+  }
+  detail::with_context(s.path(), [&] {
+    env.validate();
+    return 0;
+  });
+  return env;
+}
+
 }  // namespace
 
 InputSignal input_from_column(const Dataset& data, const std::string& time_column, const std::string& column,
@@ -815,7 +875,7 @@ namespace {
 Scenario read_scenario(const YAML::Node& root, const std::string& where, const ScenarioOptions& options) {
   const Section top(root, where);
   top.allow({"description", "data", "plant", "friction", "input", "controller", "duration", "output_rate", "solver",
-             "initial"});
+             "initial", "environment"});
   auto section = [&](const char* key) {
     if (!top.has(key)) throw InputError(errc::scenario_key_missing, where + ": missing '" + key + "'", detail::key_fields(where, key));
     return Section(root[key], where + ": " + key);
@@ -865,6 +925,31 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
     cc.files_read = options.files_read;
     cc.law = [&] { return sc.law; };
     sc.plant = choose(cs, "type", "pid", kControllerReaders, "controller type", "")(cs, src, sc.plant, cc);
+  }
+  if (top.has("environment")) {
+    const Section es = section("environment");
+    if (sc.plant->num_contacts() != 1)
+      throw InputError(errc::scenario_value,
+                       es.path() + ": the " + sc.plant->type() + " has " + std::to_string(sc.plant->num_contacts()) +
+                           " contacts; an environment serves a one-contact plant",
+                       detail::key_fields(es.path()));
+    sc.options.environments = {read_environment(es, src)};
+    // The temperatures the run starts at must lie in the law's range (it would stop at t = 0).
+    const ContactEnvironment& env = sc.options.environments[0];
+    const std::optional<double> T0 = env.temperature ? env.temperature
+                                     : env.thermal  ? std::optional<double>(env.thermal->T0.value_or(env.thermal->T_ambient))
+                                                    : std::nullopt;
+    if (T0) {
+      const char* key = env.temperature ? "temperature" : "thermal";
+      try {
+        Conditions c;
+        c.temperature = *T0;
+        (void)sc.law.sliding(1.0, c);
+      } catch (const InputError& e) {
+        throw InputError(e.code(), es.at(key) + ": " + e.what() + " (the temperature the run starts at)",
+                         es.fields(key, detail::format_value(*T0)));
+      }
+    }
   }
   // Top-level values: messages as "FILE: duration: ..." to match the key path style.
   SimulationOptions& o = sc.options;

@@ -21,6 +21,7 @@
 #include <exception>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
@@ -61,8 +62,13 @@ std::string format_bytes(double bytes) {
 
 namespace {
 
+// A static law that holds a stuck contact at some condition: a breakaway level > 0 at T_ref and no
+// load, or levels that a load or a temperature can raise above 0.
 bool has_stiction(const FrictionLaw& law) {
-  return !law.is_dynamic() && (law.breakaway_positive() > 0.0 || law.breakaway_negative() > 0.0);
+  if (law.is_dynamic()) return false;
+  if (law.breakaway_positive() > 0.0 || law.breakaway_negative() > 0.0) return true;
+  const LawEffects& e = law.effects();
+  return (e.load && e.load->mu_static > 0) || (e.temperature && e.temperature->Fc_per_K != 0);
 }
 
 void check_options(const SimulationOptions& o, SolverMode mode) {
@@ -163,6 +169,11 @@ class Engine {
       b.nz = dynamic ? b.law->num_states() : 0;
       b.z = z;
       z += b.nz;
+      if (!o.environments.empty()) {
+        b.env = &o.environments[static_cast<std::size_t>(k)];
+        if (b.env->empty()) b.env = nullptr;
+      }
+      b.cond = b.env != nullptr || b.law->has_effects();
       b.fbp = dynamic ? 0.0 : b.law->breakaway_positive();
       b.fbn = dynamic ? 0.0 : b.law->breakaway_negative();
       // Hybrid modes only where stiction exists and the velocity is not imposed.
@@ -170,8 +181,12 @@ class Engine {
       hybrid_ = hybrid_ || b.hybrid;
       bodies_.push_back(b);
     }
+    // Thermal states after every law state: one per contact with a thermal model.
+    for (Body& b : bodies_)
+      if (b.env && b.env->thermal) b.temp = z++;
     n_ = z;
     nz_ = n_ - np_;
+    for (const Body& b : bodies_) any_cond_ = any_cond_ || b.cond;
     nroots_ = (hybrid_ ? 2 * nc_ : 0) + ne_;
     scratch_.assign(static_cast<std::size_t>(n_), 0.0);
     y_row_.assign(static_cast<std::size_t>(n_), 0.0);
@@ -181,7 +196,9 @@ class Engine {
         std::all_of(inputs.begin(), inputs.end(), [](const InputSignal& in) { return in.shape == InputShape::constant; });
     if (constant_inputs_)
       for (std::size_t i = 0; i < u_.size(); ++i) u_[i] = inputs[i].at(0.0);
-    one_ = single_ != nullptr && nc_ == 1 && inputs.size() == 1;
+    // Contacts with conditions take the general paths (one_ false): the 1-DOF forms know no load,
+    // temperature or ripple.
+    one_ = single_ != nullptr && nc_ == 1 && inputs.size() == 1 && !any_cond_;
     force_.assign(static_cast<std::size_t>(nc_), 0.0);
     friction_.assign(static_cast<std::size_t>(nc_), 0.0);
     signals_.assign(static_cast<std::size_t>(nc_), PlantSignals{});
@@ -196,7 +213,7 @@ class Engine {
       if (!motion) extras_.push_back(i);
     }
     sample_period_ = plant.sample_period();
-    if (nz_ > 0 && all_dynamic && mode != SolverMode::fixed_step) {
+    if (nz_ > 0 && all_dynamic && !any_cond_ && mode != SolverMode::fixed_step) {
       system_.emplace(plant, law);
       if (!system_->has_jacobian()) system_.reset();
     }
@@ -244,6 +261,9 @@ class Engine {
     bool hybrid = false;   // has stuck/sliding modes
     Mode mode = Mode::free;
     double stuck_position = 0.0;
+    const ContactEnvironment* env = nullptr;  // its load and temperature, or null
+    bool cond = false;     // its friction depends on conditions (effects or an environment)
+    int temp = -1;         // state index of its temperature (thermal model), or -1
   };
 
   static ContactColumns& column_set(Trajectory& tr, int k) {
@@ -316,6 +336,27 @@ class Engine {
     // 1e-300 is far below any velocity scale (vs, dv, table points), so this is the limit value.
     return b.law->sliding(s * 1e-300);
   }
+  // The same at conditions c, the law's part only (no ripple).
+  static double slide_force(const Body& b, double v, int s, const Conditions& c) {
+    return b.law->sliding(v * s > 0 ? v : s * 1e-300, c);
+  }
+
+  // The conditions of body b at time t, effective plant state x and integrator state y: its
+  // position, its load (the environment's source; 0 without) and its temperature (its thermal
+  // state, the environment's fixed value, or none = the law's T_ref).
+  Conditions conditions(const Body& b, double t, std::span<const double> x, const double* y) const {
+    Conditions c;
+    c.position = x[static_cast<std::size_t>(b.pos)];
+    if (b.env) {
+      c.load = b.env->load.at(t, x);
+      if (b.temp >= 0) {
+        c.temperature = y[b.temp];
+      } else {
+        c.temperature = b.env->temperature;
+      }
+    }
+    return c;
+  }
 
   // The effective plant state: y itself, or a copy in scratch_ with the frozen positions and zero
   // velocities of stuck bodies, or the imposed velocity of a velocity drive. Inputs evaluated.
@@ -337,7 +378,8 @@ class Engine {
 
   // Friction on body b at effective state x (y for law states); force_ holds the applied forces
   // when a body is stuck.
-  [[gnu::always_inline]] double friction_of(const Body& b, std::span<const double> x, const double* y) const {
+  [[gnu::always_inline]] double friction_of(const Body& b, double t, std::span<const double> x, const double* y) const {
+    if (b.cond) return friction_with_conditions(b, t, x, y);
     const double v = x[static_cast<std::size_t>(b.vel)];
     switch (b.mode) {
       case Mode::stuck: return force_[static_cast<std::size_t>(&b - bodies_.data())];
@@ -347,6 +389,33 @@ class Engine {
     }
     if (b.nz > 0) return b.law->force(std::span<const double>(y + b.z, static_cast<std::size_t>(b.nz)), v);
     return b.law->sliding(v);
+  }
+
+  // friction_of for a body with conditions: the law at its conditions plus the ripple at its
+  // position (a stuck body's friction is the applied force, which includes the ripple's share).
+  double friction_with_conditions(const Body& b, double t, std::span<const double> x, const double* y) const {
+    const double v = x[static_cast<std::size_t>(b.vel)];
+    if (b.mode == Mode::stuck) return force_[static_cast<std::size_t>(&b - bodies_.data())];
+    const Conditions c = conditions(b, t, x, y);
+    const double r = b.law->ripple(c.position);
+    switch (b.mode) {
+      case Mode::slide_pos: return slide_force(b, v, 1, c) + r;
+      case Mode::slide_neg: return slide_force(b, v, -1, c) + r;
+      default: break;
+    }
+    if (b.nz > 0) return b.law->force(std::span<const double>(y + b.z, static_cast<std::size_t>(b.nz)), v, c) + r;
+    return b.law->sliding(v, c) + r;
+  }
+
+  // The breakaway levels of body b (positive, negative) at time t and effective state x.
+  std::pair<double, double> levels(const Body& b, double t, std::span<const double> x, const double* y) const {
+    if (!b.cond) return {b.fbp, b.fbn};
+    const Conditions c = conditions(b, t, x, y);
+    return {b.law->breakaway_positive(c), b.law->breakaway_negative(c)};
+  }
+  // The ripple force on body b at effective state x (0 without a ripple).
+  double ripple_of(const Body& b, std::span<const double> x) const {
+    return b.cond ? b.law->ripple(x[static_cast<std::size_t>(b.pos)]) : 0.0;
   }
 
   // Calls f(std::true_type{}) for a 1-DOF plant, else f(std::false_type{}): picks the compiled
@@ -369,7 +438,7 @@ class Engine {
     const auto x = effective_state<One>(y);
     std::span<double> dx(dy, static_cast<std::size_t>(np_));
     if (stuck_count_ > 0) plant_applied<One>(t, x);
-    for (std::size_t k = 0; k < contacts<One>(); ++k) friction_[k] = friction_of(bodies_[k], x, y);
+    for (std::size_t k = 0; k < contacts<One>(); ++k) friction_[k] = friction_of(bodies_[k], t, x, y);
     plant_derivatives<One>(t, x, dx);
     for (std::size_t k = 0; k < contacts<One>(); ++k) {
       const Body& b = bodies_[k];
@@ -377,8 +446,19 @@ class Engine {
         dx[static_cast<std::size_t>(b.pos)] = 0.0;
         dx[static_cast<std::size_t>(b.vel)] = 0.0;
       } else if (b.nz > 0) {
-        b.law->derivative(std::span<const double>(y + b.z, static_cast<std::size_t>(b.nz)), x[static_cast<std::size_t>(b.vel)],
-                          std::span<double>(dy + b.z, static_cast<std::size_t>(b.nz)));
+        const std::span<const double> z(y + b.z, static_cast<std::size_t>(b.nz));
+        const std::span<double> dz(dy + b.z, static_cast<std::size_t>(b.nz));
+        if (b.cond) {
+          b.law->derivative(z, x[static_cast<std::size_t>(b.vel)], dz, conditions(b, t, x, y));
+        } else {
+          b.law->derivative(z, x[static_cast<std::size_t>(b.vel)], dz);
+        }
+      }
+      if (b.temp >= 0) {
+        // Heated by the velocity law's power (the ripple's share is conservative); 0 while stuck.
+        const double v = b.mode == Mode::stuck ? 0.0 : x[static_cast<std::size_t>(b.vel)];
+        const double P = (friction_[k] - ripple_of(b, x)) * v;
+        dy[b.temp] = b.env->thermal->rate(y[b.temp], P);
       }
     }
   }
@@ -406,7 +486,13 @@ class Engine {
       if (stuck_count_ > 0) plant_applied<One>(t, x);
       for (std::size_t k = 0; k < contacts<One>(); ++k) {
         const Body& b = bodies_[k];
-        if (b.mode == Mode::stuck) {
+        if (b.mode == Mode::stuck && b.cond) {
+          // The levels at the current load and temperature, against the applied force less the ripple.
+          const auto [fbp, fbn] = levels(b, t, x, y);
+          const double a = force_[k] - ripple_of(b, x);
+          g[2 * k] = a - fbp;
+          g[2 * k + 1] = a + fbn;
+        } else if (b.mode == Mode::stuck) {
           g[2 * k] = force_[k] - b.fbp;
           g[2 * k + 1] = force_[k] + b.fbn;
         } else {
@@ -528,13 +614,22 @@ class Engine {
     tr.time.push_back(t);
     for (std::size_t k = 0; k < bodies_.size(); ++k) {
       const Body& b = bodies_[k];
-      const double f = friction_of(b, x, y);
+      const double f = friction_of(b, t, x, y);
       double a = force_[k];
       PlantSignals& s = signals_[k];
       if (kinematic_) a += f, s.drive += f;  // the drive supplies the friction too
       push_row(column_set(tr, static_cast<int>(k)), x[static_cast<std::size_t>(b.pos)], x[static_cast<std::size_t>(b.vel)], f, a,
                s, b.mode == Mode::stuck ? 1.0 : 0.0, y + b.z, b.nz);
+      if (b.env) push_conditions(column_set(tr, static_cast<int>(k)), b, t, x, y);
     }
+  }
+
+  // The load and temperature columns of a body with an environment.
+  void push_conditions(ContactColumns& c, const Body& b, double t, std::span<const double> x, const double* y) const {
+    const Conditions cond = conditions(b, t, x, y);
+    c.load.push_back(cond.load);
+    const auto& te = b.law->effects().temperature;
+    c.temperature.push_back(cond.temperature ? *cond.temperature : te ? te->T_ref : std::numeric_limits<double>::quiet_NaN());
   }
 
   static void push_row(ContactColumns& c, double position, double velocity, double friction, double applied,
@@ -582,10 +677,18 @@ class Engine {
     Body& b = bodies_[k];
     if (from_stuck) y[b.pos] = b.stuck_position;
     const double a = applied_at_rest(k, t, y);
+    // A body with conditions: its levels at the load and temperature now, against the applied
+    // force less the ripple at its position (scratch_ holds the state at rest).
+    double fbp = b.fbp, fbn = b.fbn, push = a;
+    if (b.cond) {
+      const std::span<const double> xr(scratch_.data(), static_cast<std::size_t>(np_));
+      std::tie(fbp, fbn) = levels(b, t, xr, y);
+      push = a - ripple_of(b, xr);
+    }
     Mode next;
-    if (a > b.fbp) {
+    if (push > fbp) {
       next = Mode::slide_pos;
-    } else if (a < -b.fbn) {
+    } else if (push < -fbn) {
       next = Mode::slide_neg;
     } else {
       next = Mode::stuck;
@@ -664,6 +767,8 @@ class Engine {
     eval_inputs(0.0);
     if (kinematic_) y[1] = u_[0].value;
     plant_.initial_extras(std::span<double>(y, static_cast<std::size_t>(np_)), u_);
+    for (const Body& b : bodies_)
+      if (b.temp >= 0) y[b.temp] = b.env->thermal->T0.value_or(b.env->thermal->T_ambient);
   }
 
   void run_cvode(Trajectory& tr, std::size_t rows) {
@@ -689,6 +794,9 @@ class Engine {
       if (!(scale > 0)) scale = 1.0;
       for (int i = b.z; i < b.z + b.nz; ++i) atol[i] = o_.atol * scale;
     }
+    // A temperature resolved as finely, relative to its size, as a position of 1 m.
+    for (const Body& b : bodies_)
+      if (b.temp >= 0) atol[b.temp] = o_.atol * std::max(1.0, std::abs(b.env->thermal->T_ambient));
 
     if (sample_period_ > 0) {
       eval_inputs(0.0);
@@ -729,6 +837,9 @@ class Engine {
     double hmax = o_.max_step;
     for (const InputSignal& in : inputs_)
       if (in.max_step() > 0) hmax = hmax > 0 ? std::min(hmax, in.max_step()) : in.max_step();
+    for (const Body& b : bodies_)
+      if (b.env && b.env->load.signal && b.env->load.signal->max_step() > 0)
+        hmax = hmax > 0 ? std::min(hmax, b.env->load.signal->max_step()) : b.env->load.signal->max_step();
     if (hmax > 0) CVodeSetMaxStep(sd_.mem, hmax);
     if (nroots_ > 0) {
       if (CVodeRootInit(sd_.mem, nroots_, &Engine::roots_cb) != CV_SUCCESS) fail(0.0, "CVodeRootInit: " + error_);
@@ -824,6 +935,9 @@ class Engine {
     std::vector<std::pair<double, char>> all;
     for (const InputSignal& in : inputs_)
       for (double c : in.breakpoints(0.0, o_.duration)) all.emplace_back(c, 0);
+    for (const Body& b : bodies_)  // a load's corners (steps of a load profile) too
+      if (b.env && b.env->load.signal)
+        for (double c : b.env->load.signal->breakpoints(0.0, o_.duration)) all.emplace_back(c, 0);
     if (sample_period_ > 0) {
       for (long k = 1;; ++k) {
         const double ts = static_cast<double>(k) * sample_period_;  // same product as a table built as k * dt
@@ -946,7 +1060,14 @@ class Engine {
         for (std::size_t c = 0; c < bodies_.size(); ++c) {
           const Body& b = bodies_[c];
           const double v = x[static_cast<std::size_t>(b.vel)];
-          if (b.nz > 0) {
+          if (b.cond) {
+            const Conditions cd = conditions(b, t, x, y.data());
+            const double r = b.law->ripple(cd.position);
+            friction_[c] = b.nz > 0 ? b.law->step(std::span<double>(y.data() + b.z, static_cast<std::size_t>(b.nz)), v, dt, cd) + r
+                                    : b.law->force(v, force_[c], cd);  // ripple included
+            if (b.temp >= 0)  // explicit Euler, as the plant's other states
+              y[static_cast<std::size_t>(b.temp)] += dt * b.env->thermal->rate(y[static_cast<std::size_t>(b.temp)], (friction_[c] - r) * v);
+          } else if (b.nz > 0) {
             // the law's exact update at constant v over the sample
             friction_[c] = b.law->step(std::span<double>(y.data() + b.z, static_cast<std::size_t>(b.nz)), v, dt);
           } else {
@@ -993,13 +1114,22 @@ class Engine {
       for (std::size_t c = 0; c < bodies_.size(); ++c) {
         const Body& b = bodies_[c];
         const double v = x[static_cast<std::size_t>(b.vel)];
-        const double f = b.nz > 0 ? b.law->force(std::span<const double>(y.data() + b.z, static_cast<std::size_t>(b.nz)), v)
-                                  : b.law->force(v, force_[c]);
+        double f;
+        if (b.cond) {
+          const Conditions cd = conditions(b, t, x, y.data());
+          f = b.nz > 0 ? b.law->force(std::span<const double>(y.data() + b.z, static_cast<std::size_t>(b.nz)), v, cd) +
+                             b.law->ripple(cd.position)
+                       : b.law->force(v, force_[c], cd);
+        } else {
+          f = b.nz > 0 ? b.law->force(std::span<const double>(y.data() + b.z, static_cast<std::size_t>(b.nz)), v)
+                       : b.law->force(v, force_[c]);
+        }
         double a = force_[c];
         PlantSignals& s = signals_[c];
         if (kinematic_) a += f, s.drive += f;
         push_row(column_set(tr, static_cast<int>(c)), x[static_cast<std::size_t>(b.pos)], v, f, a, s,
                  v == 0.0 && !kinematic_ && b.nz == 0 ? 1.0 : 0.0, y.data() + b.z, b.nz);
+        if (b.env) push_conditions(column_set(tr, static_cast<int>(c)), b, t, x, y.data());
       }
     }
     tr.stats.steps = step;
@@ -1019,6 +1149,7 @@ class Engine {
   std::vector<int> extras_;  // plant states that are no contact's position or velocity
   int stuck_count_ = 0;      // bodies in Mode::stuck
   bool hybrid_ = false;      // some body has hybrid modes
+  bool any_cond_ = false;    // some body's friction depends on conditions (load, temperature, ripple)
   bool kinematic_ = false;   // the plant imposes the velocity (plant_.kinematic(), asked once)
   double sample_period_ = 0.0;  // s; > 0 for a plant with a sampled controller
   std::vector<InputValue> u_;       // the inputs at the time being evaluated
@@ -1121,6 +1252,12 @@ Trajectory simulate(const Plant& plant, const FrictionLaw& law, std::span<const 
       throw std::invalid_argument("simulation option initial_" + std::string(list == &options.initial_positions ? "positions" : "velocities") +
                                   " has " + std::to_string(list->size()) + " entries; plant '" + plant.type() + "' has " +
                                   std::to_string(nc) + " contacts");
+  if (!options.environments.empty()) {
+    if (options.environments.size() != nc)
+      throw std::invalid_argument("simulation option environments has " + std::to_string(options.environments.size()) +
+                                  " entries; plant '" + plant.type() + "' has " + std::to_string(nc) + " contacts");
+    for (const ContactEnvironment& e : options.environments) e.validate();
+  }
   int extra_columns = 9 * static_cast<int>(nc - 1);  // other contacts' columns, then the law states
   for (const FrictionLaw* l : laws) extra_columns += l->is_dynamic() ? l->num_states() : 0;
   check_output_size(options, extra_columns);

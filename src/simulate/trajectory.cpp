@@ -43,7 +43,12 @@ const std::vector<std::string>& Trajectory::column_names() {
 }
 
 std::vector<std::string> Trajectory::names() const {
-  if (single(*this)) return column_names();
+  if (single(*this)) {
+    std::vector<std::string> out = column_names();
+    if (!load.empty()) out.push_back("load");
+    if (!temperature.empty()) out.push_back("temperature");
+    return out;
+  }
   std::vector<std::string> out{"time"};
   for (const auto& c : contact_names)
     for (const char* n : kContactNames) out.push_back(c + "." + n);
@@ -55,6 +60,8 @@ const std::vector<double>& Trajectory::column(std::string_view name) const {
   if (single(*this)) {
     for (std::size_t k = 0; k < kContactColumns.size(); ++k)
       if (name == kContactNames[k]) return this->*kContactColumns[k];
+    if (name == "load" && !load.empty()) return load;
+    if (name == "temperature" && !temperature.empty()) return temperature;
   } else {
     for (std::size_t c = 0; c < contact_names.size(); ++c) {
       const std::string& prefix = contact_names[c];
@@ -75,6 +82,10 @@ std::string Trajectory::to_csv() const {
   std::vector<const std::vector<double>*> cols{&time};
   for (int c = 0; c < num_contacts(); ++c)
     for (std::size_t k = 0; k < per_contact; ++k) cols.push_back(&(contact(c).*kContactColumns[k]));
+  if (one) {
+    if (!load.empty()) cols.push_back(&load);
+    if (!temperature.empty()) cols.push_back(&temperature);
+  }
   const auto header = names();
   std::string out;
   out.reserve(rows() * cols.size() * 14 + 16 * cols.size());

@@ -62,6 +62,12 @@ def array_calls(idim_ok, emps, source_dir):
                               {"v": WAVE, "applied": WAVE}, set()),
         "FrictionLaw.step": (lambda **a: fl.FrictionLaw({"law": "dahl", "sigma0": 1e5, "Fc": 1.0}).step(**a, dt=1e-3),
                              {"v": WAVE}, set()),
+        "FrictionLaw.sliding_at": (lambda **a: fl.FrictionLaw({"law": "coulomb", "Fc": 1.0, "mu_load": 0.1}).sliding_at(**a, load=2.0),
+                                   {"v": WAVE}, set()),
+        "FrictionLaw.ripple": (lambda **a: fl.FrictionLaw({"law": "coulomb", "Fc": 1.0, "ripple_period": 1.0, "ripple_a": [0.1]}).ripple(**a),
+                               {"q": WAVE}, set()),
+        "FrictionLaw.force_at": (lambda **a: fl.FrictionLaw({"law": "coulomb", "Fc": 1.0, "ripple_period": 1.0, "ripple_a": [0.1]}).force_at(**a),
+                                 {"v": WAVE, "applied": WAVE, "position": WAVE}, set()),
     }
 
 
@@ -91,7 +97,8 @@ def test_every_public_name_is_covered():
     # FrictionLaw's public methods that take arrays are covered too.
     law_methods = {m for m in dir(fl.FrictionLaw) if not m.startswith("_")
                    and callable(getattr(fl.FrictionLaw, m))}
-    assert law_methods <= {"sliding", "force", "step", "units", "to_dict"}, law_methods
+    # breakaway_at takes two numbers (load, temperature), no arrays.
+    assert law_methods <= {"sliding", "force", "step", "units", "to_dict", "sliding_at", "ripple", "force_at", "breakaway_at"}, law_methods
 
 
 def hostile_values(valid):
@@ -133,7 +140,8 @@ def test_array_arguments_are_checked(idim_ok, emps, source_dir):
                     continue
                 if fname.startswith("FrictionLaw.") and label == "empty":
                     continue  # element-wise: an empty array gives an empty answer
-                if fname in ("FrictionLaw.sliding", "FrictionLaw.force") and label == "2-D":
+                if fname in ("FrictionLaw.sliding", "FrictionLaw.force", "FrictionLaw.sliding_at", "FrictionLaw.ripple",
+                             "FrictionLaw.force_at") and label == "2-D":
                     continue  # element-wise: any shape
                 kwargs = dict(valid, **{arg: bad})
                 try:

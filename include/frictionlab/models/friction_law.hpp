@@ -17,6 +17,7 @@
 #include "frictionlab/models/elastoplastic.hpp"
 #include "frictionlab/models/gms.hpp"
 #include "frictionlab/models/karnopp.hpp"
+#include "frictionlab/models/law_effects.hpp"
 #include "frictionlab/models/lugre.hpp"
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/models/smooth.hpp"
@@ -30,7 +31,10 @@
 namespace frictionlab FRICTIONLAB_API {
 
 /// A law as written in a file: its name and named values. Scalars are parameters (SI units);
-/// arrays serve `table` (velocity, force) and `gms` (k, alpha); strings serve `smooth` (shape).
+/// arrays serve `table` (velocity, force), `gms` (k, alpha) and the ripple (ripple_a, ripple_b);
+/// strings serve `smooth` (shape). The effects' keys (mu_load, mu_load_static, mu_load_coulomb,
+/// T_ref, Fc_per_K, Fv_per_K, T_min, T_max, ripple_period, ripple_a, ripple_b; see
+/// law_effects.hpp) may accompany any law's own parameters.
 struct LawSpec {
   std::string name;
   std::map<std::string, double> scalars;
@@ -95,8 +99,38 @@ class FrictionLaw {
 
   const Variant& variant() const { return law_; }
 
+  // Load, temperature and position effects (law_effects.hpp), composed with the velocity law.
+  /// The effects this law carries (empty() for a plain velocity law).
+  const LawEffects& effects() const { return effects_; }
+  bool has_effects() const { return !effects_.empty(); }
+  /// This law with `effects` (replacing any it had).
+  /// \throws InputError (law.parameter) naming the effect's parameter when the law lacks what an
+  ///         effect moves, or an effect's parameter breaks its rule (see check_effects).
+  FrictionLaw with_effects(LawEffects effects) const;
+  /// The velocity law alone, without effects.
+  FrictionLaw without_effects() const;
+
+  /// The conditioned calls: the law with its levels moved to `c` (load, temperature). The ripple
+  /// r(c.position) is NOT included except in force(v, applied, c); add ripple(q) for the total.
+  /// Without effects they equal the plain calls. \throws InputError (law.parameter) when the
+  /// temperature makes a coefficient negative or leaves [T_min, T_max].
+  double sliding(double v, const Conditions& c) const;
+  double breakaway_positive(const Conditions& c) const;
+  double breakaway_negative(const Conditions& c) const;
+  /// The ripple force r(q) (N or N m) at position q (m or rad); 0 without a ripple.
+  double ripple(double q) const { return effects_.ripple_force(q); }
+  /// Total friction of a static law at conditions c, ripple included (N or N m): sliding(v, c) +
+  /// r(q) for v != 0; at v == 0 it balances `applied` while -breakaway_negative(c) <= applied - r(q)
+  /// <= breakaway_positive(c), else it is r(q) plus the level opposing the push.
+  double force(double v, double applied, const Conditions& c) const;
+  void derivative(std::span<const double> z, double v, std::span<double> dz, const Conditions& c) const;
+  /// Dynamic law's force at conditions c, ripple not included (N or N m).
+  double force(std::span<const double> z, double v, const Conditions& c) const;
+  double step(std::span<double> z, double v, double dt, const Conditions& c) const;
+
  private:
   Variant law_;
+  LawEffects effects_;
 };
 
 }  // namespace frictionlab

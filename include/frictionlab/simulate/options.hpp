@@ -3,6 +3,8 @@
 
 #include <vector>
 
+#include "frictionlab/simulate/environment.hpp"
+
 #include "frictionlab/export.hpp"
 namespace frictionlab FRICTIONLAB_API {
 
@@ -58,6 +60,10 @@ struct SimulationOptions {
   double max_step = 0.0;
   /// Largest number of CVODE steps in the whole run before it gives up (runtime_error). Default 10^7.
   long max_steps = 10'000'000;
+  /// The load and temperature each contact works at (environment.hpp), for laws with load or
+  /// temperature effects: empty (default) = none (load 0, the laws' T_ref); else one entry per
+  /// contact. A contact with an environment records its load and temperature columns.
+  std::vector<ContactEnvironment> environments;
 };
 
 /// Name of a solver mode as in scenario files ("auto", "hybrid", "stiff", "fixed-step").

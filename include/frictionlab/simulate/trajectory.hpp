@@ -60,6 +60,10 @@ struct ContactColumns {
   /// Dynamic laws: law_state[i] is the column of internal state i (m or rad: bristle or element
   /// deflections); empty for static laws. Not part of the CSV.
   std::vector<std::vector<double>> law_state;
+  /// Contacts with an environment (SimulationOptions::environments): the load F_load (N or N m)
+  /// and the temperature (degC or K; the law's T_ref when none is given) at each row; empty
+  /// otherwise. Part of a 1-DOF plant's CSV (after stuck) when not empty.
+  std::vector<double> load, temperature;
 };
 
 /// Sampled simulation result. Its own ContactColumns are contact 0's (a 1-DOF plant's only
@@ -80,7 +84,8 @@ struct Trajectory : ContactColumns {
   /// Columns of contact i (0 <= i < num_contacts()). \throws std::out_of_range otherwise.
   const ContactColumns& contact(int i) const;
   /// A 1-DOF trajectory's column names in CSV order: time, position, velocity, friction, applied,
-  /// current, voltage, reference, stuck.
+  /// current, voltage, reference, stuck (names() adds load, temperature for a contact with an
+  /// environment).
   static const std::vector<std::string>& column_names();
   /// This trajectory's column names in CSV order: column_names() when its plant has one unnamed
   /// contact; otherwise time, then for each contact NAME.position, NAME.velocity, NAME.friction,
