@@ -505,13 +505,42 @@ void attach_law(Result& r, const IdimOptions& o, double vs) {
                                      "model, not a stribeck law that can be simulated");
     return;
   }
-  try {
-    FrictionLaw::from_spec(spec);
-    r.law = spec;
-    if (r.model == "idim-custom" && r.find("M") != nullptr && !o.extra_terms.size()) r.model = spec.name;
-  } catch (const std::invalid_argument& e) {
-    r.diagnostics.warnings.push_back(std::string("the estimates do not make a valid friction law to simulate: ") + e.what());
+  // The terms of the conditions are the law's effects (models/law_effects.hpp): a load-dependent
+  // level, a temperature-dependent viscous coefficient about T_ref, a position ripple. load_gain
+  // is the load itself acting on the axis, not friction: it stays a parameter.
+  LawSpec with_effects = spec;
+  if (has("mu_load")) with_effects.scalars["mu_load"] = val("mu_load");
+  if (has("Fv_per_K")) {
+    with_effects.scalars["T_ref"] = o.temperature_ref;
+    with_effects.scalars["Fv_per_K"] = val("Fv_per_K");
   }
+  if (has("ripple_sin_1")) {
+    with_effects.scalars["ripple_period"] = o.ripple_period;
+    for (int h = 1; h <= o.ripple_harmonics; ++h) {
+      with_effects.arrays["ripple_a"].push_back(val(("ripple_sin_" + std::to_string(h)).c_str()));
+      with_effects.arrays["ripple_b"].push_back(val(("ripple_cos_" + std::to_string(h)).c_str()));
+    }
+  }
+  const bool effects = with_effects.scalars.size() != spec.scalars.size();
+  try {
+    FrictionLaw::from_spec(with_effects);
+    r.law = with_effects;
+  } catch (const std::invalid_argument& e) {
+    if (!effects) {
+      r.diagnostics.warnings.push_back(std::string("the estimates do not make a valid friction law to simulate: ") + e.what());
+      return;
+    }
+    try {  // the velocity law alone, the conditions left to the parameters
+      FrictionLaw::from_spec(spec);
+      r.law = spec;
+      r.diagnostics.warnings.push_back(std::string("the law is attached without the load, temperature and ripple "
+                                                   "terms, which do not make valid effects of it: ") + e.what());
+    } catch (const std::invalid_argument& e2) {
+      r.diagnostics.warnings.push_back(std::string("the estimates do not make a valid friction law to simulate: ") + e2.what());
+      return;
+    }
+  }
+  if (r.model == "idim-custom" && r.find("M") != nullptr && !o.extra_terms.size()) r.model = spec.name;
 }
 
 Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, double dt, IdimWorkspace& workspace,
@@ -659,14 +688,16 @@ namespace {
 // without the ripple), and a viscous coefficient that the temperature term turns negative
 // within the log's temperature range.
 void describe_conditions(Result& r, const IdimData& data, const IdimOptions& o) {
-  std::vector<std::string> left;
-  if (asks_for(o, "load")) left.push_back("at zero load (mu_load |load| adds to Fc)");
+  std::vector<std::string> carried;
+  if (asks_for(o, "load")) carried.push_back("its levels grow by mu_load |load| (load_gain, the load acting on the axis, is not friction)");
   if (asks_for(o, "temperature"))
-    left.push_back("at T_ref = " + detail::format_value(o.temperature_ref, 6) + " (Fv_per_K (T - T_ref) adds to Fv)");
-  if (asks_for(o, "ripple")) left.push_back("without the position ripple (ripple_sin_k, ripple_cos_k)");
-  if (left.empty()) return;
-  std::string text = "the law is the friction ";
-  for (std::size_t i = 0; i < left.size(); ++i) text += (i ? ", " : "") + left[i];
+    carried.push_back("its viscous coefficient is Fv + Fv_per_K (T - T_ref), T_ref = " + detail::format_value(o.temperature_ref, 6));
+  if (asks_for(o, "ripple")) carried.push_back("the position ripple ripple_a, ripple_b over ripple_period adds to it");
+  if (carried.empty()) return;
+  const bool with_effects = r.law && (r.law->scalars.count("mu_load") || r.law->scalars.count("T_ref") ||
+                                      r.law->scalars.count("ripple_period"));
+  std::string text = with_effects ? "the law carries the conditions: " : "the law leaves the conditions to the parameters: ";
+  for (std::size_t i = 0; i < carried.size(); ++i) text += (i ? "; " : "") + carried[i];
   r.diagnostics.texts["law_conditions"] = text;
   if (asks_for(o, "temperature") && r.find("Fv") != nullptr) {
     const double fv = r.value("Fv"), per_k = r.value("Fv_per_K");

@@ -242,32 +242,29 @@ double FrictionLaw::sliding(double v, const Conditions& c) const {
       law_);
 }
 
-double FrictionLaw::breakaway_positive(const Conditions& c) const {
-  if (!effects_.moves_levels()) return breakaway_positive();
+namespace {
+// A static law's breakaway level (`level`: its breakaway_positive or breakaway_negative) with its
+// levels moved to the conditions; 0 for a dynamic law, whose bristles hold no level.
+template <class Level>
+double breakaway_at(const FrictionLaw::Variant& law, const LawEffects& effects, const Conditions& c, Level level) {
   return std::visit(
       [&](const auto& plain) -> double {
         using Law = std::decay_t<decltype(plain)>;
-        if constexpr (kIsDynamic<Law>) {
-          return 0.0;
-        } else {
-          return at_conditions(plain, effects_, c).breakaway_positive();
-        }
+        if constexpr (kIsDynamic<Law>) return 0.0;
+        else return level(at_conditions(plain, effects, c));
       },
-      law_);
+      law);
+}
+}  // namespace
+
+double FrictionLaw::breakaway_positive(const Conditions& c) const {
+  if (!effects_.moves_levels()) return breakaway_positive();
+  return breakaway_at(law_, effects_, c, [](const auto& law) { return law.breakaway_positive(); });
 }
 
 double FrictionLaw::breakaway_negative(const Conditions& c) const {
   if (!effects_.moves_levels()) return breakaway_negative();
-  return std::visit(
-      [&](const auto& plain) -> double {
-        using Law = std::decay_t<decltype(plain)>;
-        if constexpr (kIsDynamic<Law>) {
-          return 0.0;
-        } else {
-          return at_conditions(plain, effects_, c).breakaway_negative();
-        }
-      },
-      law_);
+  return breakaway_at(law_, effects_, c, [](const auto& law) { return law.breakaway_negative(); });
 }
 
 const std::vector<std::string>& FrictionLaw::names() {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "error_message.hpp"
 #include "frictionlab/identify/idim.hpp"
@@ -92,7 +93,16 @@ TEST(IdimConditions, RecoversLoadTemperatureAndRipple) {
   for (const auto& w : r.diagnostics.warnings) EXPECT_EQ(w.find("Fv_per_K"), std::string::npos) << w;
   EXPECT_EQ(r.diagnostics.numbers.at("temperature_ref"), p.T_ref);
   EXPECT_EQ(r.diagnostics.numbers.at("ripple_period"), p.period);
-  EXPECT_NE(r.diagnostics.texts.at("law_conditions").find("at zero load"), std::string::npos);
+  // The attached law carries the conditions as its effects, ready to simulate (docs/laws.md).
+  ASSERT_TRUE(r.law.has_value());
+  EXPECT_EQ(r.law->scalars.at("mu_load"), r.value("mu_load"));
+  EXPECT_EQ(r.law->scalars.at("Fv_per_K"), r.value("Fv_per_K"));
+  EXPECT_EQ(r.law->scalars.at("T_ref"), p.T_ref);
+  EXPECT_EQ(r.law->scalars.at("ripple_period"), p.period);
+  EXPECT_EQ(r.law->arrays.at("ripple_a"), std::vector<double>{r.value("ripple_sin_1")});
+  EXPECT_EQ(r.law->arrays.at("ripple_b"), std::vector<double>{r.value("ripple_cos_1")});
+  EXPECT_EQ(r.law->scalars.count("load_gain"), 0u);  // the load acting on the axis is not friction
+  EXPECT_NE(r.diagnostics.texts.at("law_conditions").find("the law carries the conditions"), std::string::npos);
 }
 
 TEST(IdimConditions, ReferenceTemperatureDefaultsToTheMeanAndMovesFvOnly) {
