@@ -563,7 +563,7 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
   for (std::size_t i = 0; i < candidates.size(); ++i)
     if (i != *chosen && !candidates[i].refused())
       runners += (runners.empty() ? "" : ", ") + candidates[i].name + " " + percent(candidates[i].heldout_error_percent);
-  std::string choice = best.name + ": the lowest held-out error, " + percent(best.heldout_error_percent) + " (" +
+  std::string choice = best.name + ": the simplest structure within one standard error of the lowest held-out error; its error " + percent(best.heldout_error_percent) + " (" +
                        judged + "; training error " + percent(best.training_error_percent) + ")";
   if (!runners.empty()) choice += "; runners-up: " + runners;
   if (best.method == sweep.name)

@@ -1,6 +1,7 @@
 #include "frictionlab/identify/selection.hpp"
 
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -109,12 +110,31 @@ std::string physical_refusal(const Result& r) {
   return "";
 }
 
-std::optional<std::size_t> select_candidate(const std::vector<SelectionCandidate>& candidates) {
+double heldout_standard_error(const SelectionCandidate& c) {
+  const auto& e = c.block_errors_percent;
+  if (e.size() < 2) return 0.0;
+  double mean = 0;
+  for (double x : e) mean += x;
+  mean /= static_cast<double>(e.size());
+  double ss = 0;
+  for (double x : e) ss += (x - mean) * (x - mean);
+  return std::sqrt(ss / static_cast<double>(e.size() - 1)) / std::sqrt(static_cast<double>(e.size()));
+}
+
+std::optional<std::size_t> select_candidate(const std::vector<SelectionCandidate>& candidates,
+                                            double min_relative_margin) {
   std::optional<std::size_t> best;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const auto& c = candidates[i];
     if (c.refused() || !std::isfinite(c.heldout_error_percent)) continue;
     if (!best || c.heldout_error_percent < candidates[*best].heldout_error_percent) best = i;
+  }
+  if (!best) return best;
+  const double e = candidates[*best].heldout_error_percent;
+  const double limit = e + std::max(heldout_standard_error(candidates[*best]), min_relative_margin * e);
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const auto& c = candidates[i];
+    if (!c.refused() && std::isfinite(c.heldout_error_percent) && c.heldout_error_percent <= limit) return i;
   }
   return best;
 }

@@ -56,24 +56,43 @@ TEST(Selection, HeldOutErrorDecidesNotTrainingError) {
       for (int d = 1; d <= kDegree; ++d) flexible(i, d) = std::pow(2.0 * t - 1.0, d);
       y(i) = 2.0 * x + noise(gen);
     }
+    // The flexible structure listed first, so that the choice cannot come from the order.
     std::vector<SelectionCandidate> c(2);
-    c[0].name = "simple";
-    c[1].name = "flexible";
+    c[0].name = "flexible";
+    c[1].name = "simple";
     const auto train = [&](const Eigen::MatrixXd& X) {
       const Eigen::VectorXd th = X.colPivHouseholderQr().solve(y);
       return 100.0 * (y - X * th).norm() / y.norm();
     };
-    c[0].training_error_percent = train(simple);
-    c[1].training_error_percent = train(flexible);
+    c[0].training_error_percent = train(flexible);
+    c[1].training_error_percent = train(simple);
     const auto blocks = contiguous_blocks(kN, 4);
-    c[0].heldout_error_percent = linear_heldout_errors(simple, y, blocks).relative_error_percent();
-    c[1].heldout_error_percent = linear_heldout_errors(flexible, y, blocks).relative_error_percent();
-    EXPECT_LT(c[1].training_error_percent, c[0].training_error_percent) << "seed " << seed;
-    EXPECT_GT(c[1].heldout_error_percent, c[0].heldout_error_percent) << "seed " << seed;
+    const HeldOutErrors hf = linear_heldout_errors(flexible, y, blocks), hs = linear_heldout_errors(simple, y, blocks);
+    c[0].heldout_error_percent = hf.relative_error_percent();
+    c[0].block_errors_percent = hf.block_errors_percent();
+    c[1].heldout_error_percent = hs.relative_error_percent();
+    c[1].block_errors_percent = hs.block_errors_percent();
+    EXPECT_LT(c[0].training_error_percent, c[1].training_error_percent) << "seed " << seed;
+    EXPECT_GT(c[0].heldout_error_percent, c[1].heldout_error_percent) << "seed " << seed;
     const auto chosen = select_candidate(c);
     ASSERT_TRUE(chosen.has_value());
-    EXPECT_EQ(*chosen, 0u) << "seed " << seed;
+    EXPECT_EQ(*chosen, 1u) << "seed " << seed;
   }
+}
+
+// Within one standard error of the best, the candidate listed first (the simpler) is chosen; a
+// clearly better one (beyond its standard error) wins.
+TEST(Selection, OneStandardErrorRulePrefersTheSimplerStructure) {
+  std::vector<SelectionCandidate> c(2);
+  c[0].heldout_error_percent = 1.41;
+  c[0].block_errors_percent = {1.3, 1.5, 1.4, 1.44};
+  c[1].heldout_error_percent = 1.405;  // better by a tenth of its standard error
+  c[1].block_errors_percent = {1.2, 1.6, 1.4, 1.42};
+  EXPECT_EQ(select_candidate(c), std::optional<std::size_t>(0));
+  c[1].heldout_error_percent = 1.0;  // better by several standard errors
+  c[1].block_errors_percent = {0.98, 1.02, 1.0, 1.0};
+  EXPECT_EQ(select_candidate(c), std::optional<std::size_t>(1));
+  EXPECT_GT(heldout_standard_error(c[0]), 0.0);
 }
 
 Result with(std::initializer_list<std::pair<const char*, double>> params) {

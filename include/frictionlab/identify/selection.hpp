@@ -70,10 +70,20 @@ struct SelectionCandidate {
   bool refused() const { return !refusal.empty(); }
 };
 
-/// The index of the candidate that is not refused and has the lowest held-out error (ties: the
-/// first, i.e. the simpler structure when candidates are listed simplest first); nullopt when
-/// every candidate is refused or none has a finite held-out error.
-std::optional<std::size_t> select_candidate(const std::vector<SelectionCandidate>& candidates);
+/// Standard error of a candidate's held-out error, percent: the standard deviation of its block
+/// errors over sqrt(blocks); 0 with fewer than two blocks (a second record).
+double heldout_standard_error(const SelectionCandidate& candidate);
+
+/// The candidate to answer with, by the one-standard-error rule (Hastie, Tibshirani, Friedman,
+/// The Elements of Statistical Learning, 2nd ed., sec. 7.10): among the candidates that are not
+/// refused and have a finite held-out error, the lowest error e* (its standard error s*) sets a
+/// limit e* + max(s*, min_relative_margin e*), and the first candidate in the list within it is
+/// chosen. So list candidates simplest first: a more flexible structure is chosen only when it
+/// predicts held-out data clearly better, never for a better fit of its own data. Default margin
+/// 0.01 (differences below 1 % of the error are ties: what the second decimal of a percentage
+/// says). nullopt when every candidate is refused or none has a finite held-out error.
+std::optional<std::size_t> select_candidate(const std::vector<SelectionCandidate>& candidates,
+                                            double min_relative_margin = 0.01);
 
 /// The candidates as a JSON array (text), one object each, in the given order: name, method,
 /// structure, status ("chosen", "runner-up", "refused"), heldout_error_percent,
