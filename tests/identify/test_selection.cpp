@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <Eigen/QR>
 #include <cmath>
 #include <random>
 #include <stdexcept>
