@@ -559,6 +559,16 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
     return r;
   }
   const SelectionCandidate& best = candidates[*chosen];
+  if (options.heldout) {  // the chosen candidate's error on the second record, as idim's cross-test
+    ValidationFigures v;
+    v.file = options.heldout->file;
+    v.sha256 = options.heldout->sha256;
+    v.relative_error_percent = best.heldout_error_percent;
+    v.samples = second_cv ? static_cast<std::size_t>(second_cv->y.size()) : 0;
+    if (second_cv && second_cv->y.size() > 0)
+      v.rmse = best.heldout_error_percent / 100.0 * second_cv->y.norm() / std::sqrt(static_cast<double>(second_cv->y.size()));
+    r.validation = v;
+  }
   std::string runners;
   for (std::size_t i = 0; i < candidates.size(); ++i)
     if (i != *chosen && !candidates[i].refused())

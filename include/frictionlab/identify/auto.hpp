@@ -65,7 +65,8 @@ AutoOptions make_auto_options(const OptionValues& values);
 /// "candidate N" (each one: held-out and training error, status, the refusal reason);
 /// diagnostics.lists["selection"] one record per candidate (candidate, heldout_error_percent,
 /// training_error_percent, chosen, refused, block_N_percent); json_sections["selection"] the same
-/// with names and reasons (selection_json). Status error naming each candidate's refusal when
+/// with names and reasons (selection_json); with options.heldout, `validation` holds the chosen
+/// candidate's error on the second record (samples in motion). Status error naming each candidate's refusal when
 /// none can be chosen.
 /// \throws std::invalid_argument for bad data, as identify_idim (naming the file), or folds < 2.
 Result identify_auto(const IdimData& data, const AutoOptions& options = {});
