@@ -13,7 +13,7 @@ const std::vector<CliMethod>& cli_methods() {
     std::vector<CliMethod> all;
 #define FRICTIONLAB_CLI_METHOD(method)             \
   all.push_back(method##_method());                \
-  all.back().info = &method_info(MethodId::method); \
+  all.back().info = &method_info(MethodId::FRICTIONLAB_METHOD_ENUM(method)); \
   all.back().name = all.back().info->name;
     FRICTIONLAB_METHODS(FRICTIONLAB_CLI_METHOD)
 #undef FRICTIONLAB_CLI_METHOD

@@ -15,7 +15,7 @@ const std::vector<MethodInfo>& identification_methods() {
 #define FRICTIONLAB_METHOD_INFO(method)        \
   all.push_back(detail::method##_method_info()); \
   all.back().name = #method;                     \
-  all.back().id = MethodId::method;
+  all.back().id = MethodId::FRICTIONLAB_METHOD_ENUM(method);
     FRICTIONLAB_METHODS(FRICTIONLAB_METHOD_INFO)
 #undef FRICTIONLAB_METHOD_INFO
     return all;

@@ -24,7 +24,7 @@ namespace {
 using testing::error_of;
 
 TEST(Options, RegistryHoldsEveryMethodOnceInItsOrder) {
-  const std::vector<std::string> want = {"idim", "breakaway", "sweep", "decay", "lugre", "validate"};
+  const std::vector<std::string> want = {"idim", "breakaway", "sweep", "decay", "lugre", "auto", "validate"};
   ASSERT_EQ(identification_methods().size(), want.size());
   for (std::size_t i = 0; i < want.size(); ++i) {
     const MethodInfo& m = identification_methods()[i];
@@ -39,6 +39,7 @@ TEST(Options, RegistryHoldsEveryMethodOnceInItsOrder) {
       for (const auto& old : o.deprecated_keywords) EXPECT_TRUE(keywords.insert(old).second) << old;
     }
   }
+  EXPECT_EQ(method_info(MethodId::automatic).name, "auto");  // a keyword as a name: its enumerator is spelled out
   EXPECT_EQ(method_info(MethodId::sweep).name, "sweep");
 }
 

@@ -43,6 +43,7 @@ def array_calls(idim_ok, emps, source_dir):
         "cross_test": (lambda **a: fl.cross_test(idim_ok, **a), tfp, {"position"}),
         "idim_reconstruction": (lambda **a: fl.idim_reconstruction(idim_ok, **a), tfp, {"time", "position"}),
         "identify_breakaway": (fl.identify_breakaway, tfv, set()),
+        "identify_auto": (fl.identify_auto, tfp, {"position"}),
         "identify_sweep": (fl.identify_sweep, tfv, set()),
         "sweep_points": (fl.sweep_points, tfv, set()),
         "identify_decay": (fl.identify_decay, {"time": T, "position": WAVE}, set()),
@@ -81,7 +82,7 @@ NO_ARRAYS = {"ArgumentTypeError", "Error", "BreakawayOptions", "ContourResult", 
              "FitFigures", "IdimOptions", "Parameter", "Result", "StaticFit", "StaticFitOptions", "StickSlipOptions",
              "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__", "law_names", "methods", "Data",
              "Scenario", "FrictionLaw"}
-ARRAY_FUNCTIONS = {"identify_idim", "idim_regression", "cross_test", "idim_reconstruction", "identify_breakaway",
+ARRAY_FUNCTIONS = {"identify_idim", "identify_auto", "idim_regression", "cross_test", "idim_reconstruction", "identify_breakaway",
                    "identify_sweep", "sweep_points", "identify_decay", "identify_lugre", "fit_static_law",
                    "decay_envelope", "detect_stick_slip", "validate", "validate_xy", "analyze_contour"}
 

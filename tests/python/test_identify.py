@@ -290,3 +290,28 @@ def test_idim_load_temperature_and_ripple_terms():
         fl.identify_idim(t, force, q, terms=["inertia", "viscous", "coulomb", "load"])
     with pytest.raises(ValueError, match=r"time \(30001 samples\) and load \(10 samples\) differ in length"):
         fl.identify_idim(t, force, q, load=load[:10], terms=["inertia", "load"])
+
+
+# identify_auto on a Coulomb-viscous trajectory without noise but for a 10 mN force quantum:
+# the model is right, so the estimates land within what the filtering and decimation leave
+# (tenths of a percent); 2 % flags a wrong choice or a wrong fit.
+AUTO_REL_TOL = 2e-2
+
+
+def test_identify_auto_chooses_by_held_out_error():
+    t = np.arange(0, 20, 1e-3)
+    w = 2 * np.pi * np.array([0.3, 0.7, 1.3])
+    q = 0.02 * (np.sin(w[0] * t) + 0.5 * np.sin(w[1] * t) + 0.3 * np.sin(w[2] * t))
+    v = 0.02 * (w[0] * np.cos(w[0] * t) + 0.5 * w[1] * np.cos(w[1] * t) + 0.3 * w[2] * np.cos(w[2] * t))
+    a = -0.02 * (w[0] ** 2 * np.sin(w[0] * t) + 0.5 * w[1] ** 2 * np.sin(w[1] * t) + 0.3 * w[2] ** 2 * np.sin(w[2] * t))
+    force = np.round((2.0 * a + 3.0 * np.sign(v) + 20.0 * v) / 0.01) * 0.01
+    r = fl.identify_auto(t, force, position=q, folds=4)
+    assert r.ok, r.message
+    j = json.loads(r.to_json())
+    assert j["method"] == "auto"
+    chosen = [c for c in r.selection if c["status"] == "chosen"]
+    assert len(chosen) == 1 and len(r.selection) >= 3, r.selection
+    assert math.isclose(r.value("Fc" if "Fc" in j["parameters"] else "Fc_pos"), 3.0, rel_tol=AUTO_REL_TOL)
+    assert math.isclose(r.value("Fv" if "Fv" in j["parameters"] else "Fv_pos"), 20.0, rel_tol=AUTO_REL_TOL)
+    with pytest.raises(ValueError, match="folds"):
+        fl.identify_auto(t, force, position=q, folds=1)

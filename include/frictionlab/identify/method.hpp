@@ -28,21 +28,29 @@
   X(sweep)                     \
   X(decay)                     \
   X(lugre)                     \
+  X(auto)                      \
   X(validate)
+
+/// The MethodId enumerator of a registered name: the name itself, except for a name that is a C++
+/// keyword (auto), whose enumerator is spelled out (MethodId::automatic).
+#define FRICTIONLAB_METHOD_ENUM_auto ~, automatic,
+#define FRICTIONLAB_METHOD_SECOND_(a, b, ...) b
+#define FRICTIONLAB_METHOD_SECOND(...) FRICTIONLAB_METHOD_SECOND_(__VA_ARGS__)
+#define FRICTIONLAB_METHOD_ENUM(name) FRICTIONLAB_METHOD_SECOND(FRICTIONLAB_METHOD_ENUM_##name, name, ~)
 
 #include "frictionlab/export.hpp"
 namespace frictionlab FRICTIONLAB_API {
 
 /// A method by its registration (FRICTIONLAB_METHODS): MethodId::sweep.
 enum class MethodId {
-#define FRICTIONLAB_METHOD_ID(name) name,
+#define FRICTIONLAB_METHOD_ID(name) FRICTIONLAB_METHOD_ENUM(name),
   FRICTIONLAB_METHODS(FRICTIONLAB_METHOD_ID)
 #undef FRICTIONLAB_METHOD_ID
 };
 
 /// One identification method (or validation) of the library.
 struct MethodInfo {
-  std::string name;     ///< "idim", "sweep", "breakaway", "decay", "lugre", "validate"
+  std::string name;     ///< "idim", "sweep", "breakaway", "decay", "lugre", "auto", "validate"
   std::string summary;  ///< one line for reports, e.g. "inverse dynamic model least squares"
   /// The signal the fit figures (relative error, rmse) are computed on, in words ("drive force",
   /// "energy lost per half cycle", "position"); empty when there is no single one (validate

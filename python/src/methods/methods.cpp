@@ -11,7 +11,7 @@ const std::vector<PyMethod>& py_methods() {
     std::vector<PyMethod> all;
 #define FRICTIONLAB_PY_METHOD(method) \
   all.push_back(method##_binding());  \
-  all.back().name = method_info(MethodId::method).name;
+  all.back().name = method_info(MethodId::FRICTIONLAB_METHOD_ENUM(method)).name;
     FRICTIONLAB_METHODS(FRICTIONLAB_PY_METHOD)
 #undef FRICTIONLAB_PY_METHOD
     return all;

@@ -1,0 +1,76 @@
+// frictionlab identify auto: model selection on held-out data: what experiment the record holds,
+// every candidate structure it supports (the inverse dynamic model's term sets, a sweep's laws
+// when it has plateaus), and the one with the lowest held-out drive-force error: options, run,
+// figures (measured and reconstructed force; the candidates' held-out errors).
+#include "../figure_kit.hpp"
+#include "../flag_names.hpp"
+#include "frictionlab/identify/auto.hpp"
+#include "method.hpp"
+
+namespace frictionlab::cli {
+namespace {
+
+IdimData record(const Dataset& d, const DataOptions& c, const std::string& from) {
+  IdimData x;
+  x.time = time_column(d, c);
+  const bool use_velocity =
+      from == "velocity" || (from.empty() && c.velocity_opt->count() > 0 && c.position_opt->count() == 0);
+  if (use_velocity) x.velocity = velocity_column(d, c);
+  else x.position = position_column(d, c);
+  x.force = force_column(d, c);
+  x.file = d.file;
+  x.sha256 = d.sha256;
+  return x;
+}
+
+Result run(const MethodIO& io, const OptionValues& options) {
+  AutoOptions o = make_auto_options(options);
+  o.axis = io.columns.parsed_axis();
+  const std::string from = options.text("from");
+  const Dataset d = load_data(io.data, io.columns);
+  const IdimData data = record(d, io.columns, from);
+  if (options.given("validate")) o.heldout = record(load_data(options.text("validate"), io.columns), io.columns, from);
+  Result r = identify_auto(data, o);
+  note_data(r, d);
+  name_flags(r);
+  return r;
+}
+
+Figure fit_figure(const Result& r) {
+  Figure f;
+  f.title = title_for(r, "Chosen model (" + r.model + "): measured and reconstructed " + force_name(r.axis));
+  const Axis axis = r.axis;
+  const auto *t = find(r, "time"), *y = find(r, "force"), *m = find(r, "force_model");
+  if (!t || !y || !m) return f;
+  FigurePanel p = time_panel(label("drive " + force_name(axis), Quantity::force, axis));
+  p.series.push_back(series("measured", *t, *y, SeriesStyle::lines, "#0072b2"));
+  p.series.push_back(series("chosen model", *t, *m, SeriesStyle::lines, "#d55e00"));
+  f.panels.push_back(p);
+  std::vector<double> e(std::min(y->size(), m->size()));
+  for (std::size_t i = 0; i < e.size(); ++i) e[i] = (*y)[i] - (*m)[i];
+  FigurePanel q = time_panel(label("residual", Quantity::force, axis));
+  q.series.push_back(series("measured - model", *t, e, SeriesStyle::lines, "#555555"));
+  f.panels.push_back(q);
+  return f;
+}
+
+}  // namespace
+
+CliMethod auto_method() {
+  return {"Model selection: says what experiment the record holds (a trajectory; constant-speed plateaus), fits "
+          "every structure it supports (inverse dynamic model Coulomb-viscous, + Stribeck with vs searched, "
+          "asymmetric; a sweep's laws with M from the trajectory) and answers with the one that predicts held-out "
+          "time blocks (or --validate FILE) best; refuses physically impossible fits. The candidates are listed "
+          "with their held-out errors",
+          "linear",
+          run,
+          {{"fit",
+            "Measured drive force and the force the chosen model reconstructs (top), and their difference "
+            "(bottom), on the identification data after filtering and decimation. The candidates' held-out "
+            "errors are in the diagnostics table (selection).",
+            fit_figure}},
+          nullptr,
+          {}};
+}
+
+}  // namespace frictionlab::cli

@@ -1,0 +1,586 @@
+#include "frictionlab/identify/auto.hpp"
+
+#include <Eigen/LU>
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "frictionlab/identify/selection.hpp"
+#include "frictionlab/identify/static_fit.hpp"
+#include "frictionlab/identify/uncertainty.hpp"
+#include "method_support.hpp"
+
+namespace frictionlab {
+using namespace detail;
+
+// The table names only the fields an option sets (designated initializers).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+MethodInfo detail::auto_method_info() {
+  const AutoOptions d;  // every default of the table is the struct's
+  MethodInfo m;
+  m.summary = "model selection: every method and structure the record supports, chosen by held-out error";
+  m.fit_signal = "drive force";
+  m.fit_quantity = Quantity::force;
+  m.options = {
+      {.name = "folds", .type = OptionType::integer, .default_value = static_cast<long long>(d.folds),
+       .help = "Contiguous time blocks of the cross-validation: each candidate is fitted on all blocks but one and "
+               "predicts the drive force of that one, in turn (more blocks: more data per fit, shorter held-out "
+               "blocks)",
+       .min = 2},
+      {.name = "from", .type = OptionType::text,
+       .help = "What the trajectory candidates' regressors are built from when the data has both: position or "
+               "velocity. Default: position, or velocity when only a velocity is given",
+       .words = {"position", "velocity"}},
+      {.name = "delay", .type = OptionType::integer, .unit = "samples",
+       .default_value = static_cast<long long>(d.idim.input_delay),
+       .help = "Samples by which the applied force lags the recorded input", .min = 0},
+      {.name = "skip-end", .type = OptionType::integer, .default_value = static_cast<long long>(d.idim.skip_end),
+       .help = "Samples dropped at the end (a record that ends in motion needs some)", .min = 0},
+      {.name = "min-duration", .type = OptionType::number, .unit = "s", .default_value = d.sweep.min_duration,
+       .help = "Shortest constant-speed plateau that counts for the sweep candidates", .min = 0, .min_open = true},
+      {.name = "validate", .type = OptionType::file,
+       .help = "Second data file of the same axis: candidates are judged by their drive-force error on it instead "
+               "of by the time blocks (Python: a dict with time, force and position or velocity)"},
+  };
+  return m;
+}
+#pragma GCC diagnostic pop
+
+AutoOptions make_auto_options(const OptionValues& v) {
+  AutoOptions o;
+  o.folds = static_cast<int>(v.integer("folds"));
+  const std::string from = v.text("from");
+  o.idim.source = from == "position" ? IdimSource::position : from == "velocity" ? IdimSource::velocity : IdimSource::automatic;
+  o.idim.input_delay = static_cast<Eigen::Index>(v.integer("delay"));
+  o.idim.skip_end = static_cast<Eigen::Index>(v.integer("skip-end"));
+  o.sweep.min_duration = v.number("min-duration");
+  return o;
+}
+
+namespace {
+
+using Vec = Eigen::VectorXd;
+using Mat = Eigen::MatrixXd;
+
+const std::vector<std::string> kCoulombViscous = {"inertia", "viscous", "coulomb", "offset"};
+const std::vector<std::string> kStribeck = {"inertia", "viscous", "coulomb", "offset", "stribeck"};
+const std::vector<std::string> kAsymmetric = {"inertia", "asymmetric"};
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string s;
+  for (const auto& w : words) s += (s.empty() ? "" : ",") + w;
+  return s;
+}
+
+Eigen::Index column_of(const IdimRegression& reg, const std::string& parameter) {
+  for (std::size_t j = 0; j < reg.terms.size(); ++j)
+    if (reg.terms[j].parameter == parameter) return static_cast<Eigen::Index>(j);
+  throw std::logic_error("identify_auto: no regressor column for " + parameter);
+}
+
+// Rows of X and y outside [b, e).
+void training_rows(const Mat& X, const Vec& y, Eigen::Index b, Eigen::Index e, Mat& Xt, Vec& yt) {
+  const Eigen::Index n = X.rows();
+  Xt.resize(n - (e - b), X.cols());
+  yt.resize(n - (e - b));
+  Xt << X.topRows(b), X.bottomRows(n - e);
+  yt << y.head(b), y.tail(n - e);
+}
+
+// The vs grid of idim's search (identify_idim: 40 values on a log grid from 1e-4 to 0.5 of the
+// top speed), so the held-out search is the whole-record search on fewer samples.
+std::vector<double> vs_grid(double top_speed) {
+  constexpr int kGrid = 40;
+  std::vector<double> g;
+  for (int i = 0; i < kGrid; ++i) g.push_back(top_speed * std::pow(10.0, -4.0 + (4.0 - std::log10(2.0)) * i / (kGrid - 1)));
+  return g;
+}
+
+// Held-out errors of idim with the stribeck term, vs searched on each training set alone.
+HeldOutErrors stribeck_heldout(const std::vector<IdimRegression>& regs, const std::vector<SampleBlock>& blocks) {
+  HeldOutErrors out;
+  Mat Xt;
+  Vec yt;
+  for (const auto& [b, e] : blocks) {
+    const Vec& y = regs.front().y;
+    out.signal_squares.push_back(y.segment(b, e - b).squaredNorm());
+    out.samples += static_cast<std::size_t>(e - b);
+    double best_train = std::numeric_limits<double>::infinity(), best_test = std::numeric_limits<double>::quiet_NaN();
+    for (const auto& reg : regs) {
+      training_rows(reg.X, reg.y, b, e, Xt, yt);
+      const Eigen::ColPivHouseholderQR<Mat> qr(Xt);
+      if (qr.rank() < Xt.cols()) continue;
+      const Vec theta = qr.solve(yt);
+      const double train = (yt - Xt * theta).squaredNorm();
+      if (train < best_train) {
+        best_train = train;
+        best_test = (reg.y.segment(b, e - b) - reg.X.middleRows(b, e - b) * theta).squaredNorm();
+      }
+    }
+    out.error_squares.push_back(best_test);
+  }
+  return out;
+}
+
+// The friction of `law` at each velocity (0 at rest: the sign convention of idim's columns).
+Vec law_force(const FrictionLaw& law, const Vec& v) {
+  Vec F(v.size());
+  for (Eigen::Index i = 0; i < v.size(); ++i) F(i) = v(i) == 0.0 ? 0.0 : law.sliding(v(i));
+  return F;
+}
+
+// M and offset by least squares of (y - friction) on [qdd, 1] over the rows `use` (all when
+// empty); their std from the residual variance. Returns {theta, std}.
+std::pair<Eigen::Vector2d, Eigen::Vector2d> inertia_offset(const Vec& qdd, const Vec& rest,
+                                                           const std::vector<Eigen::Index>& rows) {
+  Mat A(static_cast<Eigen::Index>(rows.size()), 2);
+  Vec b(A.rows());
+  for (Eigen::Index k = 0; k < A.rows(); ++k) {
+    A(k, 0) = qdd(rows[static_cast<std::size_t>(k)]);
+    A(k, 1) = 1.0;
+    b(k) = rest(rows[static_cast<std::size_t>(k)]);
+  }
+  const Eigen::ColPivHouseholderQR<Mat> qr(A);
+  Eigen::Vector2d theta = qr.solve(b);
+  Eigen::Vector2d sd = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
+  if (A.rows() > 2 && qr.rank() == 2) {
+    const double s2 = (b - A * theta).squaredNorm() / static_cast<double>(A.rows() - 2);
+    const Mat cov = s2 * (A.transpose() * A).inverse();
+    sd = cov.diagonal().cwiseSqrt();
+  }
+  return {theta, sd};
+}
+
+std::vector<Eigen::Index> all_rows_but(Eigen::Index n, Eigen::Index b, Eigen::Index e) {
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (i < b || i >= e) rows.push_back(i);
+  return rows;
+}
+
+// A sweep candidate: the law fitted to the plateau points, M and offset from the trajectory.
+SelectionCandidate sweep_candidate(StaticFitModel model, const std::string& model_name,
+                                   const std::vector<SweepPoint>& points, const IdimRegression& cv,
+                                   const std::vector<double>& row_time, const std::vector<SampleBlock>& blocks,
+                                   const std::optional<IdimRegression>& second, Axis axis) {
+  SelectionCandidate c;
+  const MethodInfo& sweep = method_info(MethodId::sweep);
+  c.method = sweep.name;
+  c.name = sweep.name + " " + model_name + " + M";
+  c.structure = model_name + " law on the plateaus; M, offset by least squares on the trajectory";
+  const Eigen::Index iM = column_of(cv, "M"), iv = column_of(cv, "Fv");
+  const Vec qdd = cv.X.col(iM), qd = cv.X.col(iv);
+  StaticFitOptions fo;
+  fo.model = model;
+  const auto fit_points = [&](const std::vector<const SweepPoint*>& pts) {
+    Vec v(static_cast<Eigen::Index>(pts.size())), F(v.size());
+    for (Eigen::Index i = 0; i < v.size(); ++i) v(i) = pts[static_cast<std::size_t>(i)]->velocity, F(i) = pts[static_cast<std::size_t>(i)]->force;
+    return fit_static_law(v, F, fo);
+  };
+  std::vector<const SweepPoint*> all;
+  for (const auto& p : points) all.push_back(&p);
+  Result& r = c.result;
+  r = new_result(sweep, model_name, axis);
+  try {
+    const StaticFit fit = fit_points(all);
+    const Vec friction = law_force(fit.law, qd);
+    std::vector<Eigen::Index> rows = all_rows_but(cv.y.size(), 0, 0);
+    const auto [theta, sd] = inertia_offset(qdd, cv.y - friction, rows);
+    for (Parameter p : fit.parameters) {
+      p.unit = std::string(unit(p.quantity, axis));
+      r.parameters.push_back(p);
+    }
+    add_parameter(r, "M", theta(0), sd(0), Quantity::inertia, axis);
+    add_parameter(r, "offset", theta(1), sd(1), Quantity::force, axis);
+    const Vec model_force = qdd * theta(0) + Vec::Constant(qdd.size(), theta(1)) + friction;
+    set_fit(r, cv.y, model_force);
+    r.law = fit.law.to_spec();
+    r.diagnostics.warnings = fit.warnings;
+    r.diagnostics.undetermined = fit.undetermined;
+    r.diagnostics.at_bound = fit.at_bound;
+    r.diagnostics.correlation = fit.correlation;
+    r.diagnostics.numbers["plateaus"] = static_cast<double>(points.size());
+    r.series["time"] = row_time;
+    r.series["force"].assign(cv.y.data(), cv.y.data() + cv.y.size());
+    r.series["force_model"].assign(model_force.data(), model_force.data() + model_force.size());
+    c.training_error_percent = r.fit.relative_error_percent;
+  } catch (const std::invalid_argument& e) {
+    fail(r, std::string("the law could not be fitted to the plateaus: ") + e.what());
+    return c;
+  }
+  HeldOutErrors h;
+  if (second) {
+    const FrictionLaw law = FrictionLaw::from_spec(*r.law);
+    const Vec q2 = second->X.col(column_of(*second, "Fv")), a2 = second->X.col(column_of(*second, "M"));
+    const Vec pred = a2 * r.value("M") + Vec::Constant(a2.size(), r.value("offset")) + law_force(law, q2);
+    h.error_squares.push_back((second->y - pred).squaredNorm());
+    h.signal_squares.push_back(second->y.squaredNorm());
+    h.samples = static_cast<std::size_t>(second->y.size());
+  } else {
+    for (const auto& [b, e] : blocks) {
+      h.signal_squares.push_back(cv.y.segment(b, e - b).squaredNorm());
+      h.samples += static_cast<std::size_t>(e - b);
+      // Plateaus wholly outside the held-out block's time span.
+      const double tb = row_time[static_cast<std::size_t>(b)], te = row_time[static_cast<std::size_t>(e - 1)];
+      std::vector<const SweepPoint*> pts;
+      for (const auto& p : points)
+        if (p.t_end < tb || p.t_begin > te) pts.push_back(&p);
+      try {
+        const StaticFit fit = fit_points(pts);
+        const Vec friction = law_force(fit.law, qd);
+        const auto [theta, sd] = inertia_offset(qdd, cv.y - friction, all_rows_but(cv.y.size(), b, e));
+        const Vec pred = qdd.segment(b, e - b) * theta(0) + Vec::Constant(e - b, theta(1)) + friction.segment(b, e - b);
+        h.error_squares.push_back((cv.y.segment(b, e - b) - pred).squaredNorm());
+      } catch (const std::invalid_argument&) {
+        h.error_squares.push_back(std::numeric_limits<double>::quiet_NaN());  // too few plateaus outside the block
+      }
+    }
+  }
+  c.heldout_error_percent = h.relative_error_percent();
+  c.block_errors_percent = h.block_errors_percent();
+  return c;
+}
+
+std::string percent(double x) { return std::isfinite(x) ? format_number(x, 3) + " %" : "n/a"; }
+
+// The rows of `reg` in `rows` (same terms).
+IdimRegression select_rows(const IdimRegression& reg, const std::vector<Eigen::Index>& rows) {
+  IdimRegression out;
+  out.terms = reg.terms;
+  out.dt = reg.dt;
+  out.max_speed = reg.max_speed;
+  out.X.resize(static_cast<Eigen::Index>(rows.size()), reg.X.cols());
+  out.y.resize(out.X.rows());
+  for (Eigen::Index k = 0; k < out.X.rows(); ++k) {
+    out.X.row(k) = reg.X.row(rows[static_cast<std::size_t>(k)]);
+    out.y(k) = reg.y(rows[static_cast<std::size_t>(k)]);
+  }
+  return out;
+}
+
+// The rows in motion: |qd| above `fraction` of the largest |qd| (the residual check's standstill
+// speed, identify/adequacy.hpp). At standstill friction is any value within +-Fs and the sign of
+// the filtered velocity follows noise: no friction structure predicts those samples.
+std::vector<Eigen::Index> moving_rows(const IdimRegression& cv, double fraction) {
+  const Vec qd = cv.X.col(column_of(cv, "Fv"));
+  const double limit = fraction * qd.cwiseAbs().maxCoeff();
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index i = 0; i < qd.size(); ++i)
+    if (std::abs(qd(i)) > limit) rows.push_back(i);
+  return rows;
+}
+
+// The friction law of identified idim terms (Fs = Fc + Fs_minus_Fc with the Stribeck term), or
+// none when the estimates break a law's rules.
+std::optional<LawSpec> idim_law(const Result& r, double vs, double delta) {
+  const auto has = [&](const std::string& n) { return r.find(n) != nullptr; };
+  const auto val = [&](const std::string& n) { return has(n) ? r.value(n) : 0.0; };
+  const bool stribeck = has("Fs_minus_Fc");
+  LawSpec spec;
+  if (has("Fc_pos") && has("Fc_neg")) {
+    spec.name = stribeck ? "stribeck-asymmetric" : "coulomb-viscous-asymmetric";
+    for (const std::string s : {"_pos", "_neg"}) {
+      spec.scalars["Fc" + s] = val("Fc" + s);
+      spec.scalars["Fv" + s] = val("Fv" + s);
+      if (stribeck) spec.scalars["Fs" + s] = val("Fc" + s) + val("Fs_minus_Fc"), spec.scalars["vs" + s] = vs, spec.scalars["delta" + s] = delta;
+    }
+  } else {
+    spec.name = stribeck ? "stribeck" : "coulomb-viscous";
+    spec.scalars["Fc"] = val("Fc");
+    spec.scalars["Fv"] = val("Fv");
+    if (stribeck) spec.scalars["Fs"] = val("Fs"), spec.scalars["vs"] = vs, spec.scalars["delta"] = delta;
+  }
+  try {
+    FrictionLaw::from_spec(spec);
+    return spec;
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
+// Ordinary least squares of a (row-selected) regression as a Result of idim: parameters with std
+// from s^2 (X'X)^-1 (identify/uncertainty.hpp), Fs = Fc + Fs_minus_Fc with its std when the
+// Stribeck term is present, fit figures, the law, the signals of the fit figure.
+Result fit_regression(const IdimRegression& reg, const std::vector<double>& time, double vs, double delta, Axis axis) {
+  Result r = new_result(method_info(MethodId::idim), "coulomb-viscous", axis);
+  const Eigen::Index n = reg.X.rows(), p = reg.X.cols();
+  if (n <= p) return fail(r, "fewer samples in motion (" + std::to_string(n) + ") than parameters");
+  const Eigen::ColPivHouseholderQR<Mat> qr(reg.X);
+  if (qr.rank() < p) return fail(r, "the regressor is rank deficient on the samples in motion");
+  const Vec theta = qr.solve(reg.y);
+  std::vector<std::string> names;
+  for (Eigen::Index j = 0; j < p; ++j) {
+    const auto& t = reg.terms[static_cast<std::size_t>(j)];
+    add_parameter(r, t.parameter, theta(j), std::numeric_limits<double>::quiet_NaN(), t.quantity, axis);
+    names.push_back(t.parameter);
+  }
+  const Vec model = reg.X * theta;
+  set_fit(r, reg.y, model);
+  const double s2 = (reg.y - model).squaredNorm() / static_cast<double>(n - p);
+  const Mat cov = set_uncertainty_from_information(r, names, reg.X.transpose() * reg.X, s2);
+  const auto at = [&](const std::string& name) {
+    return static_cast<Eigen::Index>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  if (r.find("Fs_minus_Fc") && r.find("Fc")) {
+    const Eigen::Index a = at("Fc"), b = at("Fs_minus_Fc");
+    const double var = cov(a, a) + cov(b, b) + 2 * cov(a, b);
+    add_parameter(r, "Fs", r.value("Fc") + r.value("Fs_minus_Fc"), var >= 0 ? std::sqrt(var) : std::numeric_limits<double>::quiet_NaN(),
+                  Quantity::force, axis);
+  }
+  if (r.find("Fs_minus_Fc")) r.diagnostics.numbers["stribeck_vs"] = vs;
+  r.law = idim_law(r, vs, delta);
+  if (r.law) r.model = r.law->name;
+  r.series["time"] = time;
+  r.series["force"].assign(reg.y.data(), reg.y.data() + reg.y.size());
+  r.series["force_model"].assign(model.data(), model.data() + model.size());
+  return r;
+}
+
+}  // namespace
+
+Result identify_auto(const IdimData& data, const AutoOptions& options) {
+  const MethodInfo& idim = method_info(MethodId::idim);
+  IdimOptions base = options.idim;
+  base.axis = options.axis;
+  base.search_stribeck_vs = false;
+
+  // The Coulomb-viscous regression first: bad data are refused here, naming the file.
+  IdimOptions cv_options = base;
+  cv_options.terms = kCoulombViscous;
+  const IdimRegression cv_all = idim_regression(data, cv_options);
+  const Result cv_full = identify_idim(data, cv_options);  // the recipe on every sample: its signals, its verdict
+  std::vector<double> time_all;
+  if (const auto it = cv_full.series.find("time");
+      it != cv_full.series.end() && static_cast<Eigen::Index>(it->second.size()) == cv_all.y.size())
+    time_all = it->second;
+  else
+    for (Eigen::Index k = 0; k < cv_all.y.size(); ++k) time_all.push_back(static_cast<double>(k));
+  // Every candidate is fitted and judged on the samples in motion (moving_rows).
+  const std::vector<Eigen::Index> rows = moving_rows(cv_all, options.standstill_fraction);
+  const IdimRegression cv = select_rows(cv_all, rows);
+  std::vector<double> row_time;
+  for (const Eigen::Index i : rows) row_time.push_back(time_all[static_cast<std::size_t>(i)]);
+  const std::vector<SampleBlock> blocks = contiguous_blocks(cv.y.size(), options.folds);
+  std::optional<IdimRegression> second_cv;
+  std::vector<Eigen::Index> second_rows;
+  if (options.heldout) {
+    const IdimRegression all2 = idim_regression(*options.heldout, cv_options);
+    second_rows = moving_rows(all2, options.standstill_fraction);
+    second_cv = select_rows(all2, second_rows);
+  }
+
+  std::vector<SelectionCandidate> candidates;
+  std::vector<std::string> experiment;
+
+  // The trajectory candidates (idim).
+  const auto add_idim = [&](const std::string& label, const std::vector<std::string>& terms, bool search) {
+    SelectionCandidate c;
+    c.method = idim.name;
+    c.name = idim.name + " " + label;
+    c.structure = joined(terms) + (search ? " (vs searched)" : "");
+    IdimOptions o = base;
+    o.terms = terms;
+    // The regressions of the candidate: one, or one per vs of the grid.
+    std::vector<IdimRegression> regs;
+    std::vector<double> grid = search ? vs_grid(cv_all.max_speed) : std::vector<double>{o.stribeck_vs};
+    for (double vs : grid) {
+      o.stribeck_vs = vs;
+      regs.push_back(select_rows(idim_regression(data, o), rows));
+    }
+    // The whole-record fit: the vs with the least training residual (as idim's own search).
+    std::size_t best = 0;
+    double best_sse = std::numeric_limits<double>::infinity();
+    for (std::size_t g = 0; g < regs.size(); ++g) {
+      const Eigen::ColPivHouseholderQR<Mat> qr(regs[g].X);
+      if (qr.rank() < regs[g].X.cols()) continue;
+      const double sse = (regs[g].y - regs[g].X * qr.solve(regs[g].y)).squaredNorm();
+      if (sse < best_sse) best_sse = sse, best = g;
+    }
+    IdimRegression chosen_reg = regs[best];
+    double chosen_vs = grid[best];
+    if (search && std::isfinite(best_sse)) {
+      // The grid steps by a quarter; Fv and Fc move with vs, so the minimum is refined by a
+      // golden-section search on log vs between the best point's neighbours.
+      const auto sse_at = [&](double vs, IdimRegression* keep) {
+        o.stribeck_vs = vs;
+        IdimRegression reg = select_rows(idim_regression(data, o), rows);
+        const Eigen::ColPivHouseholderQR<Mat> qr(reg.X);
+        const double sse = qr.rank() < reg.X.cols() ? std::numeric_limits<double>::infinity()
+                                                   : (reg.y - reg.X * qr.solve(reg.y)).squaredNorm();
+        if (keep) *keep = std::move(reg);
+        return sse;
+      };
+      double a = std::log(grid[best > 0 ? best - 1 : best]), b = std::log(grid[std::min(best + 1, grid.size() - 1)]);
+      const double phi = (std::sqrt(5.0) - 1) / 2;
+      double x1 = b - phi * (b - a), x2 = a + phi * (b - a);
+      double f1 = sse_at(std::exp(x1), nullptr), f2 = sse_at(std::exp(x2), nullptr);
+      for (int it = 0; it < 30; ++it) {
+        if (f1 < f2) b = x2, x2 = x1, f2 = f1, x1 = b - phi * (b - a), f1 = sse_at(std::exp(x1), nullptr);
+        else a = x1, x1 = x2, f1 = f2, x2 = a + phi * (b - a), f2 = sse_at(std::exp(x2), nullptr);
+      }
+      IdimRegression refined;
+      const double vs = std::exp((a + b) / 2);
+      if (sse_at(vs, &refined) < best_sse) chosen_reg = std::move(refined), chosen_vs = vs;
+    }
+    c.result = fit_regression(chosen_reg, row_time, chosen_vs, o.stribeck_delta, options.axis);
+    c.training_error_percent = c.result.fit.relative_error_percent;
+    HeldOutErrors h;
+    if (!c.result.ok()) {
+    } else if (options.heldout) {
+      o.stribeck_vs = chosen_vs;
+      const IdimRegression r2 = select_rows(idim_regression(*options.heldout, o), second_rows);
+      Vec theta(r2.X.cols());
+      for (std::size_t j = 0; j < r2.terms.size(); ++j) theta(static_cast<Eigen::Index>(j)) = c.result.value(r2.terms[j].parameter);
+      h.error_squares.push_back((r2.y - r2.X * theta).squaredNorm());
+      h.signal_squares.push_back(r2.y.squaredNorm());
+      h.samples = static_cast<std::size_t>(r2.y.size());
+    } else if (search) {
+      h = stribeck_heldout(regs, blocks);  // vs chosen on each training set alone
+    } else {
+      h = linear_heldout_errors(regs.front().X, regs.front().y, blocks);
+    }
+    if (!h.error_squares.empty()) {
+      c.heldout_error_percent = h.relative_error_percent();
+      c.block_errors_percent = h.block_errors_percent();
+    }
+    candidates.push_back(std::move(c));
+  };
+  const Result& cv_result = cv_full;
+  if (cv_result.ok()) {
+    const double amax = cv_all.X.col(column_of(cv_all, "M")).cwiseAbs().maxCoeff();
+    experiment.push_back("a trajectory with accelerations up to " + format_number(amax, 3) + " " +
+                         std::string(unit(Quantity::acceleration, options.axis)) + " and speeds up to " +
+                         format_number(cv_all.max_speed, 3) + " " + std::string(unit(Quantity::velocity, options.axis)) +
+                         ": the inverse dynamic model (" + idim.name + ") applies; " + std::to_string(rows.size()) +
+                         " of its " + std::to_string(cv_all.y.size()) + " samples are in motion (speed above " +
+                         format_number(100 * options.standstill_fraction, 3) +
+                         " % of the largest) and are the ones every candidate is fitted and judged on");
+  } else {
+    experiment.push_back("no trajectory the inverse dynamic model can use (" + cv_result.message + ")");
+  }
+  add_idim("coulomb-viscous", kCoulombViscous, false);
+  add_idim("stribeck (vs searched)", kStribeck, true);
+  add_idim("asymmetric", kAsymmetric, false);
+
+  // Constant-speed plateaus, found on the filtered velocity the trajectory candidates use.
+  const MethodInfo& sweep = method_info(MethodId::sweep);
+  std::vector<SweepPoint> points;
+  if (cv_result.ok()) {
+    const auto& v = cv_result.series.at("velocity");
+    SweepData sd;
+    sd.time = Eigen::Map<const Vec>(time_all.data(), static_cast<Eigen::Index>(time_all.size()));
+    sd.velocity = Eigen::Map<const Vec>(v.data(), static_cast<Eigen::Index>(v.size()));
+    sd.force = cv_all.y;
+    if (sd.velocity.size() == sd.force.size() && sd.time.size() == sd.force.size()) {
+      SweepOptions so = options.sweep;
+      so.axis = options.axis;
+      try {
+        for (const auto& p : sweep_points(sd, so))
+          if (p.velocity != 0.0) points.push_back(p);
+      } catch (const std::invalid_argument&) {
+        points.clear();
+      }
+    }
+  }
+  // Enough plateaus for a Stribeck law (5 parameters) and both directions.
+  const bool both = std::any_of(points.begin(), points.end(), [](const SweepPoint& p) { return p.velocity > 0; }) &&
+                    std::any_of(points.begin(), points.end(), [](const SweepPoint& p) { return p.velocity < 0; });
+  if (points.size() >= 6 && both) {
+    experiment.push_back(std::to_string(points.size()) + " constant-speed plateaus of at least " +
+                         format_number(options.sweep.min_duration, 3) + " s: the friction-velocity map (" + sweep.name +
+                         ") applies");
+    candidates.push_back(sweep_candidate(StaticFitModel::coulomb_viscous, "coulomb-viscous", points, cv, row_time,
+                                         blocks, second_cv, options.axis));
+    candidates.push_back(sweep_candidate(StaticFitModel::stribeck, "stribeck", points, cv, row_time, blocks,
+                                         second_cv, options.axis));
+  } else {
+    experiment.push_back(std::to_string(points.size()) + " constant-speed plateaus" +
+                         (points.empty() || both ? "" : ", all in one direction") + ": too few for a friction map (" +
+                         sweep.name + " not run; it needs 6 in both directions)");
+  }
+  experiment.push_back("free decays and slow force ramps are not looked for (run breakaway or decay on such a record)");
+
+  // Refusals, then the choice.
+  for (auto& c : candidates) {
+    if (!c.refusal.empty()) continue;
+    c.refusal = physical_refusal(c.result);
+    if (c.refusal.empty() && !std::isfinite(c.heldout_error_percent))
+      c.refusal = "no held-out error: a training set could not be fitted (too few plateaus or samples outside a block)";
+  }
+  const std::optional<std::size_t> chosen = select_candidate(candidates);
+
+  Result r = chosen ? candidates[*chosen].result : Result{};
+  const std::string model = chosen ? r.model : std::string("none");
+  {
+    Result stamp = new_result(method_info(MethodId::automatic), model, options.axis);
+    r.method = stamp.method;
+    r.model = stamp.model;
+    r.axis = stamp.axis;
+    r.fit.quantity = stamp.fit.quantity;
+    r.fit.unit = stamp.fit.unit;
+  }
+  r.data_file = data.file;
+  r.data_sha256 = data.sha256;
+  const std::string judged = options.heldout ? "its drive-force error on " + options.heldout->file
+                                             : "its drive-force error on held-out data (" + std::to_string(options.folds) +
+                                                   " contiguous time blocks, each predicted by a fit on the others)";
+  std::ostringstream ex;
+  for (std::size_t i = 0; i < experiment.size(); ++i) ex << (i ? "; " : "") << experiment[i];
+  r.diagnostics.texts["experiment"] = ex.str();
+  auto& list = r.diagnostics.lists["selection"];
+  list.clear();
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const auto& c = candidates[i];
+    std::map<std::string, double> rec{{"candidate", static_cast<double>(i + 1)},
+                                      {"heldout_error_percent", c.heldout_error_percent},
+                                      {"training_error_percent", c.training_error_percent},
+                                      {"chosen", chosen && *chosen == i ? 1.0 : 0.0},
+                                      {"refused", c.refused() ? 1.0 : 0.0}};
+    for (std::size_t k = 0; k < c.block_errors_percent.size(); ++k)
+      rec["block_" + std::to_string(k + 1) + "_percent"] = c.block_errors_percent[k];
+    list.push_back(rec);
+    std::string line = c.name + " [" + c.structure + "]: held-out " + percent(c.heldout_error_percent) + ", training " +
+                       percent(c.training_error_percent) + ", ";
+    line += chosen && *chosen == i ? "chosen" : c.refused() ? "refused: " + c.refusal : "runner-up";
+    r.diagnostics.texts["candidate " + std::to_string(i + 1)] = line;
+  }
+  r.json_sections["selection"] = selection_json(candidates, chosen);
+  if (!chosen) {
+    std::string why;
+    for (const auto& c : candidates) why += (why.empty() ? "" : "; ") + c.name + ": " + c.refusal;
+    r.status = ResultStatus::error;
+    r.message = "no candidate structure can be chosen: " + why;
+    r.parameters.clear();
+    r.law.reset();
+    return r;
+  }
+  const SelectionCandidate& best = candidates[*chosen];
+  if (options.heldout) {  // the chosen candidate's error on the second record, as idim's cross-test
+    ValidationFigures v;
+    v.file = options.heldout->file;
+    v.sha256 = options.heldout->sha256;
+    v.relative_error_percent = best.heldout_error_percent;
+    v.samples = second_cv ? static_cast<std::size_t>(second_cv->y.size()) : 0;
+    if (second_cv && second_cv->y.size() > 0)
+      v.rmse = best.heldout_error_percent / 100.0 * second_cv->y.norm() / std::sqrt(static_cast<double>(second_cv->y.size()));
+    r.validation = v;
+  }
+  std::string runners;
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (i != *chosen && !candidates[i].refused())
+      runners += (runners.empty() ? "" : ", ") + candidates[i].name + " " + percent(candidates[i].heldout_error_percent);
+  std::string choice = best.name + ": the simplest structure within one standard error of the lowest held-out error; its error " + percent(best.heldout_error_percent) + " (" +
+                       judged + "; training error " + percent(best.training_error_percent) + ")";
+  if (!runners.empty()) choice += "; runners-up: " + runners;
+  if (best.method == sweep.name)
+    choice += "; the law is the sweep's (plateau means), M and offset are fitted to the trajectory's drive force less "
+              "that law (a sweep alone has no M)";
+  r.diagnostics.texts["choice"] = choice;
+  return r;
+}
+
+}  // namespace frictionlab
