@@ -142,6 +142,15 @@ nlohmann::json read_model_json(const std::string& path) {
   if (!j.is_object()) {
     throw InputError(errc::scenario_format, path + ": expected a JSON object (a friction law or MODEL.json)", {.file = path});
   }
+  // A schema this version does not know (a newer frictionlab's MODEL.json) is refused rather than
+  // read by guess: its fields may mean something else.
+  if (j.contains("schema") && !(j["schema"].is_number_integer() && j["schema"].get<long long>() == 1)) {
+    throw InputError(errc::scenario_value,
+                     path + ": schema: " + j["schema"].dump() +
+                         " is not a MODEL.json schema this frictionlab reads (1); a newer frictionlab wrote it, or the "
+                         "file is not a MODEL.json",
+                     {.file = path, .key = "schema", .value = j["schema"].dump()});
+  }
   if (j.contains("status")) {
     const auto& st = j["status"];
     if (!st.is_string()) {

@@ -74,6 +74,8 @@ echo "$model" > "$tmp/model.json"
 expect_json "garbage.json" validate "$tmp/garbage.json" "$emps" --scenario "$scenario" --time t --position qm --input vir --gain gtau
 echo '{"schema": 1, "status": "error", "message": "no excitation", "method": "idim"}' > "$tmp/failed.json"
 expect_json "the identification failed" validate "$tmp/failed.json" "$emps" --scenario "$scenario" --time t --position qm --input vir --gain gtau
+echo "${model/\"schema\": 1/\"schema\": 7}" > "$tmp/future.json"
+expect_json "future.json: schema: 7 is not a MODEL.json schema this frictionlab reads (1)" validate "$tmp/future.json" "$emps" --scenario "$scenario" --time t --position qm --input vir --gain gtau
 echo "${model/95.1/-3}" > "$tmp/negative.json"
 expect_json "negative.json: parameters.M" validate "$tmp/negative.json" "$emps" --scenario "$scenario" --time t --position qm --input vir --gain gtau
 grep -qF "$scenario" "$tmp/err.txt" && fail "a bad value of MODEL.json blamed on the scenario: $(cat "$tmp/err.txt")"
