@@ -35,6 +35,13 @@ std::string title_for(const Result& r, const std::string& what);
 double parameter(const Result& r, const std::string& name);
 /// A law's curve (v ascending) with a gap at v = 0, where it jumps.
 FigureSeries gapped_at_zero(const std::string& name, const std::vector<double>& v, const std::vector<double>& F);
+/// The panels of a force fit against time t (s): the drive force measured and as `model` gives it
+/// (series `model_name`; thinner with `thin_model`, so that the measurement shows where they
+/// differ), then their difference (series `difference`, e.g. "measured - model"). Without a model
+/// (nullptr) the measurement alone. N or N m by `axis`.
+void add_force_fit_panels(Figure& f, Axis axis, const std::vector<double>& t, const std::vector<double>& measured,
+                          const std::vector<double>* model, const std::string& model_name,
+                          const std::string& difference, bool thin_model = false);
 /// Measured against simulated ("NAME" and "NAME_sim" series of position, velocity, force), one
 /// panel per signal; `force_word` names the force ("applied", "drive"), `file` goes in the title.
 Figure compare_figure(const Result& r, const std::string& what, const std::string& force_word,

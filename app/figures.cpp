@@ -108,6 +108,24 @@ FigureSeries gapped_at_zero(const std::string& name, const std::vector<double>& 
 }
 
 // Measured against simulated, one panel per signal that has both (or at least the measurement).
+void add_force_fit_panels(Figure& f, Axis axis, const std::vector<double>& t, const std::vector<double>& measured,
+                          const std::vector<double>* model, const std::string& model_name,
+                          const std::string& difference, bool thin_model) {
+  FigurePanel p = time_panel(label("drive " + force_name(axis), Quantity::force, axis));
+  p.series.push_back(series("measured", t, measured, SeriesStyle::lines, "#0072b2"));
+  if (model) {
+    p.series.push_back(series(model_name, t, *model, SeriesStyle::lines, "#d55e00"));
+    if (thin_model) p.series.back().line_width = 1.0;
+  }
+  f.panels.push_back(p);
+  if (!model) return;
+  std::vector<double> e(std::min(measured.size(), model->size()));
+  for (std::size_t i = 0; i < e.size(); ++i) e[i] = measured[i] - (*model)[i];
+  FigurePanel q = time_panel(label("residual", Quantity::force, axis));
+  q.series.push_back(series(difference, t, e, SeriesStyle::lines, "#555555"));
+  f.panels.push_back(q);
+}
+
 Figure compare_figure(const Result& r, const std::string& what, const std::string& force_word,
                       const std::string& file) {
   const Axis axis = r.axis;

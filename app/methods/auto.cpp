@@ -42,15 +42,7 @@ Figure fit_figure(const Result& r) {
   const Axis axis = r.axis;
   const auto *t = find(r, "time"), *y = find(r, "force"), *m = find(r, "force_model");
   if (!t || !y || !m) return f;
-  FigurePanel p = time_panel(label("drive " + force_name(axis), Quantity::force, axis));
-  p.series.push_back(series("measured", *t, *y, SeriesStyle::lines, "#0072b2"));
-  p.series.push_back(series("chosen model", *t, *m, SeriesStyle::lines, "#d55e00"));
-  f.panels.push_back(p);
-  std::vector<double> e(std::min(y->size(), m->size()));
-  for (std::size_t i = 0; i < e.size(); ++i) e[i] = (*y)[i] - (*m)[i];
-  FigurePanel q = time_panel(label("residual", Quantity::force, axis));
-  q.series.push_back(series("measured - model", *t, e, SeriesStyle::lines, "#555555"));
-  f.panels.push_back(q);
+  add_force_fit_panels(f, axis, *t, *y, m, "chosen model", "measured - model");
   return f;
 }
 

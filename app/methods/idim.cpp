@@ -50,17 +50,7 @@ Figure idim_figure(const Result& r) {
   const Axis axis = r.axis;
   const auto *t = find(r, "time"), *y = find(r, "force"), *m = find(r, "force_model");
   if (!t || !y) return f;
-  FigurePanel p = time_panel(label("drive " + force_name(axis), Quantity::force, axis));
-  p.series.push_back(series("measured", *t, *y, SeriesStyle::lines, "#0072b2"));
-  if (m) p.series.push_back(series("model (M a + friction + offset)", *t, *m, SeriesStyle::lines, "#d55e00"));
-  f.panels.push_back(p);
-  if (m) {
-    std::vector<double> e(std::min(y->size(), m->size()));
-    for (std::size_t i = 0; i < e.size(); ++i) e[i] = (*y)[i] - (*m)[i];
-    FigurePanel q = time_panel(label("residual", Quantity::force, axis));
-    q.series.push_back(series("measured - model", *t, e, SeriesStyle::lines, "#555555"));
-    f.panels.push_back(q);
-  }
+  add_force_fit_panels(f, axis, *t, *y, m, "model (M a + friction + offset)", "measured - model");
   return f;
 }
 
@@ -106,16 +96,7 @@ Figure cross_test_figure(const Result& r) {
   };
   const auto *t = get("time"), *y = get("force"), *m = get("force_model");
   if (!t || !y || !m) return f;
-  FigurePanel p = time_panel(label("drive " + force_name(axis), Quantity::force, axis));
-  p.series.push_back(series("measured", *t, *y, SeriesStyle::lines, "#0072b2"));
-  p.series.push_back(series("predicted by the identified model", *t, *m, SeriesStyle::lines, "#d55e00"));
-  p.series.back().line_width = 1.0;  // thinner, so that the measurement shows where they differ
-  f.panels.push_back(p);
-  std::vector<double> e(std::min(y->size(), m->size()));
-  for (std::size_t i = 0; i < e.size(); ++i) e[i] = (*y)[i] - (*m)[i];
-  FigurePanel q = time_panel(label("residual", Quantity::force, axis));
-  q.series.push_back(series("measured - predicted", *t, e, SeriesStyle::lines, "#555555"));
-  f.panels.push_back(q);
+  add_force_fit_panels(f, axis, *t, *y, m, "predicted by the identified model", "measured - predicted", true);
   return f;
 }
 
