@@ -10,26 +10,14 @@
 namespace frictionlab::cli {
 namespace {
 
-IdimData record(const Dataset& d, const DataOptions& c, const std::string& from) {
-  IdimData x;
-  x.time = time_column(d, c);
-  const bool use_velocity =
-      from == "velocity" || (from.empty() && c.velocity_opt->count() > 0 && c.position_opt->count() == 0);
-  if (use_velocity) x.velocity = velocity_column(d, c);
-  else x.position = position_column(d, c);
-  x.force = force_column(d, c);
-  x.file = d.file;
-  x.sha256 = d.sha256;
-  return x;
-}
-
 Result run(const MethodIO& io, const OptionValues& options) {
   AutoOptions o = make_auto_options(options);
   o.axis = io.columns.parsed_axis();
   const std::string from = options.text("from");
   const Dataset d = load_data(io.data, io.columns);
-  const IdimData data = record(d, io.columns, from);
-  if (options.given("validate")) o.heldout = record(load_data(options.text("validate"), io.columns), io.columns, from);
+  const IdimData data = trajectory_record(d, io.columns, from);
+  if (options.given("validate"))
+    o.heldout = trajectory_record(load_data(options.text("validate"), io.columns), io.columns, from);
   Result r = identify_auto(data, o);
   note_data(r, d);
   name_flags(r);

@@ -14,18 +14,9 @@ namespace {
 
 // The record's columns; the load and temperature columns (--load, --temperature) when given.
 IdimData idim_data(const Dataset& d, const DataOptions& c, const OptionValues& options) {
-  const std::string from = options.text("from");
-  IdimData x;
-  x.time = time_column(d, c);
-  const bool use_velocity =
-      from == "velocity" || (from.empty() && c.velocity_opt->count() > 0 && c.position_opt->count() == 0);
-  if (use_velocity) x.velocity = velocity_column(d, c);
-  else x.position = position_column(d, c);
-  x.force = force_column(d, c);
+  IdimData x = trajectory_record(d, c, options.text("from"));
   if (options.given("load")) x.load = finite_column(d, options.text("load"), "--load");
   if (options.given("temperature")) x.temperature = finite_column(d, options.text("temperature"), "--temperature");
-  x.file = d.file;
-  x.sha256 = d.sha256;
   return x;
 }
 
@@ -101,6 +92,19 @@ Figure cross_test_figure(const Result& r) {
 }
 
 }  // namespace
+
+IdimData trajectory_record(const Dataset& d, const DataOptions& c, const std::string& from) {
+  IdimData x;
+  x.time = time_column(d, c);
+  const bool use_velocity =
+      from == "velocity" || (from.empty() && c.velocity_opt->count() > 0 && c.position_opt->count() == 0);
+  if (use_velocity) x.velocity = velocity_column(d, c);
+  else x.position = position_column(d, c);
+  x.force = force_column(d, c);
+  x.file = d.file;
+  x.sha256 = d.sha256;
+  return x;
+}
 
 CliMethod idim_method() {
   return {"Inverse dynamic model least squares on a trajectory: force = M qdd + friction(qd) + offset "

@@ -15,6 +15,7 @@
 #include "../batch_identify.hpp"
 #include "../data_options.hpp"
 #include "../output.hpp"
+#include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/method.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "report/figure.hpp"
@@ -69,6 +70,12 @@ using GivenOptions = std::function<OptionValues()>;
 /// Returns what reads the given flags after parsing, each checked by the table (parse_option).
 /// \throws std::invalid_argument from the returned function: "--NAME 'TEXT': expected ...".
 GivenOptions add_table_options(CLI::App* cmd, const MethodInfo& info);
+
+/// A trajectory record of `d` for the methods that fit one (idim, auto): time, force, and the
+/// position, or the velocity when `from` is "velocity" or only --velocity was given (`from` is the
+/// methods' --from: "", "position" or "velocity"); the file's name and digest.
+/// \throws std::invalid_argument naming the file and column, as the column readers.
+IdimData trajectory_record(const Dataset& d, const DataOptions& c, const std::string& from);
 
 /// Records the options that shaped `r` (options_json: name, value, unit, given) in its JSON.
 void record_options(Result& r, const OptionValues& options);

@@ -21,6 +21,19 @@ std::string law_name() {
 template <class Law>
 constexpr bool kIsDynamic = DynamicLaw<Law>;
 
+// The force (N or N m) of `law` sliding steadily at v (m/s or rad/s): a dynamic law's at its
+// steady state.
+template <class Law>
+double steady_sliding(const Law& law, double v) {
+  if constexpr (kIsDynamic<Law>) {
+    std::vector<double> z(static_cast<std::size_t>(law.num_states()));
+    law.steady_state(v, z);
+    return law.force(std::span<const double>(z), v);
+  } else {
+    return law.sliding(v);
+  }
+}
+
 std::string join(const std::vector<std::string>& items) {
   std::string out;
   for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
@@ -227,19 +240,7 @@ FrictionLaw FrictionLaw::without_effects() const {
 
 double FrictionLaw::sliding(double v, const Conditions& c) const {
   if (!effects_.moves_levels()) return sliding(v);
-  return std::visit(
-      [&](const auto& plain) -> double {
-        using Law = std::decay_t<decltype(plain)>;
-        const Law law = at_conditions(plain, effects_, c);
-        if constexpr (kIsDynamic<Law>) {
-          std::vector<double> z(static_cast<std::size_t>(law.num_states()));
-          law.steady_state(v, z);
-          return law.force(std::span<const double>(z), v);
-        } else {
-          return law.sliding(v);
-        }
-      },
-      law_);
+  return std::visit([&](const auto& plain) { return steady_sliding(at_conditions(plain, effects_, c), v); }, law_);
 }
 
 namespace {
@@ -332,18 +333,7 @@ void FrictionLaw::validate() const {
 }
 
 double FrictionLaw::sliding(double v) const {
-  return std::visit(
-      [&](const auto& law) -> double {
-        using Law = std::decay_t<decltype(law)>;
-        if constexpr (kIsDynamic<Law>) {
-          std::vector<double> z(static_cast<std::size_t>(law.num_states()));
-          law.steady_state(v, z);
-          return law.force(std::span<const double>(z), v);
-        } else {
-          return law.sliding(v);
-        }
-      },
-      law_);
+  return std::visit([&](const auto& law) { return steady_sliding(law, v); }, law_);
 }
 
 double FrictionLaw::breakaway_positive() const {

@@ -8,34 +8,18 @@
 namespace frictionlab::python {
 namespace {
 
-IdimData record(const char* function, const py::object& time, const py::object& force, const py::object& position,
-                const py::object& velocity, const std::string& file, const std::string& sha256) {
-  IdimData d;
-  d.time = vector_arg(time, function, "time");
-  d.force = vector_arg(force, function, "force");
-  ArraySpec optional;
-  optional.optional = true;
-  d.position = vector_arg(position, function, "position", optional);
-  d.velocity = vector_arg(velocity, function, "velocity", optional);
-  same_length(function, {{"time", d.time.size()}, {"force", d.force.size()}, {"position", d.position.size()},
-                         {"velocity", d.velocity.size()}});
-  d.file = file;
-  d.sha256 = sha256;
-  return d;
-}
-
 void bind(py::module_& m) {
   m.def("_identify_auto", [](py::object time, py::object force, py::object position, py::object velocity,
                              const OptionValues& values, const std::string& axis, const std::string& file,
                              const std::string& sha256, py::object heldout) {
-    const IdimData d = record("identify_auto", time, force, position, velocity, file, sha256);
+    const IdimData d = trajectory_arrays("identify_auto", time, force, position, velocity, py::none(), py::none(), file, sha256);
     AutoOptions o = make_auto_options(values);
     o.axis = parse_axis(axis);
     if (!heldout.is_none()) {
       const py::dict h = heldout.cast<py::dict>();
       const auto get = [&](const char* k) { return h.contains(k) ? py::object(h[k]) : py::object(py::none()); };
-      o.heldout = record("identify_auto: validate", get("time"), get("force"), get("position"), get("velocity"),
-                         h.contains("file") ? h["file"].cast<std::string>() : std::string(), "");
+      o.heldout = trajectory_arrays("identify_auto: validate", get("time"), get("force"), get("position"), get("velocity"),
+                                    py::none(), py::none(), h.contains("file") ? h["file"].cast<std::string>() : std::string(), "");
     }
     py::gil_scoped_release release;
     return identify_auto(d, o);

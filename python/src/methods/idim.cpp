@@ -8,25 +8,6 @@
 namespace frictionlab::python {
 namespace {
 
-IdimData idim_data(const char* function, const py::object& time, const py::object& force, const py::object& position,
-                   const py::object& velocity, const py::object& load, const py::object& temperature,
-                   const std::string& file, const std::string& sha256) {
-  IdimData d;
-  d.time = vector_arg(time, function, "time");
-  d.force = vector_arg(force, function, "force");
-  ArraySpec optional;
-  optional.optional = true;
-  d.position = vector_arg(position, function, "position", optional);
-  d.velocity = vector_arg(velocity, function, "velocity", optional);
-  d.load = vector_arg(load, function, "load", optional);
-  d.temperature = vector_arg(temperature, function, "temperature", optional);
-  same_length(function, {{"time", d.time.size()}, {"force", d.force.size()}, {"position", d.position.size()},
-                         {"velocity", d.velocity.size()}, {"load", d.load.size()}, {"temperature", d.temperature.size()}});
-  d.file = file;
-  d.sha256 = sha256;
-  return d;
-}
-
 void bind(py::module_& m) {
   auto idim_opts = py::class_<IdimOptions>(m, "IdimOptions", "Options of identify_idim; defaults are the EMPS recipe.");
   idim_opts.def(py::init<>())
@@ -76,21 +57,21 @@ void bind(py::module_& m) {
   m.def("_identify_idim", [](py::object time, py::object force, py::object position, py::object velocity,
                              py::object load, py::object temperature, const IdimOptions& o, const std::string& file,
                              const std::string& sha256) {
-    const IdimData d = idim_data("identify_idim", time, force, position, velocity, load, temperature, file, sha256);
+    const IdimData d = trajectory_arrays("identify_idim", time, force, position, velocity, load, temperature, file, sha256);
     py::gil_scoped_release release;
     return identify_idim(d, o);
   });
   m.def("_cross_test", [](const Result& r, py::object time, py::object force, py::object position, py::object velocity,
                           py::object load, py::object temperature, const IdimOptions& o, const std::string& file,
                           const std::string& sha256) {
-    const IdimData d = idim_data("cross_test", time, force, position, velocity, load, temperature, file, sha256);
+    const IdimData d = trajectory_arrays("cross_test", time, force, position, velocity, load, temperature, file, sha256);
     py::gil_scoped_release release;
     return cross_test(r, d, o);
   });
   m.def("_idim_regression", [](py::object time, py::object force, py::object position, py::object velocity,
                                py::object load, py::object temperature, const IdimOptions& o) {
     const IdimRegression reg =
-        idim_regression(idim_data("idim_regression", time, force, position, velocity, load, temperature, "", ""), o);
+        idim_regression(trajectory_arrays("idim_regression", time, force, position, velocity, load, temperature, "", ""), o);
     py::dict d;
     d["X"] = reg.X;
     d["y"] = reg.y;
@@ -104,6 +85,25 @@ void bind(py::module_& m) {
 }
 
 }  // namespace
+
+IdimData trajectory_arrays(const char* function, const py::object& time, const py::object& force,
+                           const py::object& position, const py::object& velocity, const py::object& load,
+                           const py::object& temperature, const std::string& file, const std::string& sha256) {
+  IdimData d;
+  d.time = vector_arg(time, function, "time");
+  d.force = vector_arg(force, function, "force");
+  ArraySpec optional;
+  optional.optional = true;
+  d.position = vector_arg(position, function, "position", optional);
+  d.velocity = vector_arg(velocity, function, "velocity", optional);
+  d.load = vector_arg(load, function, "load", optional);
+  d.temperature = vector_arg(temperature, function, "temperature", optional);
+  same_length(function, {{"time", d.time.size()}, {"force", d.force.size()}, {"position", d.position.size()},
+                         {"velocity", d.velocity.size()}, {"load", d.load.size()}, {"temperature", d.temperature.size()}});
+  d.file = file;
+  d.sha256 = sha256;
+  return d;
+}
 
 PyMethod idim_binding() { return {"identify_idim", bind, {}}; }
 

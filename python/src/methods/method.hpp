@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../result.hpp"
+#include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/method.hpp"
 
 namespace frictionlab::python {
@@ -42,6 +43,14 @@ void bind_option_tables(py::module_& m);
 
 /// Every method's binding, in the library's order.
 const std::vector<PyMethod>& py_methods();
+
+/// A trajectory record (idim, auto) from arrays: time (s), force (N or N m), position (m or rad)
+/// and velocity (m/s or rad/s), load (N or N m) and temperature (degC or K), each but time and
+/// force optional (None), all of equal length; `file` and `sha256` name the source.
+/// \throws argument_type_error, std::invalid_argument naming `function` and the argument.
+IdimData trajectory_arrays(const char* function, const py::object& time, const py::object& force,
+                           const py::object& position, const py::object& velocity, const py::object& load,
+                           const py::object& temperature, const std::string& file, const std::string& sha256);
 
 /// time (s), force (N or N m) and velocity (m/s or rad/s) of a method on records of one drive
 /// (breakaway, sweep), checked by vector_arg and of equal lengths (same_length).
