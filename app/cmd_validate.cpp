@@ -20,6 +20,7 @@
 #include "frictionlab/analysis/contour_validation.hpp"
 #include "frictionlab/identify/validate.hpp"
 #include "io/atomic_write.hpp"
+#include "frictionlab/io/column_expression.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/scenario/scenario.hpp"
@@ -115,7 +116,7 @@ std::vector<std::pair<std::string, std::string>> axis_models(const std::string& 
 // else the default name when the file has it, else none (forces are then not compared).
 Eigen::VectorXd optional_force(const Dataset& d, const std::string& name, bool given, const std::string& option) {
   if (!given && !d.has_column(name)) return {};
-  return finite_column(d, name, option);
+  return finite_signal(d, name, option);
 }
 
 // "12.3 um" (3 significant digits: a circular test holds no more).
@@ -174,8 +175,8 @@ int run_two_axis(const ValidateArgs& a, const OptionValues& options, const std::
                  const std::shared_ptr<const Dataset>& data, const std::string& data_file, const std::string& data_sha256) {
   MultiAxisValidationData v;
   v.time = time_column(*data, a.columns);
-  v.axes.push_back({"x", finite_column(*data, a.x, "--x"), optional_force(*data, a.x_force, a.x_force_given, "--x-force")});
-  v.axes.push_back({"y", finite_column(*data, a.y, "--y"), optional_force(*data, a.y_force, a.y_force_given, "--y-force")});
+  v.axes.push_back({"x", finite_signal(*data, a.x, "--x"), optional_force(*data, a.x_force, a.x_force_given, "--x-force")});
+  v.axes.push_back({"y", finite_signal(*data, a.y, "--y"), optional_force(*data, a.y_force, a.y_force_given, "--y-force")});
   v.file = data->file;
   v.sha256 = data->sha256;
   ValidateOptions vo;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "frictionlab/io/column_expression.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/io/load.hpp"
 #include "frictionlab/signal/sampling.hpp"
@@ -68,13 +69,13 @@ void add_read_options(CLI::App* cmd, ReadOptions& o) {
 void add_data_options(CLI::App* cmd, DataOptions& o, const std::string& default_axis) {
   o.axis = default_axis;
   cmd->add_option("--time", o.time, "Time column or variable (s)")->capture_default_str()->group("Data columns");
-  o.position_opt = cmd->add_option("--position", o.position, "Position column (m or rad)")->capture_default_str()->group("Data columns");
-  o.velocity_opt = cmd->add_option("--velocity", o.velocity, "Velocity column (m/s or rad/s)")->capture_default_str()->group("Data columns");
-  o.current_opt = cmd->add_option("--current", o.current, "Motor current column (A), turned into torque by --kt")
+  o.position_opt = cmd->add_option("--position", o.position, "Position column, or an expression of columns (m or rad)")->capture_default_str()->group("Data columns");
+  o.velocity_opt = cmd->add_option("--velocity", o.velocity, "Velocity column, or an expression of columns (m/s or rad/s)")->capture_default_str()->group("Data columns");
+  o.current_opt = cmd->add_option("--current", o.current, "Motor current column or expression (A), turned into torque by --kt")
                       ->capture_default_str()
                       ->group("Data columns");
-  o.force_opt = cmd->add_option("--force", o.force, "Applied force or torque column (N or N m)")->capture_default_str()->group("Data columns");
-  o.input_opt = cmd->add_option("--input", o.input, "Drive command column, turned into force by --gain")
+  o.force_opt = cmd->add_option("--force", o.force, "Applied force or torque column (N or N m), or an expression of columns after --scale, e.g. 'TorqueCur1 - Torque1'")->capture_default_str()->group("Data columns");
+  o.input_opt = cmd->add_option("--input", o.input, "Drive command column or expression, turned into force by --gain")
                     ->capture_default_str()
                     ->group("Data columns");
   cmd->add_option("--gain", o.gain, "Force per unit of --input: a number or a scalar variable of the file (e.g. gtau)")
@@ -96,6 +97,7 @@ Dataset load_data(const std::string& path, const ReadOptions& o, const std::stri
   if (!o.names.empty()) csv.names = split_names(o.names);
   csv.names_option = "--names";
   csv.drop_invalid_option = "--drop-invalid";
+  csv.defer_invalid = true;  // only the columns a command uses are checked
   const double dt = o.resample_given() ? parse_step(o.resample) : 0.0;  // a bad DT is named before the file is read
   Dataset d = load_dataset(path, csv);
   if (!o.names.empty() && d.lines.empty()) {
@@ -185,24 +187,18 @@ Eigen::VectorXd time_column(const Dataset& d, const DataOptions& o) {
   return t;
 }
 
-namespace {
-Eigen::VectorXd checked(const Dataset& d, const std::string& name, const std::string& role) {
-  return finite_column(d, name, role);
-}
-}  // namespace
-
 Eigen::VectorXd force_column(const Dataset& d, const DataOptions& o) {
   const bool force_given = o.force_opt && o.force_opt->count() > 0;
   const bool input_given = (o.input_opt && o.input_opt->count() > 0) || !o.gain.empty();
   const bool current_given = (o.current_opt && o.current_opt->count() > 0) || !o.kt.empty();
-  if (force_given || (!input_given && !current_given && d.has_column(o.force))) return checked(d, o.force, "--force");
+  if (force_given || (!input_given && !current_given && d.has_column(o.force))) return finite_signal(d, o.force, "--force");
   if (input_given || (!current_given && d.has_column(o.input))) {
     if (o.gain.empty())
       throw InputError(errc::option_invalid,
                        d.where() + "--gain is needed to turn the drive input '" + o.input +
                            "' into force (a number, N per unit of input, or a scalar variable of the file)",
                        {.file = d.file, .column = o.input, .option = "--gain"});
-    return resolve_constant(d, o.gain, "--gain") * checked(d, o.input, "--input");
+    return resolve_constant(d, o.gain, "--gain") * finite_signal(d, o.input, "--input");
   }
   if (d.has_column(o.current) || current_given) {
     if (o.kt.empty())
@@ -210,7 +206,7 @@ Eigen::VectorXd force_column(const Dataset& d, const DataOptions& o) {
                        d.where() + "--kt is needed to turn the current '" + o.current +
                            "' into torque (a number in N m/A, or a scalar variable of the file)",
                        {.file = d.file, .column = o.current, .option = "--kt"});
-    return resolve_constant(d, o.kt, "--kt") * checked(d, o.current, "--current");
+    return resolve_constant(d, o.kt, "--kt") * finite_signal(d, o.current, "--current");
   }
   throw InputError(errc::data_column_missing,
                    d.where() + "no applied force: expected a column '" + o.force + "' (--force), '" + o.input +
@@ -219,8 +215,8 @@ Eigen::VectorXd force_column(const Dataset& d, const DataOptions& o) {
                    {.file = d.file, .column = o.force, .option = "--force"});
 }
 
-Eigen::VectorXd velocity_column(const Dataset& d, const DataOptions& o) { return checked(d, o.velocity, "--velocity"); }
+Eigen::VectorXd velocity_column(const Dataset& d, const DataOptions& o) { return finite_signal(d, o.velocity, "--velocity"); }
 
-Eigen::VectorXd position_column(const Dataset& d, const DataOptions& o) { return checked(d, o.position, "--position"); }
+Eigen::VectorXd position_column(const Dataset& d, const DataOptions& o) { return finite_signal(d, o.position, "--position"); }
 
 }  // namespace frictionlab::cli

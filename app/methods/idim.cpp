@@ -6,6 +6,7 @@
 #include "../flag_names.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/identify/idim.hpp"
+#include "frictionlab/io/column_expression.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "method.hpp"
 
@@ -15,8 +16,8 @@ namespace {
 // The record's columns; the load and temperature columns (--load, --temperature) when given.
 IdimData idim_data(const Dataset& d, const DataOptions& c, const OptionValues& options) {
   IdimData x = trajectory_record(d, c, options.text("from"));
-  if (options.given("load")) x.load = finite_column(d, options.text("load"), "--load");
-  if (options.given("temperature")) x.temperature = finite_column(d, options.text("temperature"), "--temperature");
+  if (options.given("load")) x.load = finite_signal(d, options.text("load"), "--load");
+  if (options.given("temperature")) x.temperature = finite_signal(d, options.text("temperature"), "--temperature");
   return x;
 }
 

@@ -8,6 +8,7 @@
 #include "method.hpp"
 #include "frictionlab/identify/static_fit.hpp"
 #include "frictionlab/identify/sweep.hpp"
+#include "frictionlab/io/column_expression.hpp"
 #include "frictionlab/io/columns.hpp"
 
 namespace frictionlab::cli {
@@ -17,7 +18,7 @@ Result run(const MethodIO& io, const OptionValues& options) {
   const Dataset d = load_data(io.data, io.columns);
   SweepData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns)};
   SweepOptions o = make_sweep_options(options);
-  if (options.given("reference")) o.reference = finite_column(d, options.text("reference"), "--reference");
+  if (options.given("reference")) o.reference = finite_signal(d, options.text("reference"), "--reference");
   o.axis = io.columns.parsed_axis();
   Result r = identify_sweep(x, o);
   stamp(r, d);

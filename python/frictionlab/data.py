@@ -50,6 +50,25 @@ class Data(dict):
                            f"(1xN or Nx1) of {rows} samples like the columns: {contents}")
         raise KeyError(f"{where}no column '{key}'; the file has columns: {contents}")
 
+    def eval(self, expression):
+        """The value of an expression of columns, as the command line's column options take it
+        (``--force 'TorqueCur1 - Torque1'``): a new 1-D float64 array of the columns' length.
+
+        The expression holds column and scalar names, numbers, ``+ - * /`` and parentheses; a
+        name with spaces or operators goes between backquotes (```Torque cur [A]```). Columns
+        are taken as they are in this dict now, so scale them first (``d["Torque1"] *= 1e-3``).
+        Nothing is executed: names are only this data's columns and scalars.
+
+        Raises ValueError naming the character of a syntax error, a missing column (with the
+        file's columns) or the line of a non-finite sample; TypeError when ``expression`` is not
+        a str.
+        """
+        if not isinstance(expression, str):
+            raise TypeError(f"Data.eval: expression: expected a str, got {type(expression).__name__}")
+        lines = [] if self.lines is None else [int(x) for x in self.lines]
+        return _core._column_expression([(name, self[name]) for name in self.columns], self.scalars, self.file, lines,
+                                        expression)
+
     def __repr__(self):
         rows = len(self[self.columns[0]]) if self.columns else 0
         return (f"Data(file={self.file!r}, rows={rows}, columns={self.columns}, "

@@ -3,6 +3,7 @@
 
 #include "common.hpp"
 #include "io/atomic_write.hpp"
+#include "frictionlab/io/column_expression.hpp"
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/io/load.hpp"
@@ -71,6 +72,21 @@ void init_io(py::module_& m) {
         py::arg("max_gap") = 0.0, py::arg("time") = "",
         "Reads a CSV (header row or none) or MAT file, optionally resampled onto a uniform grid: ([(name, column)], "
         "{scalar: value}, file, sha256, csv line numbers, {header_row, warnings, unusable, contents, resampling}).");
+
+  m.def("_column_expression",
+        [](const std::vector<std::pair<std::string, py::object>>& columns, const std::map<std::string, double>& scalars,
+           const std::string& file, const std::vector<std::size_t>& lines, const std::string& expression) {
+          Dataset d;
+          d.file = file;
+          d.scalars = scalars;
+          // Non-finite samples are let through here: the expression names the row of one it uses.
+          const ArraySpec spec{.min_size = 0, .finite = false};
+          for (const auto& [name, values] : columns) d.add_column(name, vector_arg(values, "Data.eval", name, spec));
+          if (lines.size() == static_cast<std::size_t>(d.rows())) d.lines = lines;
+          return to_array(evaluate_column_expression(d, expression, "expression"));
+        },
+        py::arg("columns"), py::arg("scalars"), py::arg("file"), py::arg("lines"), py::arg("expression"),
+        "The value of an expression of columns (io/column_expression.hpp) over [(name, column)] and {scalar: value}.");
 
   m.def("load_law", [](const py::object& p) { return load_law(path_arg(p, "load_law")); }, py::arg("path"),
         "Reads a friction law from a .yaml/.yml file ({law: NAME, params...}) or a .json file (the same, or the "

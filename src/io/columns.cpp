@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cstdio>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -51,6 +52,8 @@ const Eigen::VectorXd& select_column(const Dataset& data, const std::string& nam
     throw InputError(errc::data_column_missing, data.missing_column_message(name, role),
                      {.file = data.file, .column = name, .option = option_of(role)});
   }
+  // A bad cell the reader left to the command that uses the column (CsvOptions::defer_invalid).
+  if (const auto bad = data.invalid_cells.find(name); bad != data.invalid_cells.end()) throw bad->second;
   return data.column(name);
 }
 
@@ -134,7 +137,10 @@ void resample_dataset(Dataset& data, const std::string& time_column, ResampleOpt
   // Every column is interpolated before any is replaced, so a bad value leaves `data` unchanged.
   std::vector<std::pair<std::string, Eigen::VectorXd>> out;
   for (const auto& name : data.column_names()) {
-    out.emplace_back(name, name == time_column ? resampler.time() : resampler.apply(data.column(name), name));
+    if (name == time_column) out.emplace_back(name, resampler.time());
+    else if (data.invalid_cells.count(name) != 0)  // unusable either way: its use refuses it, naming the file's line
+      out.emplace_back(name, Eigen::VectorXd::Constant(resampler.time().size(), std::numeric_limits<double>::quiet_NaN()));
+    else out.emplace_back(name, resampler.apply(data.column(name), name));
   }
   Dataset resampled;
   resampled.file = data.file;
@@ -144,6 +150,7 @@ void resample_dataset(Dataset& data, const std::string& time_column, ResampleOpt
   resampled.names_option = data.names_option;
   resampled.unusable = data.unusable;
   resampled.warnings = data.warnings;
+  resampled.invalid_cells = data.invalid_cells;
   for (auto& [name, values] : out) resampled.add_column(name, std::move(values));
   resampled.resampling = resampler.report();
   for (const auto& w : resampler.report().warnings) resampled.warnings.push_back(data.where() + w);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <locale.h>
 #include <set>
 #include <stdexcept>
@@ -157,26 +158,28 @@ Dataset read_csv(const std::string& path, const CsvOptions& options) {
       if (kind == Cell::number) continue;
       const std::string where = at_line(path, line_no) + ", column " + std::to_string(c + 1) + " '" + names[c] + "': ";
       const ErrorFields fields{.file = path, .row = line_no, .column = names[c], .value = cells[c]};
+      const bool droppable = kind == Cell::empty || kind == Cell::not_finite;
+      if (droppable && options.drop_invalid) {
+        invalid = true;
+        continue;
+      }
+      // Refused now, or (defer_invalid) when a command uses the column.
+      const auto refuse = [&](const char* code, const std::string& message) {
+        if (!options.defer_invalid) throw InputError(code, message, fields);
+        data.invalid_cells.try_emplace(names[c], code, message, fields);
+        row[c] = std::numeric_limits<double>::quiet_NaN();
+      };
       if (kind == Cell::text) {
         const bool decimal_comma = delimiter != ',' && cells[c].find(',') != std::string::npos;
-        throw InputError(errc::data_not_a_number,
-                         where + "expected a number, got '" + cells[c] + "'" +
-                             (decimal_comma ? " (a decimal comma? numbers need a decimal point)" : ""),
-                         fields);
+        refuse(errc::data_not_a_number, where + "expected a number, got '" + cells[c] + "'" +
+                                            (decimal_comma ? " (a decimal comma? numbers need a decimal point)" : ""));
+      } else if (kind == Cell::too_large) {
+        refuse(errc::data_not_finite,
+               where + "'" + cells[c] + "' is out of the range of a double (magnitude above 1.8e308); expected a finite number");
+      } else {
+        refuse(errc::data_not_finite, where + (kind == Cell::empty ? "empty cell" : "'" + cells[c] + "'") +
+                                          "; expected a finite number (use " + options.drop_invalid_option + " to skip such rows)");
       }
-      if (kind == Cell::too_large) {
-        throw InputError(errc::data_not_finite,
-                         where + "'" + cells[c] +
-                             "' is out of the range of a double (magnitude above 1.8e308); expected a finite number",
-                         fields);
-      }
-      if (!options.drop_invalid) {
-        throw InputError(errc::data_not_finite,
-                         where + (kind == Cell::empty ? "empty cell" : "'" + cells[c] + "'") +
-                             "; expected a finite number (use " + options.drop_invalid_option + " to skip such rows)",
-                         fields);
-      }
-      invalid = true;
     }
     return !invalid;
   };

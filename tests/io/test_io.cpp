@@ -79,6 +79,30 @@ TEST(Csv, NanAndEmptyCellsNameRowAndColumn) {
   EXPECT_NE(text_msg.find("line 3, column 2 'force': expected a number, got 'abc'"), std::string::npos) << text_msg;
 }
 
+
+// A robot log's column the command does not use (a status text, a sensor that dropped out) must not
+// refuse the file: with defer_invalid the bad cell is refused only when its column is used, with
+// the message the reader would have given, also after resampling.
+TEST(Csv, DeferredCellsAreRefusedOnlyWhenTheirColumnIsUsed) {
+  TempDir d;
+  const auto p = d.file("robot.csv", "time,force,status,temp\n0,1,OK,20\n0.001,2,OK,nan\n0.002,3,FAULT,\n0.003,4,OK,21\n");
+  fl::CsvOptions o;
+  o.defer_invalid = true;
+  fl::Dataset data = fl::read_csv(p, o);
+  ASSERT_EQ(data.rows(), 4);
+  EXPECT_EQ(fl::finite_column(data, "force", "--force")[3], 4.0);
+  EXPECT_EQ(error_of([&] { fl::finite_column(data, "status", "--load"); }),
+            p + ": line 2, column 3 'status': expected a number, got 'OK'");
+  EXPECT_EQ(error_of([&] { fl::select_column(data, "temp", "--temperature"); }),
+            p + ": line 3, column 4 'temp': 'nan'; expected a finite number (use drop_invalid to skip such rows)");
+  fl::ResampleOptions r;
+  fl::resample_dataset(data, "time", r);
+  EXPECT_EQ(fl::finite_column(data, "force")[2], 3.0);
+  EXPECT_EQ(error_of([&] { fl::finite_column(data, "temp"); }),
+            p + ": line 3, column 4 'temp': 'nan'; expected a finite number (use drop_invalid to skip such rows)");
+  // Without defer_invalid the file is refused at its first bad cell, as before.
+  EXPECT_EQ(error_of([&] { fl::read_csv(p); }), p + ": line 2, column 3 'status': expected a number, got 'OK'");
+}
 TEST(Csv, WrongCellCountAndHeaderProblems) {
   TempDir d;
   EXPECT_NE(error_of([&] { fl::read_csv(d.file("n.csv", "a,b\n1,2\n3\n")); }).find("line 3: 1 cells; expected 2"),

@@ -201,3 +201,26 @@ def test_import_does_not_load_matio_until_a_mat_file_is_read(source_dir):
     r = subprocess.run([sys.executable, "-c", "import sys\n" + code, str(mat)], capture_output=True, text=True,
                        env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
     assert r.returncode == 0, r.stderr
+
+
+def test_eval_derived_columns_as_the_command_line_takes_them(tmp_path, emps):
+    p = tmp_path / "joint.csv"
+    p.write_text("time,TorqueCur1,Torque1,Current [A]\n0,5,1,1\n1,6,2.5,2\n2,7.5,3,4\n")
+    d = fl.load(p)
+    # Exact in double: sums of small binary fractions.
+    np.testing.assert_array_equal(d.eval("TorqueCur1 - Torque1"), [4.0, 3.5, 4.5])
+    np.testing.assert_array_equal(d.eval("-(TorqueCur1 - Torque1) / 2 + 2 * `Current [A]`"), [0.0, 2.25, 5.75])
+    # Columns as they are now: scaled in numpy first.
+    d["Torque1"] = d["Torque1"] * 2
+    np.testing.assert_array_equal(d.eval("TorqueCur1 - Torque1"), [3.0, 1.0, 1.5])
+    # A MAT file's scalar: the EMPS drive force gtau * vir.
+    f = emps.eval("gtau * vir")
+    np.testing.assert_allclose(f, emps["gtau"] * emps["vir"], rtol=0, atol=0)
+    with pytest.raises(ValueError, match=r"joint.csv: no column 'Torq1' \(expression 'TorqueCur1 - Torq1'\)"):
+        d.eval("TorqueCur1 - Torq1")
+    with pytest.raises(ValueError, match="the backquote at character 1 is not closed"):
+        d.eval("`Current [A]")
+    with pytest.raises(ValueError, match=r"line 2: expression 'TorqueCur1 / \(Torque1 - 2\)' is inf"):
+        d.eval("TorqueCur1 / (Torque1 - 2)")
+    with pytest.raises(TypeError, match="expression: expected a str"):
+        d.eval(3)

@@ -29,7 +29,9 @@ void expect_refused(const std::string& text, const std::string& key, const std::
   } catch (const InputError& e) {
     EXPECT_EQ(e.fields().key, key) << e.what();
     EXPECT_EQ(e.fields().file, "s.yaml") << e.what();
-    if (!also.empty()) EXPECT_NE(std::string(e.what()).find(also), std::string::npos) << e.what();
+    if (!also.empty()) {
+      EXPECT_NE(std::string(e.what()).find(also), std::string::npos) << e.what();
+    }
   }
 }
 

@@ -17,7 +17,8 @@ namespace frictionlab FRICTIONLAB_API {
 /// "--position"). \throws std::invalid_argument "FILE: no column 'NAME' (ROLE); the file has
 /// columns: a, b, c (scalars: g)", or, when NAME is a scalar or a MAT variable of the wrong
 /// shape or type, "FILE: variable 'NAME' (ROLE) is a 3x4 matrix; expected ..."
-/// (Dataset::missing_column_message).
+/// (Dataset::missing_column_message); or the reader's error for a column with a cell that is not
+/// a finite number (Dataset::invalid_cells: "FILE: line 102, column 4 'NAME': 'nan'; expected ...").
 const Eigen::VectorXd& select_column(const Dataset& data, const std::string& name, const std::string& role = "");
 
 /// select_column, and every sample finite. The one check of a loaded column's presence, shape,

@@ -45,6 +45,12 @@ struct CsvOptions {
   /// How the user sets drop_invalid, for messages ("--drop-invalid" on the command line).
   /// Default "drop_invalid".
   std::string drop_invalid_option = "drop_invalid";
+  /// Leave a cell that is not a finite number (empty, NaN, inf, out of range, text) to the
+  /// command: the column holds NaN there and Dataset::invalid_cells records the first such cell
+  /// of each column with the error that would have refused the file; using that column then
+  /// refuses it (io/columns.hpp select_column). Default false: the file is refused at once.
+  /// drop_invalid takes precedence for empty, NaN and infinite cells.
+  bool defer_invalid = false;
 };
 
 /// Reads a CSV file into a Dataset of columns; sets file, sha256, header_row and the line number
@@ -58,7 +64,8 @@ struct CsvOptions {
 ///         out-of-range cell (the first two unless drop_invalid), a wrong number of cells, an
 ///         unterminated quote, a first row mixing numbers and text (detect), a first row of
 ///         numbers (required), an empty or duplicate name (naming names_option when it came from
-///         `names`), more names than columns, no data rows, or a file that cannot be read.
+///         `names`), more names than columns, no data rows, or a file that cannot be read. With
+///         defer_invalid, bad cells are recorded in Dataset::invalid_cells instead.
 Dataset read_csv(const std::string& path, const CsvOptions& options = {});
 
 }  // namespace frictionlab

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "frictionlab/error.hpp"
 #include "frictionlab/signal/sampling.hpp"
 
 #include "frictionlab/export.hpp"
@@ -42,6 +43,11 @@ class Dataset {
   /// What reading or resampling changed without refusing the data (merged time stamps, ...),
   /// one sentence each; commands pass them on as warnings.
   std::vector<std::string> warnings;
+  /// Cells a reader could not take as finite numbers but left to the command that uses their
+  /// column (CsvOptions::defer_invalid): the first such cell of each column, as the error that
+  /// names its file, line and column. The column holds NaN there. select_column (io/columns.hpp)
+  /// throws this error for such a column, so a bad cell in a column no command uses is harmless.
+  std::map<std::string, InputError> invalid_cells;
 
   /// Adds a column (or replaces one of the same name). Shape: values of length rows() unless
   /// this is the first column. \throws std::invalid_argument naming the column, its length and
