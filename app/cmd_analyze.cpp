@@ -23,6 +23,7 @@
 #include "frictionlab/analysis/stick_slip.hpp"
 #include "frictionlab/format.hpp"
 #include "methods/method.hpp"
+#include "frictionlab/io/column_expression.hpp"
 #include "frictionlab/io/load.hpp"
 
 namespace frictionlab::cli {
@@ -46,15 +47,10 @@ struct AnalyzeArgs {
 // NaN is not JSON: null instead.
 nlohmann::json num(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
+// A column (or an expression of columns) the analysis uses, checked finite (io/column_expression.hpp).
 std::vector<double> column(const Dataset& d, const std::string& name, const std::string& option) {
-  if (!d.has_column(name)) throw std::invalid_argument(d.missing_column_message(name, option));
-  const Eigen::VectorXd& c = d.column(name);
-  std::vector<double> out(c.data(), c.data() + c.size());
-  for (std::size_t i = 0; i < out.size(); ++i)
-    if (!std::isfinite(out[i]))
-      throw std::invalid_argument(d.where() + d.row_label(static_cast<Eigen::Index>(i)) + ", column '" + name +
-                                  "': expected a finite number");
-  return out;
+  const Eigen::VectorXd c = finite_signal(d, name, option);
+  return {c.data(), c.data() + c.size()};
 }
 
 nlohmann::json envelope_json(const EnvelopeResult& r) {
@@ -210,7 +206,7 @@ bool run_stick_slip(const AnalyzeArgs& a, const Dataset& d, const std::vector<do
                     std::vector<ReportFigure>& figures, std::string& text) {
   const std::vector<double> v = column(d, a.velocity, "--velocity");
   std::vector<double> f;
-  if (d.has_column(a.force)) f = column(d, a.force, "--force");
+  if (d.has_column(a.force) || is_column_expression(d, a.force)) f = column(d, a.force, "--force");
   StickSlipOptions o;
   o.velocity_threshold = a.threshold;
   StickSlipResult ss;
