@@ -147,16 +147,18 @@ def python_page(build):
 
 
 def header_summary(path):
-    """The opening comment of a header (its first // lines), as one paragraph."""
+    """The first sentence of a header's opening comment (its first // lines up to a blank one)."""
     words = []
     with open(path, encoding="utf-8") as f:
         for line in f:
             if line.startswith("#pragma"):
                 continue
-            if not line.startswith("//"):
+            if not line.startswith("//") or not line[2:].strip():
                 break
             words.append(line[2:].strip())
-    return " ".join(words)
+    text = " ".join(words)
+    m = re.match(r"(.+?[.:;])(\s|$)", text)
+    return (m.group(1) if m else text).rstrip(":;") + ("" if not text or text.endswith(".") else "")
 
 
 def cpp_page(src, pages):
