@@ -5,11 +5,12 @@
 source "$(dirname "$0")/lib.sh"
 cd "$tmp"
 
-"$exe" simulate "$src/examples/canudas_stick_slip.yaml" -o stick_slip.csv > sim.txt
+# The summary goes to stderr (stdout may carry the CSV).
+"$exe" simulate "$src/examples/canudas_stick_slip.yaml" -o stick_slip.csv 2> sim.txt
 grep -E '^final +position [-0-9.e+]+ m, velocity [-0-9.e+]+ m/s$' sim.txt || { cat sim.txt; fail "simulate: final line without m and m/s"; }
 grep -E '^peak +\|velocity\| [-0-9.e+]+ m/s, \|friction\| [-0-9.e+]+ N$' sim.txt || { cat sim.txt; fail "simulate: peak line without m/s and N"; }
 
-"$exe" simulate "$src/examples/craig_pendulum_combined.yaml" -o pendulum.csv > pend.txt
+"$exe" simulate "$src/examples/craig_pendulum_combined.yaml" -o pendulum.csv 2> pend.txt
 grep -E '^final +position [-0-9.e+]+ rad, velocity [-0-9.e+]+ rad/s$' pend.txt || { cat pend.txt; fail "simulate: a pendulum's final line not in rad and rad/s"; }
 grep -E '\|friction\| [-0-9.e+]+ N m$' pend.txt || { cat pend.txt; fail "simulate: a pendulum's friction not in N m"; }
 
