@@ -1,7 +1,8 @@
 # frictionlab: the two commands of the quick start, and a few more for developers.
 #   make demo   install what is missing, build, identify friction on the bundled EMPS data, write a report
 #   make test   install what is missing, build, run every test (C++, CLI, Python, examples)
-# Others: make build, make sanitize (tests under ASan+UBSan), make bench, make install-test,
+# Others: make build, make docs (the documentation site in $(BUILD)/docs/html), make sanitize (tests under
+# ASan+UBSan), make bench, make install-test,
 # make coverage (the whole coverage table of idim's standard deviations, docs/coverage.md),
 # make fuzz (the libFuzzer targets of tests/fuzz, FUZZ_SECONDS each), make fuzz-merge, make clean.
 
@@ -20,7 +21,7 @@ FUZZ_SECONDS      ?= 600
 FUZZ_TEST_SECONDS ?= 15
 FUZZERS            = fuzz_csv fuzz_mat fuzz_scenario fuzz_law
 
-.PHONY: all deps build test demo sanitize bench install-test coverage clean fuzz-build fuzz fuzz-test fuzz-merge
+.PHONY: all deps build test docs demo sanitize bench install-test coverage clean fuzz-build fuzz fuzz-test fuzz-merge
 
 all: build
 
@@ -35,6 +36,12 @@ test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	@$(MAKE) --no-print-directory install-test
 	@$(MAKE) --no-print-directory fuzz-test
+
+# The documentation site: docs/*.md and the generated references (CLI, methods, Python, C++), with
+# Sphinx + MyST and Doxygen, warnings as errors (tests/docs/build_site.py; ctest docs.site).
+docs: build
+	@$(PYTHON) tests/docs/build_site.py $(CURDIR) $(BUILD)
+	@echo "site: $(BUILD)/docs/html/index.html"
 
 demo: build
 	@bash examples/demo.sh $(BUILD)

@@ -16,6 +16,7 @@
 #include "figures.hpp"
 #include "map_command.hpp"
 #include "frictionlab/io/json_text.hpp"
+#include "frictionlab/models/parameter.hpp"
 #include "report/figure.hpp"
 #include "output.hpp"
 #include "frictionlab/analysis/contour.hpp"
@@ -40,6 +41,7 @@ struct AnalyzeArgs {
   CLI::Option *x_reference_opt = nullptr, *y_reference_opt = nullptr;
   OutputOptions output;  // --json, --plot, --overwrite (no --report)
   double threshold = 0.0;
+  std::string axis = "linear";  // envelope, stick-slip: the units of the text (m or rad, m/s or rad/s, N or N m)
   ReadOptions read;  // --names, --resample, --max-gap, --drop-invalid
   MapArgs map;       // analyze map: --vary, --jobs, --shard, --contact, -o, --transient, --tolerance
 };
@@ -89,34 +91,37 @@ nlohmann::json stick_slip_json(const StickSlipResult& r) {
           {"slip", intervals(r.slip)}};
 }
 
-std::string envelope_text(const EnvelopeResult& r) {
+std::string envelope_text(const EnvelopeResult& r, Axis axis) {
   const auto n = [](double x) { return format_number(x); };
+  const std::string pos = " " + std::string(unit(Quantity::displacement, axis));
   std::ostringstream o;
   o << "decay        " << decay_kind_name(r.kind) << " (" << r.amplitudes.size() << " half cycles, half period "
     << n(r.half_period) << " s)\n"
-    << "amplitude    " << n(r.amplitudes.front()) << " -> " << n(r.amplitudes.back()) << " (lost "
+    << "amplitude    " << n(r.amplitudes.front()) << pos << " -> " << n(r.amplitudes.back()) << pos << " (lost "
     << n(100.0 * r.decay_fraction) << " %)\n"
-    << "linear       " << n(r.decrement_per_half_cycle) << " per half cycle (rms " << n(100 * r.linear.relative_rms)
+    << "linear       " << n(r.decrement_per_half_cycle) << pos << " per half cycle (rms " << n(100 * r.linear.relative_rms)
     << " %)\n"
     << "exponential  rate " << n(r.exponential.lambda) << " 1/s, log decrement " << n(r.log_decrement) << " (rms "
     << n(100 * r.exponential.relative_rms) << " %)\n"
-    << "mixed        rate " << n(r.mixed.lambda) << " 1/s, offset " << n(r.mixed.q) << " (rms "
+    << "mixed        rate " << n(r.mixed.lambda) << " 1/s, offset " << n(r.mixed.q) << pos << " (rms "
     << n(100 * r.mixed.relative_rms) << " %)\n";
   return o.str();
 }
 
-std::string stick_slip_text(const StickSlipResult& r, bool with_force) {
+std::string stick_slip_text(const StickSlipResult& r, bool with_force, Axis axis) {
   const auto n = [](double x) { return format_number(x); };
+  const std::string vel = " " + std::string(unit(Quantity::velocity, axis));
+  const std::string force = " " + std::string(unit(Quantity::force, axis));
   std::ostringstream o;
-  o << "slips        " << r.slip.size() << " (velocity threshold " << n(r.velocity_threshold) << ")\n"
+  o << "slips        " << r.slip.size() << " (velocity threshold " << n(r.velocity_threshold) << vel << ")\n"
     << "period       " << (std::isfinite(r.period) ? n(r.period) + " s" : std::string("n/a (fewer than two slips)"))
     << "\n"
-    << "peak slip    " << n(r.peak_slip_velocity) << " (velocity unit)\n"
+    << "peak slip    " << n(r.peak_slip_velocity) << vel << "\n"
     << "slip length  " << n(r.mean_slip_duration) << " s (mean)\n";
   if (with_force)
-    o << "breakaway    " << n(r.mean_breakaway_force) << " (force unit, mean)\n"
-      << "re-stick     " << n(r.mean_restick_force) << "\n"
-      << "force drop   " << n(r.mean_force_drop) << "\n";
+    o << "breakaway    " << n(r.mean_breakaway_force) << force << " (mean)\n"
+      << "re-stick     " << n(r.mean_restick_force) << force << " (mean)\n"
+      << "force drop   " << n(r.mean_force_drop) << force << " (mean)\n";
   return o.str();
 }
 
@@ -168,7 +173,7 @@ bool run_envelope(const AnalyzeArgs& a, const Dataset& d, const std::vector<doub
   }
   r.json_sections["result"] = json_text(envelope_json(e));
   if (!a.output.plot.empty()) figures.push_back({"fit", "", envelope_figure(t, x, e, name)});
-  text = envelope_text(e);
+  text = envelope_text(e, parse_axis(a.axis));
   return true;
 }
 
@@ -222,7 +227,7 @@ bool run_stick_slip(const AnalyzeArgs& a, const Dataset& d, const std::vector<do
   }
   r.json_sections["result"] = json_text(stick_slip_json(ss));
   if (!a.output.plot.empty()) figures.push_back({"fit", "", stick_slip_figure(t, v, f, ss, name)});
-  text = stick_slip_text(ss, !f.empty());
+  text = stick_slip_text(ss, !f.empty(), parse_axis(a.axis));
   return true;
 }
 
@@ -290,6 +295,10 @@ Handler register_analyze(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--threshold", a->threshold,
                   "stick-slip: |v| at or below counts as stuck (0 = automatic: exact zeros or 1 % of max |v|)");
+  cmd->add_option("--axis", a->axis,
+                  "envelope, stick-slip: linear (m, m/s, N) or rotary (rad, rad/s, N m): the units of the text")
+      ->check(CLI::IsMember({"linear", "rotary"}))
+      ->capture_default_str();
   CLI::Option* json = cmd->add_option("--json", a->output.json, "write the result as JSON to FILE, or '-' for stdout");
   add_plot_option(cmd, a->output.plot);
   cmd->add_flag("--overwrite", a->output.overwrite, "replace an existing --json or --plot file");

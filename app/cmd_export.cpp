@@ -272,6 +272,14 @@ Handler register_export(CLI::App& app) {
                 << (a->compensation.empty() ? "" : " with " + a->compensation) << ", "
                 << (a->single ? "float" : "double") << ")\n";
     }
+    // The identified offset is a constant force of the rig (gravity on an inclined axis, a
+    // cable, a current sensor's bias), not friction: the header's friction and its compensation
+    // leave it out. Said, not dropped in silence.
+    if (m.offset && *m.offset != 0.0)
+      std::cerr << "not in the header: parameters.offset = " << format_number(*m.offset, 6) << " "
+                << unit(Quantity::force, m.axis.value_or(Axis::linear))
+                << " (a constant force of the rig, not friction: a friction compensation leaves it out; add it "
+                   "to the drive's command yourself if it is a bias to cancel)\n";
     return 0;
   };
 }

@@ -85,8 +85,14 @@ int run(const PlanArgs& a) {
   const PlanRig rig = load_plan_rig(a.prior, a.scenario);
   progress_start("frictionlab plan " + a.method);
   o.progress = [](int k, int n) { progress_stage("Monte Carlo run " + std::to_string(k) + " of " + std::to_string(n)); };
-  const PlanResult r = plan_experiment(method, rig, o);
+  PlanResult r = plan_experiment(method, rig, o);
   progress_stop();
+  // Without sensor noise the Monte Carlo runs differ only by round-off: the predicted std are
+  // about 1e-19 and say nothing about a real measurement. Said in the text and the JSON.
+  if (a.noise.empty())
+    r.warnings.push_back("no --noise given: the predicted standard deviations come from round-off alone (a "
+                         "noise-free measurement), not from a real one; give the sensors' noise, e.g. --noise "
+                         "current=2e-4,velocity=0.5");
   const std::string text = text_of(r);
   const std::string json = plan_to_json(r, o, a.profile) + "\n";
   (a.json == "-" ? std::cerr : std::cout) << text;

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "frictionlab/format.hpp"
+#include "frictionlab/models/parameter.hpp"
 #include "contour_figure.hpp"
 #include "figures.hpp"
 #include "report/figure.hpp"
@@ -36,6 +37,11 @@ std::string summary(const std::string& file, const Scenario& sc, const Trajector
   std::ostringstream out;
   const int nc = tr.num_contacts();
   std::string laws, finals, peaks;
+  // Units of the plant's motion: m, m/s, N on a linear axis; rad, rad/s, N m on a rotary one.
+  const Axis axis = sc.plant->motion_axis();
+  const std::string pos = " " + std::string(unit(Quantity::displacement, axis));
+  const std::string vel = " " + std::string(unit(Quantity::velocity, axis));
+  const std::string force = " " + std::string(unit(Quantity::force, axis));
   for (int k = 0; k < nc; ++k) {
     const ContactColumns& c = tr.contact(k);
     double vmax = 0.0, fmax = 0.0;
@@ -46,8 +52,9 @@ std::string summary(const std::string& file, const Scenario& sc, const Trajector
     const std::string sep = k == 0 ? "" : "\n           ";
     const FrictionLaw* own = k < sc.plant->num_contacts() ? sc.plant->contact(k).law : nullptr;
     laws += sep + label_of(tr, k) + (own ? own->name() : sc.law.name());
-    finals += sep + label_of(tr, k) + "position " + format_number(c.position.back()) + ", velocity " + format_number(c.velocity.back());
-    peaks += sep + label_of(tr, k) + "|velocity| " + format_number(vmax) + ", |friction| " + format_number(fmax);
+    finals += sep + label_of(tr, k) + "position " + format_number(c.position.back()) + pos + ", velocity " +
+              format_number(c.velocity.back()) + vel;
+    peaks += sep + label_of(tr, k) + "|velocity| " + format_number(vmax) + vel + ", |friction| " + format_number(fmax) + force;
   }
   out << "scenario   " << file << "\n"
       << "plant      " << sc.plant->type() << "\n"

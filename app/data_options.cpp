@@ -90,7 +90,10 @@ void add_data_options(CLI::App* cmd, DataOptions& o, const std::string& default_
   add_read_options(cmd, o.read);
 }
 
-Dataset load_data(const std::string& path, const ReadOptions& o, const std::string& time_column) {
+namespace {
+
+// The file as read (CSV header rule, --names, --drop-invalid), not resampled.
+Dataset read_data(const std::string& path, const ReadOptions& o) {
   CsvOptions csv;
   csv.drop_invalid = o.drop_invalid;
   csv.header = CsvHeader::detect;
@@ -98,7 +101,6 @@ Dataset load_data(const std::string& path, const ReadOptions& o, const std::stri
   csv.names_option = "--names";
   csv.drop_invalid_option = "--drop-invalid";
   csv.defer_invalid = true;  // only the columns a command uses are checked
-  const double dt = o.resample_given() ? parse_step(o.resample) : 0.0;  // a bad DT is named before the file is read
   Dataset d = load_dataset(path, csv);
   if (!o.names.empty() && d.lines.empty()) {
     throw InputError(errc::option_conflict,
@@ -106,6 +108,11 @@ Dataset load_data(const std::string& path, const ReadOptions& o, const std::stri
                                  "own names: " + d.describe_contents(),
                      {.file = d.file, .option = "--names"});
   }
+  return d;
+}
+
+// --resample onto a uniform grid of the time column, when asked (dt checked by the caller).
+void resample_if_asked(Dataset& d, const ReadOptions& o, const std::string& time_column, double dt) {
   if (o.resample_given()) {
     select_column(d, time_column, "--time");  // a missing time column is named with its option
     ResampleOptions r;
@@ -115,12 +122,24 @@ Dataset load_data(const std::string& path, const ReadOptions& o, const std::stri
     r.max_gap_name = "--max-gap";
     resample_dataset(d, time_column, r);
   }
+}
+
+}  // namespace
+
+Dataset load_data(const std::string& path, const ReadOptions& o, const std::string& time_column) {
+  const double dt = o.resample_given() ? parse_step(o.resample) : 0.0;  // a bad DT is named before the file is read
+  Dataset d = read_data(path, o);
+  resample_if_asked(d, o, time_column, dt);
   return d;
 }
 
 Dataset load_data(const std::string& path, const DataOptions& o) {
-  Dataset d = load_data(path, o.read, o.time);
+  // The --scale factors first, then --resample: a time column in ms with --scale TIME=0.001 is
+  // resampled in seconds, so --resample DT, --max-gap and the resampling report are in s.
+  const double dt = o.read.resample_given() ? parse_step(o.read.resample) : 0.0;
+  Dataset d = read_data(path, o.read);
   apply_scales(d, o.scales, "--scale");
+  resample_if_asked(d, o.read, o.time, dt);
   return d;
 }
 

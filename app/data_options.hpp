@@ -59,7 +59,8 @@ void add_data_options(CLI::App* cmd, DataOptions& o, const std::string& default_
 /// \throws std::invalid_argument naming the file, row, column or option.
 Dataset load_data(const std::string& path, const ReadOptions& o, const std::string& time_column);
 
-/// load_data with o.read and o.time, then the --scale factors.
+/// The file read with o.read, the --scale factors applied, then resampled (--resample) on the
+/// scaled time column o.time: DT, --max-gap and the resampling report are in s.
 Dataset load_data(const std::string& path, const DataOptions& o);
 
 /// The result stamped with the data file, its digest and the data notes (note_data).

@@ -33,9 +33,12 @@
 namespace frictionlab::cli {
 
 // ---------------------------------------------------------------------------------------------
-// Progress line. A thread redraws "\r<task>: <stage> ... 3.2 s" on stderr every 0.25 s once the
-// run has taken a second; std::cout and std::cerr are routed through a buffer that erases the
-// line before any other text, so messages never land in the middle of it.
+// Progress line. On a terminal, a thread redraws "\r<task>: <stage> ... 3.2 s" on stderr every
+// 0.25 s once the run has taken a second; std::cout and std::cerr are routed through a buffer that
+// erases the line before any other text, so messages never land in the middle of it. When stderr
+// is not a terminal (a log, a pipe, a batch job), a run that has taken 2 s prints one whole line
+// "<task>: <stage> ... 3.2 s" every 3 s instead, so a slow run is never silent.
+// FRICTIONLAB_NO_PROGRESS (any value) turns both off.
 namespace {
 
 class Progress {
@@ -46,13 +49,14 @@ class Progress {
   }
 
   void start(const std::string& task) {
-    if (!::isatty(STDERR_FILENO) || std::getenv("FRICTIONLAB_NO_PROGRESS")) return;
+    if (std::getenv("FRICTIONLAB_NO_PROGRESS")) return;
     std::lock_guard lock(mutex_);
     if (thread_.joinable()) return;
+    tty_ = ::isatty(STDERR_FILENO) != 0;
     task_ = task;
     stage_ = "working";
-    begin_ = last_output_ = Clock::now();
-    install();
+    begin_ = last_output_ = last_line_ = Clock::now();
+    if (tty_) install();
     thread_ = std::jthread([this](std::stop_token stop) { loop(stop); });
   }
 
@@ -126,6 +130,16 @@ class Progress {
       if (stop.stop_requested()) break;
       std::lock_guard lock(mutex_);
       const auto now = Clock::now();
+      if (!tty_) {
+        if (now - begin_ < std::chrono::seconds(2) || now - last_line_ < std::chrono::seconds(3)) continue;
+        std::ostringstream line;
+        line << task_ << ": " << stage_ << " ... " << std::fixed << std::setprecision(1)
+             << std::chrono::duration<double>(now - begin_).count() << " s\n";
+        const std::string s = line.str();
+        [[maybe_unused]] const auto n = ::write(STDERR_FILENO, s.data(), s.size());
+        last_line_ = now;
+        continue;
+      }
       if (now - begin_ < std::chrono::seconds(1) || now - last_output_ < std::chrono::milliseconds(500)) continue;
       std::ostringstream line;
       line << "\r\033[K" << task_ << ": " << stage_ << " ... " << std::fixed << std::setprecision(1)
@@ -140,8 +154,9 @@ class Progress {
   std::condition_variable_any wake_;
   std::jthread thread_;
   std::string task_, stage_;
-  Clock::time_point begin_, last_output_;
+  Clock::time_point begin_, last_output_, last_line_;
   bool shown_ = false;
+  bool tty_ = false;
   std::unique_ptr<Routing> cout_, cerr_;
 };
 

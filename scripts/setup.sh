@@ -13,6 +13,7 @@ packages=(
   python3-venv python3-pip python3-setuptools python3-wheel gnuplot-nox
   chromium  # the headless browser of the report test (tests/cli/report_browser.sh)
   libmujoco-dev  # MuJoCo's C library: tests/export loads and runs the MJCF that export --mjcf writes
+  python3-sphinx python3-myst-parser doxygen  # the documentation site (make docs): Sphinx reads docs/*.md through MyST; Doxygen makes the C++ reference
   clang libfuzzer-14-dev libclang-rt-14-dev  # the libFuzzer targets (with ASan and UBSan runtimes) of tests/fuzz/ (make fuzz, and a bounded run in make test)
 )
 packages+=("$@")

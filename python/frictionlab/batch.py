@@ -16,6 +16,9 @@ Where it runs (``client``):
                      in one file's fit (an abort in the native code) to its worker. The cost is a
                      second or so to start the workers and pickling each row back (small dicts).
                      ``processes=False`` runs threads in this process instead (no start-up).
+                     From a script, call it under ``if __name__ == "__main__":`` (the workers
+                     import the script again); a call at a script's top level is refused at once
+                     with a RuntimeError that shows the guard, rather than starting for ever.
   a Client           any ``dask.distributed.Client`` (a remote scheduler: ``Client("tcp://host:8786")``,
                      a dask-jobqueue or Kubernetes cluster's client). Its workers need frictionlab
                      importable (same version) and the data files at the same paths.
@@ -51,6 +54,7 @@ import logging
 import math
 import numbers
 import os
+import sys
 
 import numpy as np
 
@@ -122,6 +126,9 @@ class Table:
 
     @property
     def failed(self):
+        """The rows whose status is not "ok" (none in a table without a status, as the drift table)."""
+        if "status" not in self.columns:
+            return []
         return [r for r in self.rows if r.get("status") != "ok"]
 
     def to_array(self):
@@ -162,8 +169,15 @@ class Table:
         _core._write_file_atomic(path, self.json_text(), overwrite)
 
     def __repr__(self):
-        return (f"Table({self.kind}: {len(self.rows)} rows, {len(self.ok)} ok, {len(self.failed)} failed; "
-                f"columns {self.columns})")
+        # A table of items (identify, simulate) counts its ok and failed rows; a drift table has
+        # no status (its rows are parameters of files that were identified) and counts the flagged.
+        if "status" in self.columns:
+            counts = f"{len(self.ok)} ok, {len(self.failed)} failed"
+        elif "flagged" in self.columns:
+            counts = f"{sum(1 for r in self.rows if r.get('flagged'))} flagged"
+        else:
+            counts = ""
+        return f"Table({self.kind}: {len(self.rows)} rows{', ' + counts if counts else ''}; columns {self.columns})"
 
 
 def _cell(v):
@@ -205,6 +219,57 @@ def _chunk_size(chunk, n_jobs, n_threads):
     return max(1, math.ceil(n_jobs / (CHUNKS_PER_THREAD * max(1, n_threads))))
 
 
+GUARD_EXAMPLE = '''import frictionlab as fl
+
+if __name__ == "__main__":   # worker processes import this script again: keep the batch under the guard
+    t = fl.batch.identify(...)'''
+
+
+def _guarded_main_call():
+    """None when a LocalCluster of worker processes can start from here; else the line of the
+    script (``__main__`` run from a file) that calls it outside ``if __name__ == "__main__":``.
+
+    Dask starts worker processes by spawning a fresh interpreter, which imports the main script
+    again: a batch called at the script's top level then starts again in every worker, which
+    starts workers of its own, and the call never returns. Detected from the call stack: the
+    script's module-level frame and whether its current line lies inside the guard (read from
+    the script's source with ast). Interactive sessions, ``python -c`` and notebooks have no
+    script file and are never refused."""
+    import ast
+
+    main = sys.modules.get("__main__")
+    path = getattr(main, "__file__", None)
+    if not path or not str(path).endswith(".py") or not os.path.isfile(path):
+        return None
+    frame = inspect.currentframe()
+    line = None
+    while frame is not None:
+        if frame.f_code.co_name == "<module>" and frame.f_globals.get("__name__") in ("__main__", "__mp_main__") \
+                and os.path.abspath(frame.f_code.co_filename) == os.path.abspath(path):
+            line = frame.f_lineno
+            break
+        frame = frame.f_back
+    if line is None:
+        return None
+    try:
+        with open(path, encoding="utf-8") as f:
+            tree = ast.parse(f.read(), path)
+    except (OSError, SyntaxError, ValueError):
+        return None
+
+    def is_guard(node):
+        if not isinstance(node, ast.If) or not isinstance(node.test, ast.Compare):
+            return False
+        sides = [node.test.left, *node.test.comparators]
+        return any(isinstance(s, ast.Name) and s.id == "__name__" for s in sides) and \
+            any(isinstance(s, ast.Constant) and s.value == "__main__" for s in sides)
+
+    for node in tree.body:
+        if is_guard(node) and node.lineno <= line <= (node.end_lineno or node.lineno):
+            return None
+    return f"{path}, line {line}"
+
+
 def _run(function, jobs, client, workers, processes, chunk=None):
     """[function(job) for job in jobs], serially (client None), on a LocalCluster made here
     ("local"), or on the given Client, in chunks of jobs (see _run_on). ``function`` returns a
@@ -216,6 +281,14 @@ def _run(function, jobs, client, workers, processes, chunk=None):
             raise ValueError(f"client = {client!r}: expected 'local', None (serial) or a dask.distributed.Client")
         if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
             raise ValueError(f"workers = {workers!r}: expected a whole number >= 1 of local workers")
+        if processes:
+            where = _guarded_main_call()
+            if where is not None:
+                raise RuntimeError(
+                    f"frictionlab.batch: a LocalCluster of worker processes started at the top level of a script "
+                    f"({where}): each worker imports the script again and would start the batch again, so the call "
+                    f"would never return. Put the batch under the main guard:\n\n{GUARD_EXAMPLE}\n\n"
+                    f"or run the workers as threads in this process (processes=False), or serially (client=None).")
         from distributed import Client, LocalCluster
 
         # silence_logs: the cluster's own log lines (a worker's "scheduler was unaware of this

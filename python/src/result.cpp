@@ -50,11 +50,13 @@ std::string result_repr(const Result& r) {
     return s.str();
   }
   s << parameter_table(r.parameters);
-  s << "  fit: relative error " << num(r.fit.relative_error_percent, 4) << " %, rmse " << num(r.fit.rmse, 4) << ", "
-    << r.fit.samples << " samples\n";
+  // rmse in the fitted signal's unit on the result's axis (N, N m, J, m); none when it has none.
+  const std::string unit = r.fit.unit.empty() ? std::string() : " " + r.fit.unit;
+  s << "  fit: relative error " << num(r.fit.relative_error_percent, 4) << " %, rmse " << num(r.fit.rmse, 4) << unit
+    << ", " << r.fit.samples << " samples\n";
   if (r.validation)
     s << "  validation " << r.validation->file << ": relative error " << num(r.validation->relative_error_percent, 4)
-      << " %, rmse " << num(r.validation->rmse, 4) << "\n";
+      << " %, rmse " << num(r.validation->rmse, 4) << unit << "\n";
   if (std::isfinite(r.diagnostics.condition_number))
     s << "  condition number " << num(r.diagnostics.condition_number, 4) << "\n";
   for (const auto& w : r.diagnostics.warnings) s << "  warning: " << w << "\n";
@@ -88,7 +90,8 @@ void init_result(py::module_& m) {
       .def_readonly("unit", &FitFigures::unit, "rmse's unit on the result's axis ('N', 'N m', 'J', 'm'); '' when none.")
       .def("__repr__", [](const FitFigures& f) {
         return "FitFigures(relative_error_percent=" + num(f.relative_error_percent) + ", rmse=" + num(f.rmse) +
-               ", samples=" + std::to_string(f.samples) + ")";
+               (f.unit.empty() ? std::string() : ", unit='" + f.unit + "'") + ", samples=" + std::to_string(f.samples) +
+               ")";
       });
 
   py::class_<ValidationFigures>(m, "ValidationFigures", "Fit figures of an identified model on a second data set.")

@@ -91,4 +91,18 @@ cmp -s "$tmp/model.json" "$tmp/model.keep" || fail "the model file was changed"
 expect_fail "exists; pass --overwrite" export "$tmp/model.json" --c "$tmp/drive.h"
 expect 0 "" export "$tmp/lugre.json" --c "$tmp/drive.h" --overwrite
 grep -q 'friction_update' "$tmp/drive.h" || fail "--overwrite did not replace the header"
+
+# 4. An identified offset is not friction: the header leaves it out and says so on stderr, with its
+#    value and unit; a model without an offset gets no such line.
+cat > "$tmp/biased.json" <<'EOF'
+{"schema": 1, "status": "ok", "message": "", "method": "idim", "model": "coulomb-viscous", "axis": "rotary",
+ "law": {"law": "coulomb-viscous", "Fc": 1.25, "Fv": 0.4},
+ "parameters": {"M": {"value": 2.5, "std": 0.01, "unit": "kg m^2"}, "offset": {"value": -3.25, "std": 0.01, "unit": "N m"}}}
+EOF
+"$exe" export "$tmp/biased.json" --c "$tmp/biased.h" 2> "$tmp/biased.err"
+grep -qF "not in the header: parameters.offset = -3.25 N m (a constant force of the rig, not friction" "$tmp/biased.err" \
+  || { cat "$tmp/biased.err"; fail "the offset was dropped without a word"; }
+grep -q "offset" "$tmp/biased.h" && fail "the header carries the offset"
+"$exe" export "$tmp/model.json" --c "$tmp/plain.h" 2> "$tmp/plain.err"
+grep -q "offset" "$tmp/plain.err" && fail "a model without an offset got an offset line"
 echo "ok"

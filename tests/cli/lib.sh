@@ -19,7 +19,8 @@ expect() {
   local want_code="$1" want="$2"
   shift 2
   set +e
-  "$exe" "$@" > "$tmp/out.txt" 2> "$tmp/err.txt"
+  # No progress lines: a slow run's stderr would hold them besides the one-line message.
+  FRICTIONLAB_NO_PROGRESS=1 "$exe" "$@" > "$tmp/out.txt" 2> "$tmp/err.txt"
   local code=$?
   set -e
   [ "$code" -eq "$want_code" ] || { cat "$tmp/err.txt"; fail "$*: exit $code, expected $want_code"; }

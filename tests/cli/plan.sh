@@ -71,4 +71,14 @@ set -e
 [ "$code" -eq 2 ] || fail "error JSON run: exit $code"
 /usr/bin/python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); assert j["status"]=="error" and "--limits current" in j["message"]' "$tmp/err.json"
 "$exe" plan --help | grep -q "breakaway  trapezoid of current" || fail "--help lacks the methods"
+# Without --noise the predicted std are round-off (about 1e-19): a warning says so, in the text
+# and the JSON; with --noise there is no such warning.
+"$exe" plan sweep --prior "$src/examples/plan/virgala_motor_prior.json" --scenario "$src/examples/virgala_motor_sweep.yaml" \
+  --limits speed=300,min_speed=6 --runs 4 -o "$tmp/quiet.csv" --json "$tmp/quiet.json" > "$tmp/quiet.txt"
+grep -q "^warning: no --noise given: the predicted standard deviations come from round-off alone" "$tmp/quiet.txt" \
+  || { cat "$tmp/quiet.txt"; fail "plan without --noise: no warning"; }
+/usr/bin/python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); assert any("no --noise" in w for w in j["warnings"]), j["warnings"]' "$tmp/quiet.json"
+"$exe" plan sweep --prior "$src/examples/plan/virgala_motor_prior.json" --scenario "$src/examples/virgala_motor_sweep.yaml" \
+  --limits speed=300,min_speed=6 --noise current=2e-3 --runs 4 -o "$tmp/noisy.csv" > "$tmp/noisy.txt"
+grep -q "no --noise" "$tmp/noisy.txt" && fail "plan with --noise: warned of no noise"
 echo ok

@@ -313,6 +313,12 @@ def test_drift_flags_the_wear_step(serial):
     assert step["change"] == pytest.approx(fleet_logs.FC_WORN - fleet_logs.FC, rel=0.2)
     assert step["combined_std"] == pytest.approx(math.hypot(step["std"], fc[fleet_logs.WORN_FROM_DAY - 2]["std"]))
     assert math.isnan(fc[0]["change"]) and not fc[0]["flagged"]
+    # The drift table has no status column: its repr counts the flagged rows, not failures.
+    n_flagged = sum(1 for r in d if r["flagged"])
+    assert n_flagged >= 1 and d.failed == []
+    assert repr(d).startswith(f"Table(drift: {len(d)} rows, {n_flagged} flagged; columns"), repr(d)
+    assert "failed" not in repr(d)
+    assert re.match(r"Table\(identify: \d+ rows, \d+ ok, \d+ failed; columns", repr(serial)), repr(serial)
     # Only Fc: the table's other parameters when none is named.
     assert {r["parameter"] for r in fl.batch.drift(serial, ["Fc"])} == {"Fc"}
     assert {r["parameter"] for r in d} == {"Fc", "Fv"}
@@ -382,3 +388,53 @@ def test_package_and_serial_batch_without_dask(fleet):
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=os.environ)
     assert out.returncode == 0, out.stderr
     assert "no dask:" in out.stdout
+
+
+def _docs_dask_snippet():
+    """The first ```python block of docs/fleet.md that runs fl.batch.identify on a LocalCluster."""
+    from conftest import SOURCE_DIR
+
+    text = (SOURCE_DIR / "docs" / "fleet.md").read_text(encoding="utf-8")
+    blocks = re.findall(r"^```python\n(.*?)^```", text, re.M | re.S)
+    snippet = next(b for b in blocks if "fl.batch.identify(" in b and "client=" not in b)
+    # Up to the first table written: the EMPS-style and Monte Carlo lines need their own inputs.
+    keep = snippet.split("# EMPS-style files")[0]
+    assert "fl.batch.identify(" in keep, keep
+    return keep
+
+
+def test_docs_dask_snippet_as_a_plain_script_fails_at_once_with_the_guard(fleet, tmp_path):
+    # Pasted into a script without the main guard, the LocalCluster's spawned workers would import
+    # the script again and start the batch again, for ever. The call refuses before any worker
+    # starts, showing the guard. 60 s: a hang is what the test catches; the refusal takes ~1 s.
+    script = tmp_path / "batch_script.py"
+    script.write_text(_docs_dask_snippet(), encoding="utf-8")
+    (tmp_path / "logs").mkdir()
+    os.symlink(fleet[0], tmp_path / "logs" / "axis3")
+    start = time.monotonic()
+    p = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True, timeout=60)
+    assert time.monotonic() - start < 60
+    assert p.returncode != 0, p.stdout
+    assert 'if __name__ == "__main__":' in p.stderr, p.stderr
+    assert "batch_script.py, line" in p.stderr and "processes=False" in p.stderr, p.stderr
+
+
+def test_guard_check_reads_where_the_script_calls_from(tmp_path):
+    # Outside the guard: refused with the line; inside the guard (directly or through a function
+    # called from it): accepted. No cluster is started: the check alone is called.
+    script = tmp_path / "where.py"
+    script.write_text(
+        "import frictionlab as fl\n"
+        "print('top', fl.batch._guarded_main_call())\n"
+        "def f():\n"
+        "    return fl.batch._guarded_main_call()\n"
+        "if __name__ == '__main__':\n"
+        "    print('guard', fl.batch._guarded_main_call())\n"
+        "    print('function', f())\n", encoding="utf-8")
+    out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, check=True).stdout
+    assert f"top {script}, line 2" in out, out
+    assert "guard None" in out and "function None" in out, out
+    # python -c has no script file: never refused.
+    out = subprocess.run([sys.executable, "-c", "import frictionlab as fl; print(fl.batch._guarded_main_call())"],
+                         capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "None", out

@@ -2,6 +2,7 @@
 simulated experiments with known parameters, the Result API, and the error cases."""
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -112,6 +113,9 @@ def test_result_api(emps_result, tmp_path):
     rows = [ln for ln in lines if "±" in ln]
     assert len(rows) == 4 and len({ln.index("=") for ln in rows}) == 1 and len({ln.index("±") for ln in rows}) == 1
     assert "95.1007" in rows[0] and rows[0].rstrip().endswith("kg")
+    # The fit's rmse carries the fitted signal's unit (EMPS: the drive force, N).
+    assert re.search(r"^  fit: relative error [0-9.]+ %, rmse [0-9.]+ N, [0-9]+ samples$", text, re.M), text
+    assert "unit='N'" in repr(r.fit), repr(r.fit)
     p = r.parameters["Fv"]
     assert (p.name, p.unit) == ("Fv", "N s/m") and tuple(p)[0] == p.value
     assert "Fc" in r and "Fs" not in r and len(r) == 4
