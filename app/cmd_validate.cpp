@@ -24,6 +24,8 @@
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/scenario/scenario.hpp"
+#include "frictionlab/simulate/environment.hpp"
+#include "frictionlab/simulate/scenario.hpp"
 #include "methods/method.hpp"
 #include "output.hpp"
 
@@ -86,6 +88,24 @@ ModelFile read_model(const std::string& path) {
     if (d.contains("sha256") && d["sha256"].is_string()) m.data_sha256 = d["sha256"].get<std::string>();
   }
   return m;
+}
+
+// A law whose levels move with the load or the temperature is validated at the conditions the
+// measured run worked at, which the scenario's environment block gives (the log's load as a data
+// input); without them the simulation would run at zero load or at T_ref and blame the law for
+// the difference. Throws naming MODEL, the effect and what to add.
+void check_conditions(const FrictionLaw& law, const Scenario& sc, const std::string& model, const std::string& scenario) {
+  const LawEffects& e = law.effects();
+  const ContactEnvironment none;
+  const ContactEnvironment& env = sc.options.environments.empty() ? none : sc.options.environments.front();
+  if (e.load && !env.load.given())
+    throw std::invalid_argument(model + ": the law's load effect (mu_load) needs the load the measured run worked at; "
+                                "scenario " + scenario + " gives none: add 'environment: {load: {type: data, column: "
+                                "LOAD}}' naming the log's load column (N or N m)");
+  if (e.temperature && !env.temperature && !env.thermal)
+    throw std::invalid_argument(model + ": the law's temperature effect (T_ref, Fv_per_K) needs the temperature the "
+                                "measured run worked at; scenario " + scenario + " gives none: add 'environment: "
+                                "{temperature: T}' (degC or K, the log's mean) or a thermal model");
 }
 
 // MODEL as "AXIS=FILE[,AXIS=FILE]" (a model per axis of a two-axis plant): the pairs, in order;
@@ -233,6 +253,7 @@ int run(ValidateArgs& a) {
                            {"--report", a.output.report, RunFile::Kind::report}},
                   a.output.overwrite);
   if (sc.plant->num_contacts() > 1) return run_two_axis(a, options, models, sc, data, mf.data_file, mf.data_sha256);
+  check_conditions(mf.model.law, sc, a.model, a.scenario);
   ValidationData v;
   v.time = time_column(*data, a.columns);
   v.position = position_column(*data, a.columns);

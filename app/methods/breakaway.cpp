@@ -8,13 +8,15 @@
 #include "frictionlab/models/friction_law.hpp"
 #include "method.hpp"
 #include "frictionlab/identify/breakaway.hpp"
+#include "frictionlab/io/columns.hpp"
 
 namespace frictionlab::cli {
 namespace {
 
 Result run(const MethodIO& io, const OptionValues& options) {
   const Dataset d = load_data(io.data, io.columns);
-  BreakawayData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns)};
+  BreakawayData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns), {}};
+  if (options.given("load")) x.load = finite_column(d, options.text("load"), "--load");
   BreakawayOptions o = make_breakaway_options(options);
   o.axis = io.columns.parsed_axis();
   Result r = identify_breakaway(x, o);
@@ -34,10 +36,17 @@ Figure breakaway_figure(const Result& r) {
     p.series.push_back(series("applied", *t, *F, SeriesStyle::lines, "#0072b2"));
     const auto tb = r.diagnostics.numbers.find("breakaway_time");
     const double Fs = parameter(r, "Fs"), Fc = parameter(r, "Fc");
-    if (tb != r.diagnostics.numbers.end() && std::isfinite(Fs))
+    const auto starts = r.diagnostics.lists.find("breakaways");
+    if (starts != r.diagnostics.lists.end()) {  // with a load: every start's breakaway force at its load
+      std::vector<double> ts, fs;
+      for (const auto& b : starts->second) ts.push_back(b.at("time")), fs.push_back(b.at("force"));
+      p.series.push_back(series("breakaways (at each start's load)", ts, fs, SeriesStyle::points, "#d55e00"));
+    } else if (tb != r.diagnostics.numbers.end() && std::isfinite(Fs)) {
       p.series.push_back(series("breakaway (Fs)", {tb->second}, {Fs}, SeriesStyle::points, "#d55e00"));
+    }
     if (std::isfinite(Fc))
-      p.series.push_back(series("Coulomb level Fc", {t->front(), t->back()}, {Fc, Fc}, SeriesStyle::lines, "#009e73"));
+      p.series.push_back(series(starts != r.diagnostics.lists.end() ? "Coulomb level Fc at zero load" : "Coulomb level Fc",
+                                {t->front(), t->back()}, {Fc, Fc}, SeriesStyle::lines, "#009e73"));
     f.panels.push_back(p);
   }
   if (v) {

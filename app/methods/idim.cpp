@@ -1,5 +1,8 @@
 // frictionlab identify idim: inverse dynamic model least squares on a trajectory (EMPS recipe):
 // options, run, figures (measured and reconstructed force, friction map, cross-test).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "../figure_kit.hpp"
@@ -21,12 +24,80 @@ IdimData idim_data(const Dataset& d, const DataOptions& c, const OptionValues& o
   return x;
 }
 
+double sign_of(double v) { return v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0; }
+
+// The figures of the conditions' terms (load map, ripple, temperature drift): the record's load,
+// temperature and position at the fitted samples (each fitted sample is a sample of the record,
+// found by its time), the friction law at zero load, the ripple's partial residual over one period
+// and the viscous coefficient over time. Series only (not in JSON); nothing without the terms.
+void add_condition_series(Result& r, const IdimData& data, const OptionValues& options) {
+  const auto* t = find(r, "time");
+  const auto* friction = find(r, "friction");
+  const auto* friction_model = find(r, "friction_model");
+  if (!r.ok() || !t || !friction || !friction_model) return;
+  const Eigen::Index n = data.time.size();
+  std::vector<Eigen::Index> at;
+  for (const double ti : *t)
+    at.push_back(std::clamp<Eigen::Index>(std::lower_bound(data.time.data(), data.time.data() + n, ti) - data.time.data(), 0, n - 1));
+  const auto sampled = [&](const Eigen::VectorXd& col) {
+    std::vector<double> out;
+    for (const auto k : at) out.push_back(col[k]);
+    return out;
+  };
+  if (const Parameter* mu = r.find("mu_load"); mu && data.load.size() == n) {
+    r.series["load"] = sampled(data.load.cwiseAbs());
+    // law_force is the friction terms at the record's mean |load|: the same at zero load.
+    const double mean_load = data.load.cwiseAbs().mean();
+    if (const auto *lv = find(r, "law_velocity"), *lF = find(r, "law_force"); lv && lF) {
+      std::vector<double> zero(lF->size());
+      for (std::size_t i = 0; i < zero.size(); ++i) zero[i] = (*lF)[i] - mu->value * mean_load * sign_of((*lv)[i]);
+      r.series["law_force_zero_load"] = std::move(zero);
+    }
+  }
+  if (r.find("Fv_per_K") && r.find("Fv") && data.temperature.size() == n &&
+      r.diagnostics.numbers.count("temperature_ref")) {
+    const double Fv = r.value("Fv"), per_K = r.value("Fv_per_K"), ref = r.diagnostics.numbers.at("temperature_ref");
+    r.series["temperature"] = sampled(data.temperature);
+    std::vector<double> viscous;
+    for (const double T : r.series["temperature"]) viscous.push_back(Fv + per_K * (T - ref));
+    r.series["temperature_viscous"] = std::move(viscous);
+  }
+  if (r.find("ripple_sin_1") && data.position.size() == n && options.given("ripple-period")) {
+    const double P = options.number("ripple-period");
+    const auto harmonics = static_cast<int>(options.integer("ripple-harmonics"));
+    const auto ripple = [&](double q) {
+      double f = 0;
+      for (int h = 1; h <= harmonics; ++h) {
+        const double w = 2 * std::numbers::pi * h * q / P;
+        f += r.value("ripple_sin_" + std::to_string(h)) * std::sin(w) + r.value("ripple_cos_" + std::to_string(h)) * std::cos(w);
+      }
+      return f;
+    };
+    // The partial residual: the fit's residual plus the identified ripple, against the position
+    // within the period.
+    std::vector<double> phase, partial;
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      const double q = data.position[at[i]];
+      phase.push_back(q - P * std::floor(q / P));
+      partial.push_back((*friction)[i] - (*friction_model)[i] + ripple(q));
+    }
+    r.series["ripple_position"] = std::move(phase);
+    r.series["ripple_partial"] = std::move(partial);
+    constexpr int kCurve = 200;
+    std::vector<double> qc, fc;
+    for (int i = 0; i <= kCurve; ++i) qc.push_back(P * i / kCurve), fc.push_back(ripple(qc.back()));
+    r.series["ripple_curve_position"] = std::move(qc);
+    r.series["ripple_curve_force"] = std::move(fc);
+  }
+}
+
 Result run(const MethodIO& io, const OptionValues& options) {
   IdimOptions o = make_idim_options(options);
   o.axis = io.columns.parsed_axis();
   const Dataset d = load_data(io.data, io.columns);
   const IdimData data = idim_data(d, io.columns, options);
   Result r = identify_idim(data, o);
+  add_condition_series(r, data, options);
   r.data_file = data.file;
   r.data_sha256 = data.sha256;
   note_data(r, d);
@@ -71,6 +142,97 @@ Figure idim_map(const Result& r) {
     p.series.push_back(s);
   }
   f.panels.push_back(p);
+  return f;
+}
+
+// The friction map against velocity and load: the samples of the friction map in three bands of
+// |load| (lower, middle and upper third of its range), each with the identified law at the band's
+// mean |load|.
+Figure idim_load_map(const Result& r) {
+  Figure f;
+  const auto *v = find(r, "velocity"), *F = find(r, "friction"), *L = find(r, "load");
+  const auto *lv = find(r, "law_velocity"), *l0 = find(r, "law_force_zero_load");
+  const Parameter* mu = r.find("mu_load");
+  if (!v || !F || !L || !mu || L->size() != v->size() || F->size() != v->size()) return f;
+  const Axis axis = r.axis;
+  f.title = title_for(r, "Friction map against velocity and load");
+  f.panel_height = 560;
+  FigurePanel p = map_panel(axis);
+  const auto [lo_it, hi_it] = std::minmax_element(L->begin(), L->end());
+  const double lo = *lo_it, width = std::max((*hi_it - lo) / 3, 1e-300);
+  const char* colors[] = {"#0072b2", "#009e73", "#d55e00"};
+  const std::string load_unit(unit(Quantity::force, axis));
+  for (int b = 0; b < 3; ++b) {
+    std::vector<double> x, y;
+    double sum = 0;
+    for (std::size_t i = 0; i < v->size(); ++i) {
+      const int band = std::min(2, static_cast<int>(((*L)[i] - lo) / width));
+      if (band != b) continue;
+      x.push_back((*v)[i]);
+      y.push_back((*F)[i]);
+      sum += (*L)[i];
+    }
+    if (x.empty()) continue;
+    const double mean = sum / static_cast<double>(x.size());
+    const std::string band = format_number(lo + b * width, 3) + " to " + format_number(lo + (b + 1) * width, 3) + " " + load_unit;
+    FigureSeries pts = series("samples at |load| " + band, x, y, SeriesStyle::points, colors[b]);
+    pts.point_size = 0.25;
+    p.series.push_back(pts);
+    if (lv && l0 && l0->size() == lv->size()) {
+      std::vector<double> curve(l0->size());
+      for (std::size_t i = 0; i < curve.size(); ++i) curve[i] = (*l0)[i] + mu->value * mean * sign_of((*lv)[i]);
+      FigureSeries s = gapped_at_zero("identified law at |load| " + format_number(mean, 3) + " " + load_unit, *lv, curve);
+      s.color = colors[b];
+      s.line_width = 2.2;
+      p.series.push_back(s);
+    }
+  }
+  f.panels.push_back(p);
+  return f;
+}
+
+// The ripple against the position within its period: the fit's residual plus the identified
+// ripple at each sample, and the identified ripple.
+Figure idim_ripple(const Result& r) {
+  Figure f;
+  const auto *q = find(r, "ripple_position"), *F = find(r, "ripple_partial");
+  const auto *qc = find(r, "ripple_curve_position"), *Fc = find(r, "ripple_curve_force");
+  if (!q || !F || !qc || !Fc) return f;
+  const Axis axis = r.axis;
+  f.title = title_for(r, "Position ripple over one period");
+  FigurePanel p;
+  p.x_label = label("position within the ripple period", Quantity::displacement, axis);
+  p.y_label = label("ripple " + force_name(axis), Quantity::force, axis);
+  p.zero_line = true;
+  p.key = "top right";
+  FigureSeries pts = series("samples: residual + identified ripple", *q, *F, SeriesStyle::points, "#a8a8a8");
+  pts.point_size = 0.25;
+  p.series.push_back(pts);
+  FigureSeries s = series("identified ripple", *qc, *Fc, SeriesStyle::lines, "#d55e00");
+  s.line_width = 2.2;
+  p.series.push_back(s);
+  f.panels.push_back(p);
+  return f;
+}
+
+// The temperature drift: the logged temperature over time and the viscous coefficient the
+// temperature term gives at it, Fv + Fv_per_K (T - T_ref).
+Figure idim_temperature(const Result& r) {
+  Figure f;
+  const auto *t = find(r, "time"), *T = find(r, "temperature"), *fv = find(r, "temperature_viscous");
+  if (!t || !T || !fv || T->size() != t->size()) return f;
+  const Axis axis = r.axis;
+  f.title = title_for(r, "Temperature drift of the viscous coefficient");
+  FigurePanel temp = time_panel("temperature (degC or K, as logged)", false);
+  temp.series.push_back(series("logged temperature", *t, *T, SeriesStyle::lines, "#d55e00"));
+  f.panels.push_back(temp);
+  FigurePanel visc = time_panel(label("viscous coefficient", Quantity::viscous, axis), false);
+  const auto ref = r.diagnostics.numbers.find("temperature_ref");
+  visc.series.push_back(series("Fv + Fv_per_K (T - T_ref)" + (ref != r.diagnostics.numbers.end()
+                                                                   ? ", T_ref = " + format_number(ref->second, 4)
+                                                                   : std::string()),
+                               *t, *fv, SeriesStyle::lines, "#0072b2"));
+  f.panels.push_back(visc);
   return f;
 }
 
@@ -121,6 +283,18 @@ CliMethod idim_method() {
             "offset terms (grey), their mean and standard deviation in velocity bins, and the identified "
             "friction law.",
             idim_map},
+           {"load-map",
+            "Friction against velocity and load (with the load term): the friction map's samples in three bands of "
+            "|load|, each with the identified law at the band's mean |load|.",
+            idim_load_map},
+           {"ripple",
+            "Position ripple (with the ripple term): the fit's residual plus the identified ripple at each sample "
+            "against the position within the ripple period, and the identified ripple.",
+            idim_ripple},
+           {"temperature",
+            "Temperature drift (with the temperature term): the logged temperature over time and the viscous "
+            "coefficient the temperature term gives at it.",
+            idim_temperature},
            {"cross-test",
             "Cross-test: the drive force measured on the second record and the force the model "
             "identified on the first predicts from its position (top), and their difference "

@@ -16,9 +16,10 @@ namespace {
 
 Result run(const MethodIO& io, const OptionValues& options) {
   const Dataset d = load_data(io.data, io.columns);
-  SweepData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns)};
+  SweepData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns), {}};
   SweepOptions o = make_sweep_options(options);
   if (options.given("reference")) o.reference = finite_signal(d, options.text("reference"), "--reference");
+  if (options.given("load")) x.load = finite_signal(d, options.text("load"), "--load");
   o.axis = io.columns.parsed_axis();
   Result r = identify_sweep(x, o);
   stamp(r, d);
@@ -42,7 +43,10 @@ Figure sweep_figure(const Result& r) {
     p.series.push_back(s);
   }
   if (const auto *v = find(r, "law_velocity"), *F = find(r, "law_force"); v && F) {
-    p.series.push_back(gapped_at_zero("fitted " + r.model + " law", *v, *F));
+    const auto at = r.diagnostics.texts.find("law_curve_at");
+    p.series.push_back(gapped_at_zero("fitted " + r.model + " law" +
+                                          (at != r.diagnostics.texts.end() ? " at " + at->second : std::string()),
+                                      *v, *F));
   }
   f.panels.push_back(p);
   return f;

@@ -566,6 +566,43 @@ static inline REAL @_disturbance_observer_update(@_disturbance_observer_state *s
 )");
 }
 
+std::string upper(std::string s);
+
+// The position ripple (models/position_ripple.hpp: PositionRipple::force, the same operations in
+// the same order) and the friction with it at a position: PREFIX_ripple(q), PREFIX_friction_at(v, q).
+void ripple(Writer& w, const PositionRipple& r, bool dynamic) {
+  const std::size_t K = r.harmonics();
+  std::vector<double> a(r.a), b(r.b);
+  a.resize(K, 0.0);
+  b.resize(K, 0.0);
+  w.line("\n/* Position ripple r(q) = sum_k a_k sin(2 pi k q / P) + b_k cos(2 pi k q / P), k = 1.." + std::to_string(K) +
+         " (N or N m), q in m or rad; it adds to the friction whether the contact slides or sticks. */");
+  w.constant("ripple_period", r.period, "P, m (rad on a rotary axis)");
+  w.constant("ripple_pi", std::numbers::pi, "pi, as the library's std::numbers::pi");
+  w.array("ripple_a", a, "sine amplitudes a_k, N (N m)");
+  w.array("ripple_b", b, "cosine amplitudes b_k, N (N m)");
+  w.line("#define " + upper(w.prefix()) + "_RIPPLE_HARMONICS " + std::to_string(K));
+  w.code(R"(
+/* r(q), N or N m, at position q (m or rad). */
+static inline REAL @_ripple(REAL q) {
+  const REAL w = 2.0_r * @_ripple_pi * q / @_ripple_period;
+  REAL r = 0.0_r;
+  int k;
+  for (k = 0; k < )" + upper(w.prefix()) + R"(_RIPPLE_HARMONICS; ++k) {
+    const REAL kw = (REAL)(k + 1) * w;
+    r += @_ripple_a[k] * $sin(kw);
+    r += @_ripple_b[k] * $cos(kw);
+  }
+  return r;
+}
+)");
+  if (!dynamic)
+    w.code(R"(
+/* The sliding friction at velocity v and position q: friction(v) + r(q), N or N m. */
+static inline REAL @_friction_at(REAL v, REAL q) { return @_friction(v) + @_ripple(q); }
+)");
+}
+
 void check_prefix(const std::string& prefix) {
   bool ok = !prefix.empty() && prefix.size() <= 40 && std::isalpha(static_cast<unsigned char>(prefix[0]));
   for (char c : prefix) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
@@ -584,13 +621,21 @@ std::string upper(std::string s) {
 
 std::string c_header(const FrictionLaw& law, const CExportOptions& options) {
   check_prefix(options.prefix);
-  // The C form has the velocity law only: a law whose levels move with load or temperature, or
-  // that carries a position ripple, is refused rather than exported without them.
-  if (law.has_effects())
+  // The C form has the velocity law and a position ripple: a law whose levels move with load or
+  // temperature is refused rather than exported without them.
+  if (law.effects().moves_levels())
     throw InputError(errc::law_parameter,
                      "export: law '" + law.name() +
-                         "' carries load, temperature or ripple effects, which the C header does not model; export the law without them",
-                     {.key = law.effects().load ? "mu_load" : law.effects().temperature ? "T_ref" : "ripple_period"});
+                         "' carries load or temperature effects, which the C header does not model yet (a position "
+                         "ripple it does); export the law without them",
+                     {.key = law.effects().load ? "mu_load" : "T_ref"});
+  const std::optional<PositionRipple> ripple_effect = law.effects().ripple;
+  if (ripple_effect && options.compensation.index() != 0)
+    throw InputError(errc::law_parameter,
+                     "export: law '" + law.name() +
+                         "' carries a position ripple, which the compensations do not take yet; export the law alone "
+                         "(its header has PREFIX_ripple(q)) or without the ripple",
+                     {.key = "ripple_period"});
   Writer w(options.prefix, options.single_precision);
   const std::string type = compensation_type(options.compensation);
   const std::string guard = upper(options.prefix) + "_FRICTION_H";
@@ -629,6 +674,7 @@ std::string c_header(const FrictionLaw& law, const CExportOptions& options) {
         }
       },
       law.variant());
+  if (ripple_effect) ripple(w, *ripple_effect, law.is_dynamic());
   std::visit(
       [&](const auto& p) {
         using P = std::decay_t<decltype(p)>;

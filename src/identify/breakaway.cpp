@@ -46,6 +46,28 @@ double breakaway_time(const Eigen::VectorXd& time, const Eigen::VectorXd& force,
   return t;
 }
 
+// The least spread of |load| (max - min, relative to max) with which a load coefficient is fitted.
+constexpr double kLeastLoadSpread = 0.01;
+
+// The mean |load| over each motion interval (N or N m): the loads the record slid at, free of
+// the load cell's sample noise.
+std::vector<double> interval_loads(const Eigen::VectorXd& load, const std::vector<IndexRange>& moving) {
+  std::vector<double> out;
+  for (const auto& m : moving) {
+    const auto b = static_cast<Eigen::Index>(m.begin), e = std::min(static_cast<Eigen::Index>(m.end), load.size());
+    if (e > b) out.push_back(load.segment(b, e - b).cwiseAbs().mean());
+  }
+  return out;
+}
+
+// True when `loads` spread by more than kLeastLoadSpread of the largest; sets lo and hi.
+bool load_spreads(const std::vector<double>& loads, double& lo, double& hi) {
+  lo = std::numeric_limits<double>::infinity();
+  hi = 0;
+  for (const double x : loads) lo = std::min(lo, x), hi = std::max(hi, x);
+  return !loads.empty() && hi - lo > kLeastLoadSpread * hi;
+}
+
 }  // namespace
 
 // The table names only the fields an option sets (designated initializers).
@@ -65,6 +87,11 @@ MethodInfo detail::breakaway_method_info() {
       {.name = "edge-samples", .type = OptionType::integer, .default_value = static_cast<long long>(d.edge_samples),
        .help = "Samples skipped at each end of a sliding interval in the dynamic fit (the velocity has a kink there)",
        .min = 0},
+      {.name = "load", .type = OptionType::column, .unit = "N", .rotary_unit = "N m",
+       .help = "Column of the load force or torque the contact transmits: the sliding fit gains mu_load_coulomb and "
+               "every start from rest gives a breakaway force, fitted against its |load| for Fs at zero load and "
+               "mu_load_static (dimensionless); needs 3 starts from rest or more at different loads (Python: an "
+               "array of the data's length)"},
   };
   return m;
 }
@@ -83,6 +110,14 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
   if (d.force.size() != n || d.velocity.size() != n)
     throw std::invalid_argument("breakaway: time, force and velocity must have equal lengths (have " + std::to_string(n) +
                                 ", " + std::to_string(d.force.size()) + ", " + std::to_string(d.velocity.size()) + ")");
+  const bool with_load = d.load.size() > 0;
+  if (with_load && d.load.size() != n)
+    throw std::invalid_argument("breakaway: the load has " + std::to_string(d.load.size()) + " samples; expected " +
+                                std::to_string(n) + " like time");
+  if (with_load)
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (!std::isfinite(d.load[k]))
+        throw std::invalid_argument("breakaway: load sample " + std::to_string(k + 1) + " (counted from 1) is not finite");
   const double dt = regular_time_step(d.time, method_info(MethodId::breakaway).name);
   Result r = make_result(MethodId::breakaway, "static-coulomb-viscous", o.axis);
   const auto warn = [&](const std::string& w) { r.diagnostics.warnings.push_back(w); };
@@ -130,7 +165,15 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
     for (auto k = static_cast<Eigen::Index>(m.begin) + o.edge_samples; k + o.edge_samples < static_cast<Eigen::Index>(m.end); ++k)
       rows.push_back(k);
   const bool fit_inertia = !(std::isfinite(o.inertia) && o.inertia > 0);
-  const int p = fit_inertia ? 3 : 2;
+  const int p = (fit_inertia ? 3 : 2) + (with_load ? 1 : 0);
+  const std::string force_unit(unit(Quantity::force, o.axis));
+  if (with_load) {
+    double lo = 0, hi = 0;
+    if (!load_spreads(interval_loads(d.load, moving), lo, hi))
+      return fail(r, "the mean |load| of the sliding intervals lies between " + format_number(lo) + " and " + format_number(hi) + " " +
+                         force_unit + " (within " + format_number(100 * kLeastLoadSpread) +
+                         " %): mu_load_coulomb cannot be told from Fc; slide at two loads or more");
+  }
   if (static_cast<int>(rows.size()) < 2 * p + 2)
     return fail(r, "only " + std::to_string(rows.size()) + " sliding samples away from stick/slip switches; need at least " +
                        std::to_string(2 * p + 2));
@@ -140,34 +183,78 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
     const auto k = rows[i];
     const auto ii = static_cast<Eigen::Index>(i);
     const double sg = d.velocity[k] > 0 ? 1.0 : -1.0;
-    if (fit_inertia) X.row(ii) << sg, d.velocity[k], a[k];
-    else X.row(ii) << sg, d.velocity[k];
+    X(ii, 0) = sg;
+    X(ii, 1) = d.velocity[k];
+    if (fit_inertia) X(ii, 2) = a[k];
+    if (with_load) X(ii, p - 1) = sg * std::abs(d.load[k]);
     y[ii] = d.force[k] - (fit_inertia ? 0.0 : o.inertia * a[k]);
   }
-  const LeastSquaresFit fit = linear_least_squares(X, y, fit_inertia ? std::vector<std::string>{"Fc", "Fv", "M"} : std::vector<std::string>{"Fc", "Fv"}, separable());
+  std::vector<std::string> names{"Fc", "Fv"};
+  if (fit_inertia) names.push_back("M");
+  if (with_load) names.push_back("mu_load_coulomb");
+  const LeastSquaresFit fit = linear_least_squares(X, y, names, separable());
   if (!fit.ok) return fail(r, "the sliding data cannot separate Coulomb, viscous and inertial forces: " + fit.message);
   const double Fc = fit.theta[0], Fv = fit.theta[1], M = fit_inertia ? fit.theta[2] : o.inertia;
+  const double mu_c = with_load ? fit.theta[p - 1] : 0.0;
   if (!(M > 0)) return fail(r, "the estimated inertia " + format_number(M) + " is not positive: the record has too little acceleration");
-
-  // Fs: the force at the instant the axis broke away, from the fitted dynamics.
+  // Fs: the force at the instant the axis broke away, from the fitted dynamics (with a load: at
+  // each start from rest, with the Coulomb level at that start's load).
   const auto k1 = static_cast<Eigen::Index>(*onset);
-  const double tb = breakaway_time(d.time, d.force, d.time[k1], d.velocity[k1], M, Fc, Fv, dt);
-  const double Fs = interpolate(d.time, d.force, tb);
+  const auto level_at = [&](Eigen::Index k) { return Fc + mu_c * (with_load ? std::abs(d.load[k]) : 0.0); };
+  const double tb = breakaway_time(d.time, d.force, d.time[k1], d.velocity[k1], M, level_at(k1), Fv, dt);
+  double Fs = interpolate(d.time, d.force, tb);
   // Its uncertainty, propagated from Fc, Fv and M one at a time (their covariance is ignored).
   auto Fs_with = [&](double m, double fc, double fv) {
     return interpolate(d.time, d.force, breakaway_time(d.time, d.force, d.time[k1], d.velocity[k1], m, fc, fv, dt));
   };
-  const double dFc = Fs_with(M, Fc + fit.stdev[0], Fv) - Fs, dFv = Fs_with(M, Fc, Fv + fit.stdev[1]) - Fs;
-  const double dM = fit_inertia ? Fs_with(M + fit.stdev[2], Fc, Fv) - Fs : 0.0;
-  const double Fs_std = std::sqrt(dFc * dFc + dFv * dFv + dM * dM);
+  const double dFc = Fs_with(M, level_at(k1) + fit.stdev[0], Fv) - Fs, dFv = Fs_with(M, level_at(k1), Fv + fit.stdev[1]) - Fs;
+  const double dM = fit_inertia ? Fs_with(M + fit.stdev[2], level_at(k1), Fv) - Fs : 0.0;
+  double Fs_std = std::sqrt(dFc * dFc + dFv * dFv + dM * dM);
+  double mu_s = 0, mu_s_std = 0;
+  if (with_load) {
+    // Every start from rest: its breakaway force against its |load|; Fs (at zero load) and
+    // mu_load_static by least squares over the starts, their std from the starts' scatter.
+    std::vector<Eigen::Index> starts;
+    for (const auto& m : moving)
+      if (m.begin > 0) starts.push_back(static_cast<Eigen::Index>(m.begin));
+    auto& list = r.diagnostics.lists["breakaways"];
+    Eigen::MatrixXd S(static_cast<Eigen::Index>(starts.size()), 2);
+    Eigen::VectorXd fs(S.rows());
+    std::vector<IndexRange> started;
+    for (const auto& m : moving)
+      if (m.begin > 0) started.push_back(m);
+    for (std::size_t i = 0; i < starts.size(); ++i) {
+      const auto k = starts[i];
+      const double t_b = breakaway_time(d.time, d.force, d.time[k], d.velocity[k], M, level_at(k), Fv, dt);
+      const double load_b = std::abs(interpolate(d.time, d.load, t_b));
+      const auto ii = static_cast<Eigen::Index>(i);
+      S.row(ii) << 1.0, load_b;
+      fs[ii] = interpolate(d.time, d.force, t_b) * (d.velocity[k] > 0 ? 1.0 : -1.0);
+      list.push_back({{"time", t_b}, {"load", load_b}, {"force", fs[ii]}});
+    }
+    double lo = 0, hi = 0;
+    if (!load_spreads(interval_loads(d.load, started), lo, hi) || starts.size() < 3)
+      return fail(r, std::to_string(starts.size()) + " start(s) from rest" +
+                         (starts.empty() ? std::string()
+                                         : " at |load| " + format_number(lo) + " to " + format_number(hi) + " " + force_unit) +
+                         ": the load's part of the breakaway level (mu_load_static) needs at least 3 starts from rest at "
+                         "loads more than " + format_number(100 * kLeastLoadSpread) + " % apart");
+    const LeastSquaresFit sf = linear_least_squares(S, fs, {"Fs", "mu_load_static"});
+    if (!sf.ok) return fail(r, "the breakaway forces cannot be fitted against the load: " + sf.message);
+    Fs = sf.theta[0];
+    Fs_std = sf.stdev[0];
+    mu_s = sf.theta[1];
+    mu_s_std = sf.stdev[1];
+  }
 
   add("Fs", Fs, Fs_std, Quantity::force);
   add("Fc", Fc, fit.stdev[0], Quantity::force);
   add("Fv", Fv, fit.stdev[1], Quantity::viscous);
   if (fit_inertia) add("M", M, fit.stdev[2], Quantity::inertia);
+  if (with_load) add("mu_load_coulomb", mu_c, fit.stdev[p - 1], Quantity::dimensionless);
   // Fs keeps its propagated std; the regression's parameters get the common rules.
-  set_uncertainty_from_information(r, fit_inertia ? std::vector<std::string>{"Fc", "Fv", "M"} : std::vector<std::string>{"Fc", "Fv"},
-                                   fit.information, fit.residual_variance);
+  set_uncertainty_from_information(r, names, fit.information, fit.residual_variance);
+  if (with_load) add("mu_load_static", mu_s, mu_s_std, Quantity::dimensionless);
   set_fit(r, y, X * fit.theta);
   if (!std::isfinite(r.fit.relative_error_percent) || !std::isfinite(Fs))
     return fail(r, "the fit gave figures that are not finite numbers (force zero throughout?); the data cannot give an answer");
@@ -184,7 +271,21 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
   r.series["time"].assign(d.time.data(), d.time.data() + n);
   r.series["velocity"].assign(d.velocity.data(), d.velocity.data() + n);
   r.series["force"].assign(d.force.data(), d.force.data() + n);
-  if (Fs >= Fc && Fc >= 0 && Fv >= 0) r.law = FrictionLaw(StaticCoulombViscous{Fs, Fc, Fv}).to_spec();
+  if (with_load) r.series["load"].assign(d.load.data(), d.load.data() + n);
+  if (Fs >= Fc && Fc >= 0 && Fv >= 0) {
+    r.law = FrictionLaw(StaticCoulombViscous{Fs, Fc, Fv}).to_spec();
+    if (with_load) {
+      LawSpec with_effect = *r.law;
+      with_effect.scalars["mu_load_static"] = mu_s;
+      with_effect.scalars["mu_load_coulomb"] = mu_c;
+      try {
+        FrictionLaw::from_spec(with_effect);  // checked as a law file would be
+        r.law = with_effect;
+      } catch (const std::invalid_argument& e) {
+        warn(std::string("the law is given without its load effect: ") + e.what());
+      }
+    }
+  }
   if (Fs < Fc) warn("Fs = " + format_number(Fs) + " is below Fc = " + format_number(Fc) + ": no stiction peak in this record");
   return r;
 }

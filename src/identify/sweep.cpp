@@ -24,7 +24,65 @@ SweepPoint point_of(const SweepData& d, Eigen::Index b, Eigen::Index e) {
   p.t_begin = d.time[b];
   p.t_end = d.time[e - 1];
   p.samples = static_cast<std::size_t>(n);
+  if (d.load.size() > 0) p.load = d.load.segment(b, n).cwiseAbs().mean();
   return p;
+}
+
+// The least spread of the points' mean |load| (max - min, relative to max) with which mu_load is fitted.
+constexpr double kLeastLoadSpread = 0.01;
+
+// The law fitted to the points with mu_load: minimises the points' residual sum of squares over
+// mu (the law refitted to F - mu |load| sign(v) at each trial value) by Newton steps on a
+// parabola through three values, h apart; the std of mu from that curvature.
+struct LoadFit {
+  StaticFit fit;               // the law at mu (its std conditional on mu)
+  double mu = 0, mu_std = 0;   // dimensionless
+  std::vector<double> dtheta;  // d value / d mu of each law parameter, for the widened std
+  std::string error;           // why it could not be made (empty: made)
+};
+
+LoadFit fit_with_load(const Eigen::VectorXd& v, const Eigen::VectorXd& f, const Eigen::VectorXd& x,
+                      const StaticFitOptions& fo, int law_parameters) {
+  LoadFit out;
+  const Eigen::Index n = v.size();
+  const auto at = [&](double mu) { return fit_static_law(v, f - mu * x, fo); };
+  const auto rss = [&](const StaticFit& s) { return s.rmse * s.rmse * static_cast<double>(n); };
+  // Start and scale: the coulomb-viscous problem with mu, linear (F = Fc sign v + Fv v + mu x).
+  Eigen::MatrixXd X(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i) X.row(i) << (v[i] > 0 ? 1.0 : -1.0), v[i], x[i];
+  const LeastSquaresFit lin = linear_least_squares(X, f, {"Fc", "Fv", "mu_load"});
+  if (!lin.ok) {
+    out.error = "the points cannot separate the load's part from the levels: " + lin.message;
+    return out;
+  }
+  double mu = lin.theta[2];
+  // The step of the parabola: a few of the linear problem's std of mu (there the residual sum
+  // moves by several s^2, far above the nonlinear solver's tolerance), never below rounding.
+  const double h = std::max(3.0 * lin.stdev[2], 1e-6 * (std::abs(mu) + 1e-3));
+  double curvature = 0;
+  for (int it = 0; it < 8; ++it) {
+    const double rm = rss(at(mu - h)), r0 = rss(at(mu)), rp = rss(at(mu + h));
+    curvature = (rp - 2 * r0 + rm) / (h * h);
+    if (!(curvature > 0) || !std::isfinite(curvature)) {
+      out.error = "the points' residual does not rise either side of mu_load = " + format_number(mu) +
+                  ": the loads do not tell the load's part from the levels";
+      return out;
+    }
+    const double step = -(rp - rm) / (2 * h) / curvature;
+    mu += step;
+    if (std::abs(step) < 1e-3 * h) break;
+  }
+  out.mu = mu;
+  out.fit = at(mu);
+  const int dof = static_cast<int>(n) - law_parameters - 1;
+  const double s2 = dof > 0 ? rss(out.fit) / dof : std::numeric_limits<double>::quiet_NaN();
+  out.mu_std = std::sqrt(2 * s2 / curvature);
+  const StaticFit lo = at(mu - h), hi = at(mu + h);
+  for (std::size_t j = 0; j < out.fit.parameters.size(); ++j)
+    out.dtheta.push_back(j < lo.parameters.size() && j < hi.parameters.size()
+                             ? (hi.parameters[j].value - lo.parameters[j].value) / (2 * h)
+                             : 0.0);
+  return out;
 }
 
 int parameter_count(StaticFitModel m, bool fixed_delta) {
@@ -94,6 +152,11 @@ MethodInfo detail::sweep_method_info() {
                .help = "Commanded velocity: steady segments are found on it instead of on the measured velocity "
                        "(which is smoothed, with a band that covers its measured noise). Python: an array of the "
                        "data's length"});
+  o.push_back({.name = "load", .type = OptionType::column, .unit = "N", .rotary_unit = "N m",
+               .help = "Column of the load force or torque the contact transmits: each steady segment's mean |load| "
+                       "goes with its point and mu_load (the Coulomb and static levels' rise per unit of load, "
+                       "dimensionless) is fitted; run the speeds at two loads or more (Python: an array of the data's "
+                       "length)"});
   return m;
 }
 #pragma GCC diagnostic pop
@@ -132,6 +195,13 @@ std::vector<SweepPoint> sweep_points(const SweepData& d, const SweepOptions& o) 
   if (d.force.size() != n || d.velocity.size() != n)
     throw std::invalid_argument("sweep: time, force and velocity must have equal lengths (have " + std::to_string(n) + ", " +
                                 std::to_string(d.force.size()) + ", " + std::to_string(d.velocity.size()) + ")");
+  if (d.load.size() > 0 && d.load.size() != n)
+    throw std::invalid_argument("sweep: the load has " + std::to_string(d.load.size()) + " samples; expected " +
+                                std::to_string(n) + " like time");
+  if (d.load.size() > 0)
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (!std::isfinite(d.load[k]))
+        throw std::invalid_argument("sweep: load sample " + std::to_string(k + 1) + " (counted from 1) is not finite");
   if (n < 2) throw std::invalid_argument("sweep: " + std::to_string(n) + " samples are too few; expected at least 2");
   for (Eigen::Index k = 0; k < n; ++k)
     if (!std::isfinite(d.time[k]) || !std::isfinite(d.force[k]) || !std::isfinite(d.velocity[k]))
@@ -227,15 +297,17 @@ Result identify_sweep(const SweepData& d, const SweepOptions& o) {
   }
   auto& list = r.diagnostics.lists["points"];
   auto& levels = r.diagnostics.lists["levels"];
+  const bool with_load = d.load.size() > 0;
   for (const auto& p : points) {
     list.push_back({{"velocity", p.velocity}, {"velocity_std", p.velocity_std}, {"force", p.force},
                     {"force_std", p.force_std}, {"t_begin", p.t_begin}, {"t_end", p.t_end},
                     {"samples", static_cast<double>(p.samples)}});
+    if (with_load) list.back()["load"] = p.load;
     levels.push_back({{"speed", p.velocity}, {"duration", p.t_end - p.t_begin}, {"samples", static_cast<double>(p.samples)}});
   }
   r.diagnostics.numbers["segments"] = static_cast<double>(points.size());
   const int p = parameter_count(o.fit.model, o.fit.fixed_delta > 0);
-  const int need = o.min_segments > 0 ? o.min_segments : p + 1;
+  const int need = o.min_segments > 0 ? o.min_segments : p + 1 + (with_load ? 1 : 0);
   if (static_cast<int>(points.size()) < need)
     return fail(r, "only " + std::to_string(points.size()) + " steady segments found; " + model + " needs at least " +
                        std::to_string(need) + " (relative velocity tolerance " + format_number(o.relative_tolerance) +
@@ -244,24 +316,58 @@ Result identify_sweep(const SweepData& d, const SweepOptions& o) {
   if (npos == 0 || npos == static_cast<long>(points.size()))
     r.diagnostics.warnings.push_back(std::string("no ") + (npos == 0 ? "positive" : "negative") +
                                      "-velocity segments: the map covers one direction only");
-  Eigen::VectorXd v(static_cast<Eigen::Index>(points.size())), f(v.size());
+  Eigen::VectorXd v(static_cast<Eigen::Index>(points.size())), f(v.size()), lx = Eigen::VectorXd::Zero(v.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     v[static_cast<Eigen::Index>(i)] = points[i].velocity;
     f[static_cast<Eigen::Index>(i)] = points[i].force;
+    if (with_load) lx[static_cast<Eigen::Index>(i)] = points[i].load * (points[i].velocity > 0 ? 1.0 : -1.0);
   }
+  double mean_load = 0, mu_load = 0;
   StaticFit fit;
+  LoadFit load_fit;
+  if (with_load) {
+    double lo = std::numeric_limits<double>::infinity(), hi = 0;
+    for (const auto& q : points) lo = std::min(lo, q.load), hi = std::max(hi, q.load), mean_load += q.load;
+    mean_load /= static_cast<double>(points.size());
+    r.diagnostics.numbers["load_min"] = lo;
+    r.diagnostics.numbers["load_max"] = hi;
+    // Loads within 1 % of each other leave mu_load to the noise of the levels.
+    if (!(hi - lo > kLeastLoadSpread * hi))
+      return fail(r, "the steady segments' mean |load| lies between " + format_number(lo) + " and " + format_number(hi) +
+                         " " + std::string(unit(Quantity::force, o.axis)) + " (within " +
+                         format_number(100 * kLeastLoadSpread) +
+                         " %): mu_load cannot be told from the levels; run the speeds at two loads or more");
+  }
   try {
-    fit = fit_static_law(v, f, o.fit);
+    if (with_load) {
+      load_fit = fit_with_load(v, f, lx, o.fit, p);
+      if (!load_fit.error.empty()) return fail(r, load_fit.error);
+      fit = load_fit.fit;
+      mu_load = load_fit.mu;
+    } else {
+      fit = fit_static_law(v, f, o.fit);
+    }
   } catch (const std::invalid_argument& e) {
     return fail(r, std::string("the segment means cannot be fitted: ") + e.what());
   }
-  for (const auto& q : fit.parameters) {
-    add_parameter(r, q.name, q.value, q.std, q.quantity, o.axis);
+  for (std::size_t j = 0; j < fit.parameters.size(); ++j) {
+    const auto& q = fit.parameters[j];
+    double sd = q.std;
+    // The law's std at mu_load, widened by how the law moves with mu_load (exact when linear).
+    if (with_load && std::isfinite(sd) && sd > 0)
+      sd = std::sqrt(sd * sd + load_fit.dtheta[j] * load_fit.dtheta[j] * load_fit.mu_std * load_fit.mu_std);
+    add_parameter(r, q.name, q.value, sd, q.quantity, o.axis);
     r.parameters.back().flag = q.flag;
+  }
+  if (with_load) {
+    add_parameter(r, "mu_load", mu_load, load_fit.mu_std, Quantity::dimensionless, o.axis);
+    r.diagnostics.numbers["load_mean"] = mean_load;
   }
   if (!std::isfinite(fit.relative_error_percent) || !std::isfinite(fit.rmse))
     return fail(r, "the fit of the segment means gave figures that are not finite numbers (force zero throughout?); "
                    "the data cannot give an answer");
+  // With a load the fitted law saw F - mu x: the relative error is taken against the measured F.
+  if (with_load && f.norm() > 0) fit.relative_error_percent = 100.0 * fit.rmse * std::sqrt(static_cast<double>(f.size())) / f.norm();
   r.fit.relative_error_percent = fit.relative_error_percent;
   r.fit.rmse = fit.rmse;
   r.fit.samples = fit.samples;
@@ -302,9 +408,24 @@ Result identify_sweep(const SweepData& d, const SweepOptions& o) {
     const double x = vlo + (vhi - vlo) * i / (kCurve - 1);
     if (x == 0.0) continue;
     r.series["law_velocity"].push_back(x);
-    r.series["law_force"].push_back(fit.law.sliding(x));
+    r.series["law_force"].push_back(fit.law.sliding(x) + mu_load * mean_load * (x > 0 ? 1.0 : -1.0));
   }
   r.law = fit.law.to_spec();
+  if (with_load) {
+    // The law at zero load with its load effect; a negative mu_load is not a law (levels that fall
+    // with the load): reported, the law left without it.
+    r.diagnostics.texts["law_curve_at"] = "the points' mean |load|, " + format_number(mean_load) + " " +
+                                          std::string(unit(Quantity::force, o.axis));
+    if (mu_load >= 0) {
+      LawSpec with_effect = *r.law;
+      with_effect.scalars["mu_load"] = mu_load;
+      FrictionLaw::from_spec(with_effect);  // checks it as a law file would be
+      r.law = with_effect;
+    } else {
+      r.diagnostics.warnings.push_back("mu_load = " + format_number(mu_load) +
+                                       " is negative (friction falling with the load): the law is given without it");
+    }
+  }
   r.diagnostics.numbers["max_speed"] = v.cwiseAbs().maxCoeff();
   r.diagnostics.numbers["min_speed"] = v.cwiseAbs().minCoeff();
   return r;

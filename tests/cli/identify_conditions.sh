@@ -15,8 +15,22 @@ terms=(--terms inertia,viscous,coulomb,offset,load,temperature,ripple --load loa
 # Samples near standstill are left out (the axis rests at whole ripple periods, where a stuck
 # contact's force is not the model's): the output reports the threshold.
 "$exe" identify idim axis.csv "${cols[@]}" "${terms[@]}" --ripple-period 0.02 --exclude-below 0.002 \
-  --json axis.json > axis.txt
+  --json axis.json --report rep > axis.txt
 grep -q "law_conditions" axis.txt || { cat axis.txt; fail "the text does not say what the law leaves to the parameters"; }
+# The report draws the conditions' figures (the friction map against velocity and load, the ripple
+# against position, the temperature drift), each axis labelled with its unit.
+for f in load-map ripple temperature; do [ -s "rep/$f.svg" ] || fail "the report lacks $f.svg"; done
+for label in "velocity (m/s)" "friction force (N)"; do grep -qF "$label" rep/load-map.svg || fail "load-map.svg lacks the axis '$label'"; done
+for label in "position within the ripple period (m)" "ripple force (N)"; do
+  grep -qF "$label" rep/ripple.svg || fail "ripple.svg lacks the axis '$label'"
+done
+for label in "time (s)" "temperature (degC or K, as logged)" "viscous coefficient (N s/m)"; do
+  grep -qF "$label" rep/temperature.svg || fail "temperature.svg lacks the axis '$label'"
+done
+grep -qF "identified law at |load|" rep/load-map.svg || fail "load-map.svg lacks the law at each band's load"
+# Without the terms, the figures of the conditions are not drawn.
+"$exe" identify idim axis.csv "${cols[@]}" --report plain > /dev/null
+for f in load-map ripple temperature; do [ ! -e "plain/$f.svg" ] || fail "a fit without the terms drew $f.svg"; done
 /usr/bin/python3 - axis.json <<'PY'
 import json, math, sys
 j = json.load(open(sys.argv[1]))

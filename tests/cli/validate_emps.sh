@@ -51,6 +51,13 @@ set -e
 expect_fail "$tmp/missing.yaml" validate "$tmp/model.json" "$data/DATA_EMPS.mat" --scenario "$tmp/missing.yaml" "${cols[@]}"
 /usr/bin/python3 -c "import json,sys; j=json.load(open('$tmp/model.json')); del j['law']; json.dump(j, open('$tmp/nolaw.json','w'))"
 expect_fail "nolaw.json: no 'law'" validate "$tmp/nolaw.json" "$data/DATA_EMPS.mat" --scenario "$scenario" "${cols[@]}"
+# A law with a load or a temperature effect needs those conditions; EMPS's scenario gives neither.
+/usr/bin/python3 -c "import json; j=json.load(open('$tmp/model.json')); j['law']['mu_load'] = 0.01; json.dump(j, open('$tmp/loaded.json','w'))"
+expect_fail "loaded.json: the law's load effect (mu_load) needs the load the measured run worked at" \
+  validate "$tmp/loaded.json" "$data/DATA_EMPS.mat" --scenario "$scenario" "${cols[@]}"
+/usr/bin/python3 -c "import json; j=json.load(open('$tmp/model.json')); j['law'].update(T_ref=30, Fv_per_K=-0.5); json.dump(j, open('$tmp/warm.json','w'))"
+expect_fail "warm.json: the law's temperature effect (T_ref, Fv_per_K) needs the temperature" \
+  validate "$tmp/warm.json" "$data/DATA_EMPS.mat" --scenario "$scenario" "${cols[@]}"
 # A CSV without the reference column qg.
 /usr/bin/python3 - "$data/DATA_EMPS.mat" "$tmp/noref.csv" <<'PY'
 import sys, scipy.io as sio

@@ -2,6 +2,7 @@
 // system C compiler in strict C99 (cc -std=c99 -Wall -Wextra -Werror -pedantic) into a small
 // program that prints the law over a velocity grid and a fixed-step run over a rig-like record;
 // the numbers must be the library's.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -442,6 +443,62 @@ TEST(CExportErrors, CompensationThatDoesNotFitAndBadParametersNameTheKey) {
   EXPECT_EQ(std::get<DisturbanceObserverParams>(make_compensation("disturbance-observer", {}, 3.0)).inertia, 3.0);
   EXPECT_EQ(std::get<DisturbanceObserverParams>(make_compensation("disturbance-observer", {{"inertia", 2.5}}, 3.0)).inertia,
             2.5);
+}
+
+}  // namespace
+}  // namespace frictionlab
+
+namespace frictionlab {
+namespace {
+
+// A law with a position ripple (two harmonics, the second with a zero cosine amplitude): the
+// header's PREFIX_ripple(q) and PREFIX_friction_at(v, q) (prefix "friction": friction_ripple,
+// friction_friction_at) against the library's ripple(q) and sliding(v) + ripple(q) over positions
+// across several periods, both precisions; load and temperature effects are refused naming their
+// key, and so is a compensation with a ripple.
+class RippleExport : public ::testing::TestWithParam<bool> {};
+
+FrictionLaw rippled_stribeck() {
+  LawEffects e;
+  e.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}};
+  return FrictionLaw(Stribeck{1.0, 1.5, 0.001, 1.0, 0.4}).with_effects(e);
+}
+
+TEST_P(RippleExport, RippleAndFrictionAtMatchLibrary) {
+  const bool single = GetParam();
+  const FrictionLaw law = rippled_stribeck();
+  std::vector<double> q, v;
+  for (int i = 0; i < 41; ++i) q.push_back(-0.05 + 0.0025 * i + 1e-4 * i * i / 7.0);  // m, across five periods
+  for (int i = 0; i < 41; ++i) v.push_back(-0.2 + 0.01 * i + 1e-5);                    // m/s, both directions
+  TempDir dir;
+  CExportOptions o;
+  o.single_precision = single;
+  const std::string type = single ? "float" : "double";
+  const std::vector<double> out = compile_and_run(
+      dir, c_header(law, o),
+      c_array(type.c_str(), "qg", q) + c_array(type.c_str(), "vg", v) +
+          "int main(void) {\n  unsigned i;\n"
+          "  for (i = 0; i < sizeof qg / sizeof qg[0]; ++i) printf(\"%.17g\\n\", (double)friction_ripple(qg[i]));\n"
+          "  for (i = 0; i < sizeof qg / sizeof qg[0]; ++i) printf(\"%.17g\\n\", (double)friction_friction_at(vg[i], qg[i]));\n"
+          "  return 0;\n}\n");
+  std::vector<double> lib;
+  for (double x : q) lib.push_back(law.ripple(as_real(x, single)));
+  for (std::size_t i = 0; i < q.size(); ++i) lib.push_back(law.sliding(as_real(v[i], single)) + law.ripple(as_real(q[i], single)));
+  expect_close(out, lib, single, "rippled stribeck");
+}
+
+INSTANTIATE_TEST_SUITE_P(BothPrecisions, RippleExport, ::testing::Bool());
+
+TEST(CExportErrors, LoadAndTemperatureEffectsAndRippleWithCompensationAreRefusedNamingTheKey) {
+  using testing::error_of;
+  LawEffects load;
+  load.load = LoadDependence{0.05, 0.05};
+  EXPECT_THAT(error_of([&] { c_header(FrictionLaw(Stribeck{}).with_effects(load)); }),
+              ::testing::HasSubstr("carries load or temperature effects, which the C header does not model yet"));
+  CExportOptions o;
+  o.compensation = FeedforwardParams{};
+  EXPECT_THAT(error_of([&] { c_header(rippled_stribeck(), o); }),
+              ::testing::HasSubstr("carries a position ripple, which the compensations do not take yet"));
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ TEST(IdentifySimulated, BreakawayRecoversCraigMotorWithinHalfAPercent) {
   const fl::Scenario sc = fl::load_scenario(example("craig_motor_trapezoid.yaml"));
   const fl::Trajectory tr = fl::simulate(sc);
   constexpr double Kt = 0.0141;
-  fl::BreakawayData d{vec(tr.time), Kt * vec(tr.current), vec(tr.velocity)};
+  fl::BreakawayData d{vec(tr.time), Kt * vec(tr.current), vec(tr.velocity), {}};
   const fl::Result r = fl::identify_breakaway(d);
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_NEAR(param(r, "Fs"), 0.0015, kRelTol * 0.0015);
@@ -55,7 +55,7 @@ TEST(IdentifySimulated, BreakawayRecoversCraigMotorWithinHalfAPercent) {
 
 TEST(IdentifySimulated, BreakawayWithoutMotionIsAnErrorStatus) {
   const Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(100, 0.0, 0.99);
-  fl::BreakawayData d{t, 1e-3 * t, Eigen::VectorXd::Zero(100)};
+  fl::BreakawayData d{t, 1e-3 * t, Eigen::VectorXd::Zero(100), {}};
   const fl::Result r = fl::identify_breakaway(d);
   EXPECT_FALSE(r.ok());
   EXPECT_NE(r.message.find("no motion detected"), std::string::npos) << r.message;

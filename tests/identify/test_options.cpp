@@ -191,7 +191,7 @@ TEST(Options, MarkdownReferenceListsEveryOptionOfEveryTable) {
 // identify_sweep checks its time column like every method: irregular time names the sample.
 TEST(Options, SweepRefusesIrregularTimeLikeEveryMethod) {
   const int n = 400;
-  SweepData d{Eigen::VectorXd(n), Eigen::VectorXd::Constant(n, 1.0), Eigen::VectorXd::Constant(n, 0.5)};
+  SweepData d{Eigen::VectorXd(n), Eigen::VectorXd::Constant(n, 1.0), Eigen::VectorXd::Constant(n, 0.5), {}};
   for (int i = 0; i < n; ++i) d.time[i] = 0.01 * i;
   d.time[200] = 2.0095;  // half a step late: more than 1 % of the median step off
   const std::string msg = error_of([&] { identify_sweep(d, {}); });

@@ -94,3 +94,39 @@ def test_c_export_refuses_a_law_with_effects_instead_of_dropping_them():
         fl.export_c({**STRIBECK, "mu_load": 0.05})
     assert info.value.code == "law.parameter" and "effects" in str(info.value)
     assert fl.export_c(STRIBECK).startswith("/* Friction law 'stribeck'")  # the plain law still exports
+
+
+def _load_sweep(loads, seed):
+    """Steady speeds (4 per direction) at each load, 0.3 s at rest before each 1.5 s level, 1 kHz;
+    friction 0.1 + 0.01 |load| N m while sliding plus 0.002 N m s/rad; made here with numpy."""
+    rng = np.random.default_rng(seed)
+    v, f, load = [], [], []
+    vel, dt = 0.0, 1e-3
+    for L in loads:
+        for sgn in (1, -1):
+            for speed in (0.5, 1.0, 2.0, 4.0):
+                for ref, dur in ((0.0, 0.3), (sgn * speed, 1.5)):
+                    for _ in range(int(dur / dt)):
+                        a = (ref - vel) / 0.05
+                        vel += dt * a
+                        if ref == 0.0 and abs(vel) < 1e-9:
+                            vel = 0.0
+                        fr = 0.0 if vel == 0.0 else math.copysign(0.1 + 0.01 * L, vel) + 0.002 * vel
+                        v.append(vel)
+                        f.append(fr + 0.005 * a + 2e-3 * rng.standard_normal())
+                        load.append(L + 0.3 * rng.standard_normal())
+    return dt * np.arange(len(v)), np.array(f), np.array(v), np.array(load)
+
+
+def test_sweep_fits_mu_load_from_a_load_array():
+    t, f, v, load = _load_sweep((10.0, 40.0, 80.0), 3)
+    r = fl.identify_sweep(t, f, v, model="coulomb-viscous", load=load)
+    assert r.ok, r.message
+    # 24 levels of 1.2 s each with 2 mN m of noise: within 1 %.
+    assert r["mu_load"] == pytest.approx(0.01, rel=0.01)
+    assert r["Fc"] == pytest.approx(0.1, rel=0.01)
+    assert r.law.effects == {"mu_load": r["mu_load"]}
+    pts = fl.sweep_points(t, f, v, load=load)
+    assert len(pts["load"]) == 24 and pts["load"][0] == pytest.approx(10.0, abs=0.1)
+    with pytest.raises(ValueError, match="load"):
+        fl.identify_sweep(t, f, v, load=load[:-1])

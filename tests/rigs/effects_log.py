@@ -31,6 +31,7 @@ KP, KD = 4.0e4, 400.0   # N/m, N s/m
 TS = 1e-3               # controller period, s
 H = 1e-4                # integration step, s (10 per controller period)
 ENCODER = 1e-6          # m per count
+COLUMNS = ("time", "position", "current", "load", "temperature")
 
 
 def load(t):
@@ -94,27 +95,41 @@ def simulate():
     return times, qs, vs, us
 
 
+def make_log(seed, motion=None, noise=True):
+    """The drive's log for `seed` as a dict of columns (time s, position m, current A, load N,
+    temperature degC); `motion`: simulate()'s output, which does not depend on the seed (the seed
+    draws only the time jitter and the sensors' noise), to reuse across seeds. noise=False: no
+    time jitter and no sensor noise (the encoder's counts stay), the systematic part of a fit."""
+    rng = np.random.default_rng(seed)
+    scale = 1.0 if noise else 0.0
+    t, q, _, u = simulate() if motion is None else motion
+    grid = np.arange(0.0, t[-1] - 2e-3, 1e-3)
+    ts = grid + scale * rng.uniform(-0.05e-3, 0.05e-3, grid.size)
+    ts[0] = 0.0
+    idx = np.clip(np.round(ts / H).astype(int), 0, t.size - 1)
+    q_log = np.round(q[idx] / ENCODER) * ENCODER
+    e = scale * rng.normal(0.0, 0.03, idx.size)  # A; first-order coloured, correlation time about 20 samples
+    i_noise = np.zeros_like(e)
+    for k in range(1, e.size):
+        i_noise[k] = 0.95 * i_noise[k - 1] + math.sqrt(1 - 0.95 ** 2) * e[k]
+    i_log = u[idx] / KT + i_noise
+    load_log = load(t[idx]) + scale * rng.normal(0.0, 0.2, idx.size)        # N, load cell noise
+    temp_log = temperature(t[idx]) + scale * rng.normal(0.0, 0.05, idx.size)  # degC, sensor noise
+    return {"time": ts, "position": q_log, "current": i_log, "load": load_log, "temperature": temp_log}
+
+
+def write_csv(path, log):
+    """Writes make_log()'s columns with a header row."""
+    cols = np.column_stack([log[k] for k in COLUMNS])
+    np.savetxt(path, cols, delimiter=",", fmt="%.9g", header=",".join(COLUMNS), comments="")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("out")
     ap.add_argument("--seed", type=int, default=1)
     a = ap.parse_args()
-    rng = np.random.default_rng(a.seed)
-    t, q, _, u = simulate()
-    grid = np.arange(0.0, t[-1] - 2e-3, 1e-3)
-    ts = grid + rng.uniform(-0.05e-3, 0.05e-3, grid.size)
-    ts[0] = 0.0
-    idx = np.clip(np.round(ts / H).astype(int), 0, t.size - 1)
-    q_log = np.round(q[idx] / ENCODER) * ENCODER
-    e = rng.normal(0.0, 0.03, idx.size)  # A; first-order coloured, correlation time about 20 samples
-    i_noise = np.zeros_like(e)
-    for k in range(1, e.size):
-        i_noise[k] = 0.95 * i_noise[k - 1] + math.sqrt(1 - 0.95 ** 2) * e[k]
-    i_log = u[idx] / KT + i_noise
-    load_log = load(t[idx]) + rng.normal(0.0, 0.2, idx.size)        # N, load cell noise
-    temp_log = temperature(t[idx]) + rng.normal(0.0, 0.05, idx.size)  # degC, sensor noise
-    cols = np.column_stack([ts, q_log, i_log, load_log, temp_log])
-    np.savetxt(a.out, cols, delimiter=",", fmt="%.9g", header="time,position,current,load,temperature", comments="")
+    write_csv(a.out, make_log(a.seed))
 
 
 if __name__ == "__main__":

@@ -21,6 +21,9 @@ struct BreakawayData {
   Eigen::VectorXd time;      ///< s
   Eigen::VectorXd force;     ///< N m or N
   Eigen::VectorXd velocity;  ///< rad/s or m/s
+  /// The load the contact transmits (N m or N), optional (empty: none; else length N). When
+  /// given, the levels grow with |load| (models/load_dependence.hpp): see identify_breakaway.
+  Eigen::VectorXd load;
 };
 
 struct BreakawayOptions {
@@ -48,7 +51,18 @@ BreakawayOptions make_breakaway_options(const OptionValues& values);
 /// diagnostics.readoff: the lecture's read-offs {"Fs", "Fc", "Fv"}, and the times of onset,
 /// hold and stop. A record without a stuck start, without motion or without a return to
 /// standstill gives status "error" with a message saying which.
-/// \throws std::invalid_argument on unequal lengths, non-finite samples or irregular time.
+///
+/// With data.load: the sliding fit gains the column |load| sign(v) (mu_load_coulomb, dimensionless;
+/// Fc is then the Coulomb level at zero load), and every start from rest in the record gives a
+/// breakaway force (the fitted dynamics integrated back, at that start's load); the breakaway
+/// forces against the |load| at each start give Fs at zero load and mu_load_static by least
+/// squares. Needs at least 3 starts from rest whose loads differ by more than 1 % of the largest,
+/// and sliding samples whose |load| differs as much, or status "error" says which is missing.
+/// diagnostics.lists["breakaways"]: each start's time, load and breakaway force. result.law
+/// carries mu_load_static and mu_load_coulomb when they form a law (mu_load_static >=
+/// mu_load_coulomb >= 0), else a warning says why not.
+/// \throws std::invalid_argument on unequal lengths (the load's included), non-finite samples or
+///         irregular time.
 Result identify_breakaway(const BreakawayData& data, const BreakawayOptions& options = {});
 
 }  // namespace frictionlab

@@ -4,6 +4,7 @@
 // point of the friction-velocity map; a static law is then fitted to the points.
 
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 #include "frictionlab/identify/options.hpp"
@@ -19,6 +20,10 @@ struct SweepData {
   Eigen::VectorXd time;      ///< s
   Eigen::VectorXd force;     ///< drive force or torque, N or N m (Kt times current)
   Eigen::VectorXd velocity;  ///< m/s or rad/s
+  /// The load the contact transmits (N or N m), optional (empty: none; else length N). When
+  /// given, each point carries its segment's mean |load| and identify_sweep fits mu_load: the
+  /// law's Coulomb and static levels grow by mu_load |load| (models/law_effects.hpp).
+  Eigen::VectorXd load;
 };
 
 /// A time window given by the user instead of automatic detection, s.
@@ -77,10 +82,12 @@ struct SweepPoint {
   double force = 0, force_std = 0;        ///< N or N m
   double t_begin = 0, t_end = 0;          ///< s
   std::size_t samples = 0;
+  double load = std::numeric_limits<double>::quiet_NaN();  ///< mean |load| over the segment, N or N m (NaN: no load column)
 };
 
 /// The points of a sweep, in time order.
-/// \throws std::invalid_argument on unequal lengths, non-finite samples, a window outside the record.
+/// \throws std::invalid_argument on unequal lengths (the load's included), non-finite samples, a window
+///         outside the record.
 std::vector<SweepPoint> sweep_points(const SweepData& data, const SweepOptions& options = {});
 
 /// Identifies the law options.fit.model from the sweep's points: parameters with std (NaN for
@@ -90,6 +97,15 @@ std::vector<SweepPoint> sweep_points(const SweepData& data, const SweepOptions& 
 /// "velocity_noise_std" and "smoothing_samples", diagnostics.correlation, warnings (e.g. "only 4
 /// steady segments found", "no negative-velocity segments", "the slowest segment is above 2
 /// vs"). Too few segments, or a fit that cannot be made, gives status "error" with the reason.
+/// With data.load: the model is law(v) + mu_load |load| sign(v) (one coefficient raises the
+/// Coulomb and the static level together), so the law's levels are those at zero load; mu_load
+/// (dimensionless) is found by minimising the points' residual over it (the law refitted at each
+/// trial value; exact for coulomb-viscous, where the problem is linear), its std from the
+/// curvature of that residual (s^2 2 / RSS''(mu)), and the law's std widened by how the law moves
+/// with mu_load (std^2 + (d theta / d mu)^2 std_mu^2). result.law carries mu_load; each point
+/// lists its "load"; diagnostics.numbers "load_min"/"load_max" (mean |load| of the points). Loads
+/// that hardly differ between the points (max - min within 1 % of the largest) give status
+/// "error": mu_load cannot be told from the levels.
 /// \throws std::invalid_argument as sweep_points.
 Result identify_sweep(const SweepData& data, const SweepOptions& options = {});
 

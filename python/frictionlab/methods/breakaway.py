@@ -13,12 +13,16 @@ def identify_breakaway(time, force, velocity, *, axis="rotary", source=None, **o
     force, N: Kt times current), ``velocity`` (rad/s or m/s).
     ``axis`` ("rotary" default) picks the units; ``source`` (a Data from load() or a path) names
     the data in the result. ``diagnostics.groups['readoff']`` holds the lecture's read-offs.
+    ``load`` (an option, N m or N, length N): the load the contact transmits; then
+    mu_load_coulomb and mu_load_static (dimensionless) are fitted, Fs and Fc are the levels at
+    zero load, and ``diagnostics.lists['breakaways']`` holds each start's time, load and force.
     """
-    values, _ = _method_options("breakaway", "identify_breakaway", options)
+    values, inputs = _method_options("breakaway", "identify_breakaway", options)
     o = _core._make_breakaway_options(values)
     o.axis = axis
-    r = _core._identify_breakaway(time, force, velocity, o)
+    load = inputs.get("load")
+    r = _core._identify_breakaway(time, force, velocity, o, load)
     r._record_options(values)
     r._stamp(*_source(source))
-    r.inputs = {"time": time, "force": force, "velocity": velocity}
+    r.inputs = {"time": time, "force": force, "velocity": velocity, "load": load}
     return r

@@ -21,7 +21,7 @@ def _sweep_options(function, axis, options):
     if inputs.get("reference") is not None:
         o.reference = np.asarray(inputs["reference"], dtype=float)
     o.axis = axis
-    return values, o
+    return values, o, inputs.get("load")
 
 
 @_with_options_doc("sweep")
@@ -30,20 +30,23 @@ def identify_sweep(time, force, velocity, *, axis="rotary", source=None, **optio
 
     Arrays (1-D, equal length, regular time): ``time`` (s), ``force`` (drive torque N m or force
     N), ``velocity`` (rad/s or m/s); ``reference`` (an option) the commanded velocity.
-    ``axis`` ("rotary" default) picks the units.
+    ``axis`` ("rotary" default) picks the units. ``load`` (an option, N m or N, length N): the
+    load the contact transmits; mu_load (dimensionless) is then fitted from the points' mean
+    |load| and the law's levels are those at zero load.
     The points are in ``result.diagnostics.lists['points']``; the fitted law in ``result.law``.
     """
-    values, o = _sweep_options("identify_sweep", axis, options)
-    r = _core._identify_sweep(time, force, velocity, o)
+    values, o, load = _sweep_options("identify_sweep", axis, options)
+    r = _core._identify_sweep(time, force, velocity, o, load)
     r._record_options(values)
     r._stamp(*_source(source))
-    r.inputs = {"time": time, "force": force, "velocity": velocity}
+    r.inputs = {"time": time, "force": force, "velocity": velocity, "load": load}
     return r
 
 
 def sweep_points(time, force, velocity, *, axis="rotary", source=None, **options):
     """The steady-segment points of a sweep, as a dict of numpy arrays: ``velocity``,
     ``velocity_std`` (rad/s or m/s), ``force``, ``force_std`` (N m or N), ``t_begin``,
-    ``t_end`` (s), ``samples``. Options as identify_sweep (the fit options are unused)."""
-    _, o = _sweep_options("sweep_points", axis, options)
-    return _core._sweep_points(time, force, velocity, o)
+    ``t_end`` (s), ``samples``; with the option ``load``, ``load`` (mean |load|, N m or N).
+    Options as identify_sweep (the fit options are unused)."""
+    _, o, load = _sweep_options("sweep_points", axis, options)
+    return _core._sweep_points(time, force, velocity, o, load)

@@ -17,9 +17,11 @@ void bind(py::module_& m) {
         "BreakawayOptions from the values of the method's option table (_option_values).");
   axis_property(brk_opts);
 
-  m.def("_identify_breakaway", [](py::object time, py::object force, py::object velocity, const BreakawayOptions& o) {
+  m.def("_identify_breakaway", [](py::object time, py::object force, py::object velocity, const BreakawayOptions& o,
+                                  py::object load) {
     const auto [t, f, v] = time_force_velocity("identify_breakaway", time, force, velocity);
-    const BreakawayData d{t, f, v};
+    BreakawayData d{t, f, v, {}};
+    d.load = vector_arg(load, "identify_breakaway", "load", ArraySpec{.optional = true});
     py::gil_scoped_release release;
     return identify_breakaway(d, o);
   });

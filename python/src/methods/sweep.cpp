@@ -35,15 +35,19 @@ void bind(py::module_& m) {
         "SweepOptions from the values of the method's option table (_option_values).");
   axis_property(sweep_opts);
 
-  m.def("_identify_sweep", [](py::object time, py::object force, py::object velocity, const SweepOptions& o) {
+  m.def("_identify_sweep", [](py::object time, py::object force, py::object velocity, const SweepOptions& o,
+                              py::object load) {
     const auto [t, f, v] = time_force_velocity("identify_sweep", time, force, velocity);
-    const SweepData d{t, f, v};
+    SweepData d{t, f, v, {}};
+    d.load = vector_arg(load, "identify_sweep", "load", ArraySpec{.optional = true});
     py::gil_scoped_release release;
     return identify_sweep(d, o);
   });
-  m.def("_sweep_points", [](py::object time, py::object force, py::object velocity, const SweepOptions& o) {
+  m.def("_sweep_points", [](py::object time, py::object force, py::object velocity, const SweepOptions& o,
+                            py::object load) {
     const auto [tt, ff, vv] = time_force_velocity("sweep_points", time, force, velocity);
-    const SweepData d{tt, ff, vv};
+    SweepData d{tt, ff, vv, {}};
+    d.load = vector_arg(load, "sweep_points", "load", ArraySpec{.optional = true});
     const std::vector<SweepPoint> pts = sweep_points(d, o);
     std::vector<double> v, vs, f, fs, tb, te, n;
     for (const auto& p : pts) {
@@ -58,6 +62,11 @@ void bind(py::module_& m) {
     out["t_begin"] = to_array(tb);
     out["t_end"] = to_array(te);
     out["samples"] = to_array(n);
+    if (d.load.size() > 0) {
+      std::vector<double> l;
+      for (const auto& p : pts) l.push_back(p.load);
+      out["load"] = to_array(l);
+    }
     return out;
   });
 }

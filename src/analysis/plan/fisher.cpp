@@ -77,7 +77,7 @@ double force_noise_std(const PlanRig& rig, const SensorNoise& noise) {
 AprioriSpread sweep_spread(const PlanMeasurement& m, const PlanRig& rig, const SensorNoise& noise) {
   AprioriSpread out;
   const SweepOptions o = plan_sweep_options(rig, m.reference);
-  const auto points = sweep_points(SweepData{m.time, m.force, m.velocity}, o);
+  const auto points = sweep_points(SweepData{m.time, m.force, m.velocity, {}}, o);
   const auto n = static_cast<Eigen::Index>(points.size());
   if (n == 0) return out;
   Eigen::VectorXd v(n), f(n);

@@ -126,10 +126,10 @@ Result identify_measurement(PlanMethod method, const PlanMeasurement& d, const P
     case PlanMethod::breakaway: {
       BreakawayOptions o;
       o.axis = rig.axis;
-      return identify_breakaway(BreakawayData{d.time, d.force, d.velocity}, o);
+      return identify_breakaway(BreakawayData{d.time, d.force, d.velocity, {}}, o);
     }
     case PlanMethod::sweep:
-      return identify_sweep(SweepData{d.time, d.force, d.velocity}, plan_sweep_options(rig, d.reference));
+      return identify_sweep(SweepData{d.time, d.force, d.velocity, {}}, plan_sweep_options(rig, d.reference));
     case PlanMethod::idim: {
       const IdimOptions o = plan_idim_options(rig);
       IdimData data;
