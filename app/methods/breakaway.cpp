@@ -8,6 +8,7 @@
 #include "frictionlab/models/friction_law.hpp"
 #include "method.hpp"
 #include "frictionlab/identify/breakaway.hpp"
+#include "frictionlab/io/column_expression.hpp"
 #include "frictionlab/io/columns.hpp"
 
 namespace frictionlab::cli {
@@ -16,7 +17,7 @@ namespace {
 Result run(const MethodIO& io, const OptionValues& options) {
   const Dataset d = load_data(io.data, io.columns);
   BreakawayData x{time_column(d, io.columns), force_column(d, io.columns), velocity_column(d, io.columns), {}};
-  if (options.given("load")) x.load = finite_column(d, options.text("load"), "--load");
+  if (options.given("load")) x.load = finite_signal(d, options.text("load"), "--load");
   BreakawayOptions o = make_breakaway_options(options);
   o.axis = io.columns.parsed_axis();
   Result r = identify_breakaway(x, o);
