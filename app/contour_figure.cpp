@@ -62,8 +62,11 @@ FigurePanel polar_panel(double R, const PolarScale& scale) {
   polar.series.push_back(ring("nominal circle", R, "#606060"));
   if (scale.ring_m > 0) {
     const double d = scale.factor * scale.ring_m * kMm;
-    polar.series.push_back(ring("+-" + format_number(scale.ring_m * kUm) + " um", R + d, "#b0b0b0"));
-    polar.series.push_back(ring("", R - d, "#b0b0b0"));
+    FigureSeries outer = ring("+-" + format_number(scale.ring_m * kUm) + " um", R + d, "#909090");
+    FigureSeries inner = ring("", R - d, "#909090");
+    outer.dashed = inner.dashed = true;  // as the title says: the rings are dashed
+    polar.series.push_back(std::move(outer));
+    polar.series.push_back(std::move(inner));
   }
   return polar;
 }
