@@ -57,7 +57,6 @@ FigurePanel polar_panel(double R, const PolarScale& scale) {
   polar.x_label = "x - centre (mm)";
   polar.y_label = "y - centre (mm)";
   polar.equal_axes = true;
-  polar.key = "outside right top";  // the path fills the square: the legend beside it
   polar.zero_line = polar.zero_x_line = true;
   polar.series.push_back(ring("nominal circle", R, "#606060"));
   if (scale.ring_m > 0) {

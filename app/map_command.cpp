@@ -156,6 +156,7 @@ Figure map_figure(const ScenarioGrid& g, const MapGrid& grid, const RowTable& t,
                   const std::string& title, Axis axis) {
   Figure f;
   f.title = "Map - " + title;
+  f.panel_height = 520;  // a grid of markers under a legend of several lines
   FigurePanel p;
   const std::size_t nk = grid.axes.size();
   const bool two_d = nk == 2;

@@ -73,6 +73,18 @@ document.getElementById('result').textContent = 'RESULT' + JSON.stringify(out) +
 """
 
 
+# What some figures' gnuplot scripts must say (the issue's fixes, which the geometry cannot see):
+# a log-spaced map key on a true logarithmic axis with its unit, the polar plot's dashed rings,
+# the drift figure counting its 8 logs (not its 16 rows).
+EXPECT_IN_SCRIPT = {
+    "analyze-map-2d": ["set logscale x 10", "set xlabel 'plant.V0 (m/s)'", "set ylabel 'plant.c (N s/m)'"],
+    "analyze-map-1d": ["set xlabel 'friction.Fs (N)'", "unset logscale x"],
+    "simulate-xy-circle": ["dashed rings", "dt (8,6)"],
+    "analyze-contour": ["dashed rings", "dt (8,6)"],
+    "identify-drift": ["over 8 logs"],
+}
+
+
 def find_browser():
     for b in ("chromium", "chromium-browser"):
         if shutil.which(b):
@@ -134,7 +146,7 @@ def has_unit(label):
 def check(name, kind, labels, m):
     """The problems of one figure, as lines naming it and the elements."""
     problems = []
-    for label in labels:
+    for label in dict.fromkeys(labels):
         if not has_unit(label):
             problems.append(f"{name}: axis label '{label}' carries no unit (write '(UNIT)'; unitless: "
                             + " or ".join(f"'{u}'" for u in UNITLESS) + ")")
@@ -217,6 +229,9 @@ def main():
                 problems.append(f"{f.name}: not rendered")
                 continue
             problems += check(f.name, f.kind, f.labels, m[f.name])
+            if f.name in EXPECT_IN_SCRIPT:
+                script = pathlib.Path(f"{f.svg}.gp").read_text()
+                problems += [f"{f.name}: the script lacks {w!r}" for w in EXPECT_IN_SCRIPT[f.name] if w not in script]
     print(f"figures: {len(figures)} drawn in {made - start:.1f} s, measured in {time.monotonic() - made:.1f} s; "
           f"the bad figure caught ({len(bad)} problems)")
     if problems:
