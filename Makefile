@@ -21,7 +21,7 @@ FUZZ_SECONDS      ?= 600
 FUZZ_TEST_SECONDS ?= 15
 FUZZERS            = fuzz_csv fuzz_mat fuzz_scenario fuzz_law
 
-.PHONY: all deps build test docs demo sanitize bench install-test coverage clean fuzz-build fuzz fuzz-test fuzz-merge
+.PHONY: all deps build test docs demo sanitize bench install-test coverage gallery clean fuzz-build fuzz fuzz-test fuzz-merge
 
 all: build
 
@@ -66,6 +66,10 @@ coverage: build
 	@echo "table: $(BUILD)/coverage.md"
 
 # Installs the library into a scratch prefix and builds a consumer with find_package(frictionlab).
+# docs/gallery.md and docs/gallery/*.png: every figure kind, from the bundled data (scripts/gallery.py).
+gallery: build
+	@$(PYTHON) scripts/gallery.py $(BUILD)
+
 install-test: build
 	@bash tests/install/run.sh $(BUILD)
 

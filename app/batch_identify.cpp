@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <set>
 #include <stdexcept>
 #include <thread>
 
@@ -101,7 +102,9 @@ Figure drift_figure(const std::vector<DriftRow>& rows, double threshold) {
   std::string first;
   for (const auto& r : rows)
     if (r.sample.date.posix_seconds == t0) first = r.sample.date.iso;
-  f.title = "Drift of the identified parameters over " + std::to_string(rows.size()) + " values";
+  std::set<std::string> logs;  // rows are per parameter and log: the count is of distinct logs
+  for (const auto& r : rows) logs.insert(r.sample.file);
+  f.title = "Drift of the identified parameters over " + std::to_string(logs.size()) + " logs";
   std::vector<std::string> names;
   for (const auto& r : rows)
     if (std::find(names.begin(), names.end(), r.sample.parameter) == names.end()) names.push_back(r.sample.parameter);
@@ -127,9 +130,8 @@ Figure drift_figure(const std::vector<DriftRow>& rows, double threshold) {
       }
       unit = r.sample.unit;
     }
-    p.x_label = "days since " + first;
+    p.x_label = "time since " + first + " (days)";
     p.y_label = name + (unit.empty() ? "" : " (" + unit + ")");
-    p.key = "top left";
     p.series.push_back(s);
     if (!flagged.x.empty()) p.series.push_back(flagged);
     f.panels.push_back(p);

@@ -57,13 +57,15 @@ FigurePanel polar_panel(double R, const PolarScale& scale) {
   polar.x_label = "x - centre (mm)";
   polar.y_label = "y - centre (mm)";
   polar.equal_axes = true;
-  polar.key = "outside right top";  // the path fills the square: the legend beside it
   polar.zero_line = polar.zero_x_line = true;
   polar.series.push_back(ring("nominal circle", R, "#606060"));
   if (scale.ring_m > 0) {
     const double d = scale.factor * scale.ring_m * kMm;
-    polar.series.push_back(ring("+-" + format_number(scale.ring_m * kUm) + " um", R + d, "#b0b0b0"));
-    polar.series.push_back(ring("", R - d, "#b0b0b0"));
+    FigureSeries outer = ring("+-" + format_number(scale.ring_m * kUm) + " um", R + d, "#909090");
+    FigureSeries inner = ring("", R - d, "#909090");
+    outer.dashed = inner.dashed = true;  // as the title says: the rings are dashed
+    polar.series.push_back(std::move(outer));
+    polar.series.push_back(std::move(inner));
   }
   return polar;
 }

@@ -226,7 +226,6 @@ FigurePanel map_panel(Axis axis) {
   p.y_label = label("friction " + force_name(axis), Quantity::force, axis);
   p.zero_line = true;
   p.zero_x_line = true;
-  p.key = "top left";
   return p;
 }
 
@@ -326,7 +325,6 @@ Figure envelope_figure(std::span<const double> t, std::span<const double> x, con
   FigurePanel a;
   a.x_label = "time (s)";
   a.y_label = "half-swing amplitude (m or rad)";
-  a.key = "top right";
   a.series.push_back(series("half swings", r.peak_times, r.amplitudes, SeriesStyle::points, "#0072b2"));
   if (!r.peak_times.empty()) {
     const double t0 = r.peak_times.front(), t1 = r.peak_times.back();
@@ -354,7 +352,6 @@ Figure stick_slip_figure(std::span<const double> t, std::span<const double> v, s
   Figure f;
   f.title = "Stick-slip - " + title;
   FigurePanel vel = time_panel("velocity (m/s or rad/s)");
-  vel.key = "top left";  // stick-slip records start stuck: the upper left corner is free
   vel.series.push_back(series("velocity", {t.begin(), t.end()}, {v.begin(), v.end()}, SeriesStyle::lines, "#0072b2"));
   if (r.velocity_threshold > 0 && !t.empty()) {
     vel.series.push_back(series("stuck band |v| <= " + format_number(r.velocity_threshold, 3),
@@ -372,7 +369,6 @@ Figure stick_slip_figure(std::span<const double> t, std::span<const double> v, s
   f.panels.push_back(vel);
   if (!force.empty() && !t.empty()) {
     FigurePanel fp = time_panel("friction force (N or N m)");
-    fp.key = "top left";
     fp.series.push_back(series("friction", {t.begin(), t.end()}, {force.begin(), force.end()}, SeriesStyle::lines,
                                "#0072b2"));
     // Complete slips (started after the record's start, ended before its end) carry the forces.

@@ -6,12 +6,15 @@
 #include <iostream>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
+#include <yaml-cpp/yaml.h>
 
 #include "frictionlab/analysis/map.hpp"
 #include "frictionlab/format.hpp"
+#include "frictionlab/models/parameter.hpp"
 #include "io/atomic_write.hpp"
 #include "report/figure.hpp"
 #include "fleet/map_run.hpp"
@@ -26,9 +29,51 @@ const char* const kClassColours[][2] = {{"converged", "#009e73"},  {"steady-slid
                                         {"stick-slip", "#d55e00"}, {"hunting", "#cc79a7"},
                                         {"oscillating", "#e69f00"}, {"failed", "#000000"}};
 
-// Plot coordinate of a value on an axis: log10 on a log-spaced axis.
-double coord(const MapAxis& a, double v) { return a.log ? std::log10(v) : v; }
-std::string axis_label(const MapAxis& a) { return a.log ? "log10(" + a.key + ")" : a.key; }
+// Plot coordinate of a value on an axis: the value itself; a log-spaced axis is drawn on a
+// logarithmic scale (FigurePanel::log_x, log_y), so its tick labels are values, not log10 values.
+double coord(const MapAxis&, double v) { return v; }
+
+// The quantity of a scenario key by its last part (the parameters scenario.hpp lists), for the
+// axis label's unit; nullopt for a key the table does not know.
+std::optional<Quantity> key_quantity(const std::string& key) {
+  const std::string last = key.substr(key.rfind('.') == std::string::npos ? 0 : key.rfind('.') + 1);
+  static const std::map<std::string, Quantity> table = {
+      {"Fc", Quantity::force},        {"Fs", Quantity::force},        {"offset", Quantity::force},
+      {"Fc_pos", Quantity::force},    {"Fc_neg", Quantity::force},    {"Fs_pos", Quantity::force},
+      {"Fs_neg", Quantity::force},    {"Fv", Quantity::viscous},
+      {"c", Quantity::viscous},       {"B", Quantity::viscous},       {"sigma1", Quantity::viscous},
+      {"sigma2", Quantity::viscous},  {"Kd", Quantity::viscous},      {"vs", Quantity::velocity},
+      {"vd", Quantity::velocity},     {"V0", Quantity::velocity},     {"velocity", Quantity::velocity},
+      {"sigma0", Quantity::stiffness}, {"k", Quantity::stiffness},    {"Kp", Quantity::stiffness},
+      {"M", Quantity::inertia},       {"m", Quantity::inertia},       {"mass", Quantity::inertia},
+      {"inertia", Quantity::inertia}, {"duration", Quantity::time},   {"delta", Quantity::dimensionless}};
+  const auto it = table.find(last);
+  if (it == table.end()) return std::nullopt;
+  return it->second;
+}
+
+// "KEY (UNIT)": the unit by the key's quantity on the scenario's axis (rotary for a DC motor or a
+// pendulum), "(-)" for a dimensionless key, "(scenario units)" for a key the table does not know
+// (the scenario file's own unit, SI).
+std::string axis_label(const MapAxis& a, Axis axis) {
+  const std::string last = a.key.substr(a.key.rfind('.') == std::string::npos ? 0 : a.key.rfind('.') + 1);
+  std::string u;
+  if (last == "Ki") u = axis == Axis::rotary ? "N m/(rad s)" : "N/(m s)";
+  else if (const auto q = key_quantity(a.key)) u = *q == Quantity::dimensionless ? "-" : std::string(unit(*q, axis));
+  else u = "scenario units, SI";
+  return a.key + " (" + u + ")";
+}
+
+// The axis of the scenario's plant: rotary for a DC motor or a pendulum, else linear.
+Axis scenario_axis(const std::string& file) {
+  try {
+    const YAML::Node root = YAML::LoadFile(file);
+    const std::string type = root["plant"] && root["plant"]["type"] ? root["plant"]["type"].as<std::string>() : "";
+    return type == "dc-motor" || type == "pendulum" ? Axis::rotary : Axis::linear;
+  } catch (const YAML::Exception&) {
+    return Axis::linear;  // read again (and its errors reported) by ScenarioGrid
+  }
+}
 
 // The theory's indicator at a point: the sliding margin (spring-block), +1 / -1 for a predicted
 // hunting / none (pid-hunting); NaN where the scenario is refused or no theory applies.
@@ -108,15 +153,17 @@ FigureSeries boundary(const ScenarioGrid& g, const MapGrid& grid, double y_top) 
 }
 
 Figure map_figure(const ScenarioGrid& g, const MapGrid& grid, const RowTable& t, const std::string& theory_kind,
-                  const std::string& title) {
+                  const std::string& title, Axis axis) {
   Figure f;
   f.title = "Map - " + title;
+  f.panel_height = 520;  // a grid of markers under a legend of several lines
   FigurePanel p;
   const std::size_t nk = grid.axes.size();
   const bool two_d = nk == 2;
-  p.x_label = axis_label(grid.axes[0]);
-  p.y_label = two_d ? axis_label(grid.axes[1]) : "amplitude (m or rad)";
-  p.key = "below";  // under the panel: markers fill the whole grid
+  p.x_label = axis_label(grid.axes[0], axis);
+  p.y_label = two_d ? axis_label(grid.axes[1], axis) : std::string("amplitude (") + (axis == Axis::rotary ? "rad" : "m") + ")";
+  p.log_x = grid.axes[0].log;
+  p.log_y = two_d && grid.axes[1].log;
   const auto col = [&](const std::string& name) {
     return static_cast<std::size_t>(std::find(t.columns.begin(), t.columns.end(), name) - t.columns.begin());
   };
@@ -201,7 +248,8 @@ FigureFiles draw_map(const Part& run, const std::string& plot, bool overwrite, c
   progress_stage("drawing " + plot);
   const FigureFiles files = write_figure(
       map_figure(g, grid, run.table, theory_kind,
-                 std::filesystem::path(recorded).filename().string() + (contact.empty() ? "" : ", contact " + contact)),
+                 std::filesystem::path(recorded).filename().string() + (contact.empty() ? "" : ", contact " + contact),
+                 scenario_axis(file)),
       plot, overwrite);
   return files;
 }

@@ -33,7 +33,6 @@ Figure breakaway_figure(const Result& r) {
   if (!t) return f;
   if (F) {
     FigurePanel p = time_panel(label("applied " + force_name(axis), Quantity::force, axis));
-    p.key = "top left";
     p.series.push_back(series("applied", *t, *F, SeriesStyle::lines, "#0072b2"));
     const auto tb = r.diagnostics.numbers.find("breakaway_time");
     const double Fs = parameter(r, "Fs"), Fc = parameter(r, "Fc");
@@ -52,7 +51,6 @@ Figure breakaway_figure(const Result& r) {
   }
   if (v) {
     FigurePanel p = time_panel(label("velocity", Quantity::velocity, axis));
-    p.key = "top left";
     p.series.push_back(series("measured", *t, *v, SeriesStyle::lines, "#0072b2"));
     f.panels.push_back(p);
   }

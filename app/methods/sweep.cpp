@@ -35,7 +35,6 @@ Figure sweep_figure(const Result& r) {
   p.x_label = label("velocity", Quantity::velocity, axis);
   p.y_label = label("friction " + force_name(axis), Quantity::force, axis);
   p.zero_line = true;
-  p.key = "top left";
   if (const auto *v = find(r, "velocity"), *F = find(r, "force"); v && F) {
     FigureSeries s = series("steady segments (mean +- std)", *v, *F, SeriesStyle::errorbars, "#0072b2");
     if (const auto* sd = find(r, "force_std"); sd && sd->size() == s.y.size()) s.y_error = *sd;

@@ -82,19 +82,28 @@ void check_figure(const Figure& f) {
   if (!any) throw std::invalid_argument("figure '" + f.title + "': no data to draw");
 }
 
+// The legend's place in gnuplot words: outside the axes, never over data or labels (see
+// FigurePanel::key). Inside positions and "below" (drawn over the x label: tests/figures) become
+// "above".
+std::string key_position(const std::string& key) {
+  if (key.rfind("outside", 0) == 0) return key;
+  return "above";
+}
+
 std::string terminal(FigureFormat format, const Figure& f) {
   const int rows = static_cast<int>(f.panels.size());
   const int height = f.panel_height * rows + (f.title.empty() ? 0 : 40);
   std::ostringstream t;
   switch (format) {
+    // Fonts sized for a figure seen at its own width in a browser window or a report page.
     case FigureFormat::svg:
-      t << "set terminal svg size " << f.width << "," << height << " dynamic enhanced font 'Sans,13' background '#ffffff'";
+      t << "set terminal svg size " << f.width << "," << height << " dynamic enhanced font 'Sans,16' background '#ffffff'";
       break;
     case FigureFormat::png:
-      t << "set terminal pngcairo size " << f.width << "," << height << " enhanced font 'Sans,11' background '#ffffff'";
+      t << "set terminal pngcairo size " << f.width << "," << height << " enhanced font 'Sans,13' background '#ffffff'";
       break;
     case FigureFormat::pdf:  // pdfcairo sizes are in inches; 100 px per inch keeps the proportions
-      t << "set terminal pdfcairo size " << f.width / 100.0 << "in," << height / 100.0 << "in enhanced font 'Sans,10'";
+      t << "set terminal pdfcairo size " << f.width / 100.0 << "in," << height / 100.0 << "in enhanced font 'Sans,11'";
       break;
   }
   return t.str();
@@ -242,7 +251,7 @@ std::string gnuplot_script(const Figure& figure, const std::string& path) {
     << "set lmargin 12\nset rmargin 4\n";
   if (figure.panels.size() > 1 || !figure.title.empty()) {
     g << "set multiplot layout " << figure.panels.size() << ",1";
-    if (!figure.title.empty()) g << " title " << gp_quote(figure.title) << " noenhanced font ',15'";
+    if (!figure.title.empty()) g << " title " << gp_quote(figure.title) << " noenhanced font ',18'";
     g << "\n";
   }
   int index = 0, colour = 0;
@@ -252,8 +261,10 @@ std::string gnuplot_script(const Figure& figure, const std::string& path) {
     g << "set title " << gp_quote(panel.title) << " noenhanced\n"
       << "set xlabel " << enhanced(panel.x_label) << "\n"
       << "set ylabel " << enhanced(panel.y_label) << "\n"
-      << "set key " << panel.key << " opaque box lc rgb '#a0a0a0' samplen 2 spacing 1.1 noenhanced\n"
+      << "set key " << key_position(panel.key) << " box lc rgb '#a0a0a0' samplen 2 spacing 1.1 noenhanced\n"
       << "set autoscale\n"
+      << (panel.log_x ? "set logscale x 10\n" : "unset logscale x\n")
+      << (panel.log_y ? "set logscale y 10\n" : "unset logscale y\n")
       << (panel.tight_x ? "set autoscale xfix\nset offsets 0, 0, graph 0.05, graph 0.05\n"
                         : "set offsets graph 0.02, graph 0.02, graph 0.05, graph 0.05\n")
       << (panel.zero_line ? "set xzeroaxis lt -1 lw 1 lc rgb '#606060'\n" : "unset xzeroaxis\n")
@@ -268,9 +279,10 @@ std::string gnuplot_script(const Figure& figure, const std::string& path) {
       p << (plots.empty() ? "datafile" : "''") << " index " << index++;
       const auto size = [&](double fallback) { return number(s.point_size > 0 ? s.point_size : fallback); };
       const auto width = [&](double fallback) { return number(s.line_width > 0 ? s.line_width : fallback); };
+      const std::string dash = s.dashed ? " dt (8,6)" : "";
       switch (s.style) {
-        case SeriesStyle::lines: p << " using 1:2 with lines lw " << width(1.6); break;
-        case SeriesStyle::steps: p << " using 1:2 with steps lw " << width(1.6); break;
+        case SeriesStyle::lines: p << " using 1:2 with lines lw " << width(1.6) << dash; break;
+        case SeriesStyle::steps: p << " using 1:2 with steps lw " << width(1.6) << dash; break;
         case SeriesStyle::points: p << " using 1:2 with points pt 7 ps " << size(0.7); break;
         case SeriesStyle::errorbars:
           p << " using 1:2:3 with yerrorbars pt 7 ps " << size(0.8) << " lw " << width(1.2);

@@ -36,6 +36,8 @@ struct FigureSeries {
   /// Line width (lines, steps, error bars) in gnuplot's units; 0: the style's default (1.6 for
   /// lines and steps, 1.2 for error bars).
   double line_width = 0;
+  /// Draw the line dashed (lines and steps styles): rings, bounds and references that frame the data.
+  bool dashed = false;
 };
 
 /// One panel (a pair of axes). Labels carry the quantity and its unit, e.g. "time (s)".
@@ -48,7 +50,13 @@ struct FigurePanel {
   bool zero_x_line = false;  ///< draw the x = 0 line (maps against a signed x, e.g. velocity)
   bool tight_x = false;    ///< x range exactly the data's (time axes); else rounded to tics
   bool equal_axes = false;  ///< one unit as long on x as on y (a path in the plane: a circle stays round)
-  std::string key = "top right";  ///< legend position in gnuplot words ("top left", "bottom right", ...)
+  /// Where the legend goes, always outside the data and clear of the axis labels: "above" (between
+  /// the panel's title and its axes, entries side by side; the default) or "outside right top"
+  /// (beside the axes; for equal-axes panels whose width is fixed). Any other position, inside the
+  /// axes ("top left", ...) or "below" (gnuplot draws it over the x label), is drawn as "above".
+  std::string key = "above";
+  bool log_x = false;  ///< logarithmic x axis (every x > 0; gnuplot `set logscale x`, decades as 10^n)
+  bool log_y = false;  ///< logarithmic y axis (every y > 0)
 };
 
 /// A figure: a title and one or more panels stacked vertically (sharing nothing but the width).

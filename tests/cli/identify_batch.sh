@@ -48,6 +48,8 @@ expect 0 "" "${sweep[@]}" "$tmp"/fleet/axis3_2026-11-0?.csv --table "$tmp/t.json
   --drift "$tmp/drift.csv" --drift-threshold 3 --plot "$tmp/drift.svg"
 grep -qF "drift: 1 flagged (a change beyond 3 combined std)" "$tmp/err.txt" || { cat "$tmp/err.txt"; fail "drift summary"; }
 [ -s "$tmp/drift.svg" ] && [ -s "$tmp/drift.svg.dat" ] || fail "no drift figure"
+# The title counts the 8 logs, not the 16 rows (2 parameters each), as fl.plot.drift does.
+grep -q "over 8 logs" "$tmp/drift.svg.gp" || fail "drift figure title does not count 8 logs"
 /usr/bin/python3 - "$tmp/t.json" "$tmp/drift.csv" <<'PY'
 import csv, json, sys
 t = json.load(open(sys.argv[1]))

@@ -160,6 +160,45 @@ TEST(Figure, MapStyleMarkerSizesLineWidthsAndZeroLines) {
   EXPECT_NE(plain.find("unset yzeroaxis"), std::string::npos);
 }
 
+TEST(Figure, LogAxesDashedLinesAndLegendOutside) {
+  // A log-spaced axis is a true logarithmic axis (its ticks are values, not log10 values); a
+  // dashed series is drawn dashed; a legend asked for inside the axes goes above them.
+  Figure f;
+  FigurePanel p;
+  p.x_label = "V0 (m/s)";
+  p.y_label = "c (N s/m)";
+  p.log_x = true;
+  p.key = "top left";
+  FigureSeries ring{"ring", {0.01, 0.1}, {1, 2}, {}, SeriesStyle::lines, ""};
+  ring.dashed = true;
+  p.series = {ring};
+  f.panels.push_back(p);
+  FigurePanel q = p;
+  q.log_x = false;
+  q.log_y = true;
+  q.key = "outside right top";
+  q.series[0].dashed = false;
+  f.panels.push_back(q);
+  const std::string gp = gnuplot_script(f, "map.svg");
+  const auto second = gp.find("# panel: c (N s/m)", gp.find("# panel: c (N s/m)") + 1);
+  ASSERT_NE(second, std::string::npos) << gp;
+  const std::string one = gp.substr(0, second), two = gp.substr(second);
+  EXPECT_NE(one.find("set logscale x 10\n"), std::string::npos) << one;
+  EXPECT_NE(one.find("unset logscale y\n"), std::string::npos) << one;
+  EXPECT_NE(one.find("with lines lw 1.6 dt (8,6)"), std::string::npos) << one;
+  EXPECT_NE(one.find("set key above "), std::string::npos) << one;
+  EXPECT_EQ(one.find("top left"), std::string::npos) << one;
+  EXPECT_NE(two.find("unset logscale x\n"), std::string::npos) << two;
+  EXPECT_NE(two.find("set logscale y 10\n"), std::string::npos) << two;
+  EXPECT_EQ(two.find("dt (8,6)"), std::string::npos) << two;
+  EXPECT_NE(two.find("set key outside right top "), std::string::npos) << two;
+  FigurePanel under = q;
+  under.key = "below";  // gnuplot draws a key below over the x label: above instead
+  Figure g;
+  g.panels = {under};
+  EXPECT_NE(gnuplot_script(g, "b.svg").find("set key above "), std::string::npos);
+}
+
 TEST(Figure, RefusesBadFigures) {
   Figure f;
   EXPECT_THROW(gnuplot_data(f), std::invalid_argument);  // no panels

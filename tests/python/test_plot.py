@@ -3,6 +3,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import frictionlab as fl  # noqa: E402
@@ -50,3 +51,151 @@ def test_plot_errors(emps):
         fl.plot.idim(bad)
     with pytest.raises(ValueError, match=r"sweep plot: the result has no points"):
         fl.plot.sweep(fl.identify_idim(emps["t"], emps["vir"], emps["qm"]))
+
+
+# --- ax=: every function draws into the caller's Axes and returns them; the new figure kinds ---
+
+LUGRE_YAML = """description: Canudas de Wit 1995 Table I, presliding then sliding (tests/cli/identify_lugre.sh)
+plant: {type: axis, M: 1.0}
+friction: {law: lugre, sigma0: 1.0e5, sigma1: 316.22776601683796, sigma2: 0.4, Fc: 1.0, Fs: 1.5, vs: 0.001}
+input: {type: table, times: [%s], values: [%s]}
+duration: 10
+output_rate: 1000
+"""
+
+
+def lugre_record(tmp_path):
+    import math
+
+    times, values = [0.0, 2.0, 4.0], [0.0, 1.425, 0.0]
+    for i in range(1, 301):
+        t = round(4.0 + 0.02 * i, 6)
+        times.append(t)
+        values.append(3.0 * math.sin(math.pi * (t - 4.0)))
+    path = tmp_path / "lugre.yaml"
+    path.write_text(LUGRE_YAML % (", ".join(map(repr, times)), ", ".join(map(repr, values))))
+    return fl.simulate(path)
+
+
+def unit_of(label):
+    """The unit in a label's trailing parentheses ('velocity (m/s)' -> 'm/s'), or None."""
+    import re
+
+    m = re.search(r"\(([^()]+)\)\s*$", label)
+    return m.group(1) if m else None
+
+
+def check_drawn_into(axes, returned):
+    """The function returned the caller's Axes, drew lines or markers there, and labelled both
+    axes of each with a unit."""
+    assert returned is axes or list(returned) == list(axes)
+    for ax in ([axes] if not isinstance(axes, list) else axes):
+        assert ax.lines or ax.collections, "nothing drawn into the given Axes"
+        assert unit_of(ax.get_ylabel()), ax.get_ylabel()
+    bottom = axes[-1] if isinstance(axes, list) else axes
+    assert unit_of(bottom.get_xlabel()), bottom.get_xlabel()
+
+
+def legend_outside(ax):
+    """The legend's box lies right of the axes' box (drawn beside them, never over data)."""
+    fig = ax.figure
+    fig.canvas.draw()
+    leg = ax.get_legend()
+    assert leg is not None
+    lb, ab = leg.get_window_extent(), ax.get_window_extent()
+    assert lb.x0 >= ab.x1, (lb, ab)
+
+
+def test_ax_keyword_every_function(example, emps, tmp_path):
+    sw = fl.simulate(example("virgala_motor_sweep"))
+    r = fl.identify_sweep(sw["time"], 0.039 * sw["current"], sw["velocity"], model="coulomb-viscous")
+    fig, ax = plt.subplots()
+    check_drawn_into(ax, fl.plot.sweep(r, ax=ax))
+    legend_outside(ax)
+    assert ax.get_xlabel() == "velocity (rad/s)" and ax.get_ylabel() == "friction (N m)"
+    with pytest.raises(ValueError, match="breakaway plot: the result has no 'time' and 'force'"):
+        fl.plot.breakaway(r)  # a sweep's result: no record over time
+
+    ri = fl.identify_idim(emps["t"], emps["gtau"] * emps["vir"], emps["qm"])
+    fig, axes = plt.subplots(2, 1)
+    check_drawn_into(list(axes), fl.plot.idim(ri, ax=axes))
+    with pytest.raises(ValueError, match="this figure has 2 panels; got 1 Axes"):
+        fl.plot.idim(ri, ax=axes[0])
+
+    pend = fl.simulate(example("craig_pendulum_combined"))
+    fig, axes = plt.subplots(3, 1)
+    check_drawn_into(list(axes), fl.plot.simulation(pend, axis="rotary", ax=list(axes)))
+    assert [a.get_ylabel() for a in axes] == ["position (rad)", "velocity (rad/s)", "friction (N m)"]
+    fig, axes = plt.subplots(2, 1)
+    check_drawn_into(list(axes), fl.plot.decay(pend, axis="rotary", ax=list(axes)))
+    assert axes[1].get_ylabel() == "amplitude (rad)"
+
+
+def test_breakaway_plot(example):
+    tr = fl.simulate(example("craig_motor_trapezoid"))
+    r = fl.identify_breakaway(tr["time"], 0.0141 * tr["current"], tr["velocity"])
+    fig, ax = plt.subplots()
+    check_drawn_into(ax, fl.plot.breakaway(r, ax=ax))
+    assert ax.get_ylabel() == "applied torque (N m)"
+    # The breakaway marker sits at (breakaway time, Fs) of the result.
+    marker = next(line for line in ax.lines if line.get_label() == "breakaway Fs")
+    assert marker.get_ydata()[0] == r["Fs"] and marker.get_xdata()[0] == r.diagnostics.numbers["breakaway_time"]
+    assert isinstance(fl.plot.breakaway(r), matplotlib.figure.Figure)
+
+
+def test_lugre_plot(tmp_path):
+    tr = lugre_record(tmp_path)
+    r = fl.identify_lugre(tr["time"], tr["applied"], tr["position"], inertia=1.0)
+    fig, ax = plt.subplots()
+    check_drawn_into(ax, fl.plot.lugre(r, ax=ax, vmax=0.01))
+    curve = ax.lines[1]  # v > 0 branch: the law's steady friction, Fc + (Fs - Fc) at v -> 0+
+    # Within 2 % of Fs (identified within the CLI test's 2 % on Fc; the curve starts 1e-11 m/s from 0).
+    fs_rel = 0.02
+    assert curve.get_ydata()[0] == pytest.approx(r["Fs"], rel=fs_rel)
+    assert ax.get_xlim()[1] >= 0.01
+
+
+def test_contour_plot():
+    R = 0.01  # m
+    t = np.arange(0, 2 * np.pi * R / 0.02 * 1.05, 1e-3)
+    a = np.pi / 4 + 0.02 / R * t
+    e = 10e-6 * np.exp(-0.5 * (np.remainder(np.degrees(a) + 180, 360) - 180) ** 2 / 4.0)  # one glitch at 0 deg
+    r = fl.analyze_contour(t, (R + e) * np.cos(a), (R + e) * np.sin(a), R * np.cos(a), R * np.sin(a))
+    fig, ax = plt.subplots()
+    check_drawn_into(ax, fl.plot.contour(r, ax=ax))
+    assert ax.get_xlabel() == "angle (deg)" and unit_of(ax.get_ylabel()) == "um"
+    # The radial error is drawn in um: its peak is the 10 um glitch.
+    assert max(ax.lines[0].get_ydata()) == pytest.approx(r.max_radial_error_m * 1e6)
+
+
+def test_map_plot_log_axis(example):
+    rows = fl.analyze_map(example("map_spring_block"), ["plant.V0=log:0.004:0.2:3", "plant.c=0:8:2"],
+                          jobs=2)
+    fig, ax = plt.subplots()
+    check_drawn_into(ax, fl.plot.map(rows, units={"plant.V0": "m/s", "plant.c": "N s/m"}, ax=ax))
+    # A log-spaced key on a true logarithmic axis (tick values are speeds, not their log10).
+    assert ax.get_xscale() == "log" and ax.get_yscale() == "linear"
+    assert ax.get_xlabel() == "plant.V0 (m/s)" and ax.get_ylabel() == "plant.c (N s/m)"
+    legend_outside(ax)
+    one = fl.analyze_map(example("map_pid_hunting"), "friction.Fs=1:2:3", jobs=2)
+    fig, ax = plt.subplots()
+    fl.plot.map(one, ax=ax)
+    assert ax.get_xscale() == "linear" and ax.get_ylabel() == "amplitude (m or rad)"
+    with pytest.raises(ValueError, match="map plot: no rows"):
+        fl.plot.map([])
+
+
+def test_drift_title_counts_logs(tmp_path, source_dir):
+    import subprocess
+    import sys
+
+    subprocess.run([sys.executable, str(source_dir / "examples" / "fleet_logs.py"), str(tmp_path)], check=True,
+                   capture_output=True)
+    files = sorted(tmp_path.glob("axis3_2026-11-0?.csv"))
+    table = fl.batch.identify([str(f) for f in files], "sweep", client=None, model="coulomb-viscous",
+                              load={"resample": True}, date_from="name")
+    fig = fl.plot.drift(table)
+    # One row per parameter and log: the title counts the logs, not the rows.
+    assert fig.axes[0].get_title() == f"drift over {len(files)} logs"
+    fig, axes = plt.subplots(2, 1)
+    check_drawn_into(list(axes), fl.plot.drift(table, ["Fc", "Fv"], ax=list(axes)))
