@@ -41,8 +41,9 @@ ASYMMETRIC_TERMS = "inertia,asymmetric"
 
 class Cell:
     def __init__(self, kind, noise, sensor, fs, loop="open", terms=None, options=None, expect="covers", note="",
-                 velocity_noise=rigs.VELOCITY_NOISE):
+                 velocity_noise=rigs.VELOCITY_NOISE, method="ls"):
         self.kind, self.noise, self.sensor, self.fs, self.loop = kind, noise, sensor, fs, loop
+        self.method = method  # "ls" (IDIM-LS) or "iv" (IDIM-IV with the rig's controller)
         self.velocity_noise = velocity_noise
         self.terms = terms or {"stribeck": STRIBECK_TERMS, "asymmetric": ASYMMETRIC_TERMS}.get(kind)
         self.options = dict(options or {})
@@ -54,7 +55,8 @@ class Cell:
         fitted = " (fit without its term)" if self.kind == "stribeck" and "stribeck" not in self.terms else ""
         extra = "".join(f" {k}={v}" for k, v in self.options.items())
         sensor = self.sensor if self.sensor == "position" else f"velocity ({1e3 * self.velocity_noise:g} mm/s noise)"
-        return f"{self.kind}{fitted}, {self.noise}, {sensor}, {self.fs:g} Hz, {self.loop}{extra}"
+        method = " iv" if self.method == "iv" else ""
+        return f"{self.kind}{fitted}, {self.noise}, {sensor}, {self.fs:g} Hz, {self.loop}{method}{extra}"
 
 
 def all_cells():
@@ -76,7 +78,22 @@ def all_cells():
                           note="the loop reacts to the disturbance"))
         cells.append(Cell("coulomb-viscous", noise, "position", 1000, loop="closed", options={"exclude_below": 0.005},
                           expect=expect, note="the loop reacts to the disturbance"))
+    # IDIM-IV: instruments from the model's own closed loop remove the bias of the white cell.
+    for noise in ("white", "ar1"):
+        cells.append(iv_cell(noise))
     return cells
+
+
+def iv_cell(noise="white"):
+    """The closed-loop cell identified by IDIM-IV with the rig's controller (asserted to cover)."""
+    return Cell("coulomb-viscous", noise, "position", 1000, loop="closed", method="iv")
+
+
+def iv_options(log):
+    """identify_idim's keywords for IDIM-IV on a closed-loop log of coverage_rigs: its PD (Kp, Kd),
+    reference and feedforward."""
+    return {"iv": True, "controller": "pid", "kp": rigs.KP, "kd": rigs.KD, "reference": log["reference"],
+            "feedforward": log["feedforward"]}
 
 
 def fast_cells():
@@ -105,6 +122,8 @@ def run_cell(cell, cases, seed0=1):
         opts = dict(cell.options, skip_end=fl._core.idim_rate_defaults(cell.fs)["skip"])
         if cell.terms is not None:
             opts["terms"] = cell.terms.split(",")
+        if cell.method == "iv":
+            opts.update(iv_options(log))
         r = fl.identify_idim(log["time"], log["force"], position=log.get("position"), velocity=log.get("velocity"),
                              **opts)
         if not r.ok:
@@ -150,11 +169,12 @@ def markdown(rows, cases, seconds):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--cells", choices=["fast", "all"], default="fast")
+    ap.add_argument("--cells", choices=["fast", "all", "iv"], default="fast",
+                    help="fast: make test's subset; all: the whole table; iv: the IDIM-IV cell alone")
     ap.add_argument("--cases", type=int, default=100)
     ap.add_argument("--markdown", help="write the table here (Markdown)")
     a = ap.parse_args()
-    cells = fast_cells() if a.cells == "fast" else all_cells()
+    cells = {"fast": fast_cells, "all": all_cells, "iv": lambda: [iv_cell()]}[a.cells]()
     rows, failures = [], []
     start = time.time()
     for cell in cells:
