@@ -17,10 +17,14 @@ namespace frictionlab::cli {
 namespace {
 
 // The record's columns; the load and temperature columns (--load, --temperature) when given.
-IdimData idim_data(const Dataset& d, const DataOptions& c, const OptionValues& options) {
+// With `loop`, also the closed loop's reference and feedforward (--reference, --feedforward) for
+// IDIM-IV; a cross-test's record needs neither.
+IdimData idim_data(const Dataset& d, const DataOptions& c, const OptionValues& options, bool loop = true) {
   IdimData x = trajectory_record(d, c, options.text("from"));
   if (options.given("load")) x.load = finite_signal(d, options.text("load"), "--load");
   if (options.given("temperature")) x.temperature = finite_signal(d, options.text("temperature"), "--temperature");
+  if (loop && options.given("reference")) x.reference = finite_signal(d, options.text("reference"), "--reference");
+  if (loop && options.given("feedforward")) x.feedforward = finite_signal(d, options.text("feedforward"), "--feedforward");
   return x;
 }
 
@@ -91,10 +95,20 @@ void add_condition_series(Result& r, const IdimData& data, const OptionValues& o
   }
 }
 
-Result run(const MethodIO& io, const OptionValues& options) {
+// The option values with the EMPS controller's drive gain taken from --gain when not given
+// (--iv --controller emps-pd): the controller's volts become force through the same gain.
+OptionValues with_drive_gain(const OptionValues& options, const Dataset& d, const DataOptions& c) {
+  OptionValues v = options;
+  if (v.flag("iv") && v.text("controller") == "emps-pd" && !v.given("drive-gain") && !c.gain.empty())
+    v.set("drive-gain", resolve_constant(d, c.gain, "gain"), "--gain");
+  return v;
+}
+
+Result run(const MethodIO& io, const OptionValues& given) {
+  const Dataset d = load_data(io.data, io.columns);
+  const OptionValues options = with_drive_gain(given, d, io.columns);
   IdimOptions o = make_idim_options(options);
   o.axis = io.columns.parsed_axis();
-  const Dataset d = load_data(io.data, io.columns);
   const IdimData data = idim_data(d, io.columns, options);
   Result r = identify_idim(data, o);
   add_condition_series(r, data, options);
@@ -102,7 +116,7 @@ Result run(const MethodIO& io, const OptionValues& options) {
   r.data_sha256 = data.sha256;
   note_data(r, d);
   if (r.ok() && options.given("validate"))
-    r.validation = cross_test(r, idim_data(load_data(options.text("validate"), io.columns), io.columns, options), o);
+    r.validation = cross_test(r, idim_data(load_data(options.text("validate"), io.columns), io.columns, options, false), o);
   name_flags(r);
   return r;
 }

@@ -9,10 +9,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "frictionlab/error.hpp"
 #include "frictionlab/identify/adequacy.hpp"
 #include "frictionlab/identify/covariance.hpp"
 #include "frictionlab/identify/method.hpp"
 #include "method_support.hpp"
+#include "idim_internal.hpp"
 #include "frictionlab/identify/least_squares.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 #include "frictionlab/signal/butterworth.hpp"
@@ -465,11 +467,9 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options,
   return regression_pass(data, resolved(options, data, dt), dt, false, workspace).reg;
 }
 
-namespace {
-
 // The friction law the identified terms make (Fs = Fc + Fs_minus_Fc when the Stribeck term is
 // present), validated; or none with a warning when the estimates break a law's rules.
-void attach_law(Result& r, const IdimOptions& o, double vs) {
+void detail::attach_idim_law(Result& r, const IdimOptions& o, double vs) {
   auto has = [&](const char* n) { return r.find(n) != nullptr; };
   auto val = [&](const char* n) { return has(n) ? r.value(n) : 0.0; };
   const bool stribeck = has("Fs_minus_Fc");
@@ -542,6 +542,8 @@ void attach_law(Result& r, const IdimOptions& o, double vs) {
   }
   if (r.model == "idim-custom" && r.find("M") != nullptr && !o.extra_terms.size()) r.model = spec.name;
 }
+
+namespace {
 
 Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, double dt, IdimWorkspace& workspace,
                            Vec* velocity = nullptr, std::vector<Eigen::Index>* sample = nullptr);
@@ -625,10 +627,97 @@ MethodInfo detail::idim_method_info() {
       {.name = "validate", .type = OptionType::file,
        .help = "Second data file for a cross-test with the identified parameters (Python: a dict with time, force "
                "and position or velocity)"},
+      {.name = "iv", .type = OptionType::flag, .default_value = false,
+       .help = "IDIM-IV for a record taken in a closed loop: instruments from the model's own closed loop, "
+               "simulated with the experiment's controller (--controller and its gains) and reference "
+               "(--reference); removes the bias the loop's reaction to disturbances gives least squares"},
+      {.name = "reference", .type = OptionType::column, .unit = "m", .rotary_unit = "rad",
+       .help = "IDIM-IV: column of the closed loop's reference position (Python: an array of the data's length)"},
+      {.name = "feedforward", .type = OptionType::column, .unit = "N", .rotary_unit = "N m",
+       .help = "IDIM-IV: column of the feedforward force the drive added to the controller's output (optional; "
+               "Python: an array of the data's length)"},
+      {.name = "controller", .type = OptionType::text,
+       .help = "IDIM-IV: the experiment's controller, sampled at the record's rate: pid (force = kp (r - q) + ki "
+               "int(r - q) - kd qd + feedforward) or emps-pd (v = kp kv (r - q) - kv qd_m, force = drive-gain v; "
+               "EMPS benchmark)",
+       .words = {"pid", "emps-pd"}},
+      {.name = "kp", .type = OptionType::number, .unit = "N/m or 1/s", .rotary_unit = "N m/rad or 1/s",
+       .help = "IDIM-IV: position gain (pid: N/m or N m/rad; emps-pd: the position loop's 1/s)", .min = 0},
+      {.name = "kd", .type = OptionType::number, .unit = "N s/m", .rotary_unit = "N m s/rad",
+       .help = "IDIM-IV, pid: velocity feedback gain on the measured velocity. Default 0", .min = 0},
+      {.name = "ki", .type = OptionType::number, .unit = "N/(m s)", .rotary_unit = "N m/(rad s)",
+       .help = "IDIM-IV, pid: integral gain. Default 0", .min = 0},
+      {.name = "kv", .type = OptionType::number, .unit = "V s/m", .rotary_unit = "V s/rad",
+       .help = "IDIM-IV, emps-pd: velocity-loop gain (EMPS: kv of the data file, 243.45)", .min = 0},
+      {.name = "drive-gain", .type = OptionType::number, .unit = "N/V", .rotary_unit = "N m/V",
+       .help = "IDIM-IV, emps-pd: force per volt of the controller's output (EMPS: gtau). Command line default: "
+               "--gain",
+       .min = 0, .min_open = true},
+      {.name = "control-limit", .type = OptionType::number, .unit = "N or V", .rotary_unit = "N m or V",
+       .help = "IDIM-IV: saturation of the controller's output (pid: N or N m, default none; emps-pd: V, default "
+               "10, the EMPS drive's)",
+       .min = 0, .min_open = true},
+      {.name = "control-delay", .type = OptionType::integer, .unit = "samples",
+       .help = "IDIM-IV: samples from computing the controller's output to applying it, 0 or 1 (default: pid 0, "
+               "emps-pd 1)",
+       .min = 0, .max = 1},
+      {.name = "iv-iterations", .type = OptionType::integer, .default_value = static_cast<long long>(d.iv.max_iterations),
+       .help = "IDIM-IV: largest number of iterations; not converged by then is an error", .min = 1},
+      {.name = "iv-tolerance", .type = OptionType::number, .default_value = d.iv.tolerance,
+       .help = "IDIM-IV: converged when no parameter's change moves the model force by more than this share of "
+               "its norm",
+       .min = 0, .min_open = true},
   };
   return m;
 }
 #pragma GCC diagnostic pop
+
+namespace {
+// The controller of --iv from the table's values, its sample period left to the record
+// (IdimIvOptions::sample_at_record_rate). \throws InputError naming what is missing.
+Controller idim_iv_controller(const OptionValues& v) {
+  const std::string kind = v.text("controller");
+  const auto missing = [](const std::string& what) {
+    return InputError(errc::option_invalid,
+                      "idim: --iv needs the experiment's controller: " + what +
+                          " (Python: iv=True, controller=..., kp=..., and kd or kv, with reference=array)",
+                      ErrorFields{.option = "--iv"});
+  };
+  if (kind.empty())
+    throw missing("give --controller pid with --kp N/m and --kd N s/m (optional --ki, --control-limit, "
+                  "--feedforward COLUMN), or --controller emps-pd with --kp 1/s, --kv V s/m and --drive-gain N/V "
+                  "(default --gain), and --reference COLUMN, the reference position");
+  if (kind == "pid") {
+    if (!v.given("kp")) throw missing("--controller pid needs --kp (N/m or N m/rad)");
+    PidParams p;
+    p.Kp = v.number("kp");
+    if (v.given("kd")) p.Kd = v.number("kd");
+    if (v.given("ki")) p.Ki = v.number("ki");
+    if (v.given("control-limit")) p.limit = v.number("control-limit");
+    p.delay = v.given("control-delay") ? static_cast<int>(v.integer("control-delay")) : 0;
+    p.Ts = 1.0;  // the record's step, set by identify_idim
+    for (const char* name : {"kv", "drive-gain"})
+      if (v.given(name))
+        throw InputError(errc::option_conflict, std::string("idim: --") + name + " belongs to --controller emps-pd, not pid",
+                         ErrorFields{.option = std::string("--") + name});
+    return p;
+  }
+  if (!v.given("kp") || !v.given("kv"))
+    throw missing("--controller emps-pd needs --kp (1/s) and --kv (V s/m or V s/rad)");
+  if (!v.given("drive-gain")) throw missing("--controller emps-pd needs --drive-gain (N/V or N m/V; the command line's default is --gain)");
+  for (const char* name : {"kd", "ki"})
+    if (v.given(name))
+      throw InputError(errc::option_conflict, std::string("idim: --") + name + " belongs to --controller pid, not emps-pd",
+                       ErrorFields{.option = std::string("--") + name});
+  EmpsPdParams p;
+  p.kp = v.number("kp");
+  p.kv = v.number("kv");
+  p.gtau = v.number("drive-gain");
+  if (v.given("control-limit")) p.limit = v.number("control-limit");
+  p.delay = v.given("control-delay") ? static_cast<int>(v.integer("control-delay")) : 1;
+  return p;
+}
+}  // namespace
 
 IdimOptions make_idim_options(const OptionValues& v) {
   IdimOptions o;
@@ -655,6 +744,23 @@ IdimOptions make_idim_options(const OptionValues& v) {
   if (v.given("temperature-ref")) o.temperature_ref = v.number("temperature-ref");
   if (v.given("ripple-period")) o.ripple_period = v.number("ripple-period");
   o.ripple_harmonics = static_cast<int>(v.integer("ripple-harmonics"));
+  o.iv.max_iterations = static_cast<int>(v.integer("iv-iterations"));
+  o.iv.tolerance = v.number("iv-tolerance");
+  if (v.flag("iv")) {
+    o.iv.enabled = true;
+    o.iv.sample_at_record_rate = true;
+    o.iv.controller = idim_iv_controller(v);
+  } else {
+    for (const char* name : {"controller", "kp", "kd", "ki", "kv", "drive-gain", "control-limit", "control-delay"}) {
+      if (!v.given(name)) continue;
+      std::string keyword = name;
+      std::replace(keyword.begin(), keyword.end(), '-', '_');
+      throw InputError(errc::option_conflict,
+                       std::string("idim: --") + name + " describes the controller for IDIM-IV, but --iv is not given (Python: " +
+                           keyword + "= needs iv=True)",
+                       ErrorFields{.option = std::string("--") + name});
+    }
+  }
   return o;
 }
 
@@ -771,6 +877,7 @@ Result identify_idim(const IdimData& data, const IdimOptions& options) {
 
 Result identify_idim(const IdimData& data, const IdimOptions& options_in, IdimWorkspace& workspace) {
   const double dt = checked_step(data);
+  if (options_in.iv.enabled) detail::check_idim_iv_inputs(data, options_in);
   const IdimOptions options = resolved(options_in, data, dt);
   const auto terms = idim_terms(options);
   const bool has_stribeck = std::any_of(terms.begin(), terms.end(), [](const IdimTerm& t) { return t.parameter == "Fs_minus_Fc"; });
@@ -779,6 +886,7 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in, IdimWo
   Vec v;  // the filtered velocity at the fitted samples, for the friction map
   std::vector<Eigen::Index> sample;  // the raw sample of each fitted row
   Result r = identify_idim_fixed(data, o, dt, workspace, &v, &sample);
+  if (o.iv.enabled && r.ok()) detail::run_idim_iv(r, data, o, dt);
   if (has_stribeck) r.diagnostics.numbers["stribeck_vs"] = o.stribeck_vs;
   if (asks_for(o, "temperature")) r.diagnostics.numbers["temperature_ref"] = o.temperature_ref;
   if (asks_for(o, "ripple")) r.diagnostics.numbers["ripple_period"] = o.ripple_period;
@@ -795,7 +903,7 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in, IdimWo
     if (defaults.empty()) r.diagnostics.groups.erase("defaults");
   }
   if (r.ok()) {
-    attach_law(r, o, o.stribeck_vs);
+    detail::attach_idim_law(r, o, o.stribeck_vs);
     r.series["velocity"].assign(v.data(), v.data() + v.size());
     // The identified friction terms as a curve over +-max |v| (denser near 0, where Stribeck
     // terms bend), evaluated on the velocity itself, not on decimated columns.
@@ -824,6 +932,48 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in, IdimWo
   }
   return r;
 }
+
+namespace detail {
+
+void set_idim_series(Result& r, const IdimData& data, const IdimRegression& reg, const Vec& theta, const IdimOptions& options) {
+  const Eigen::Index p = reg.X.cols(), nobs = reg.X.rows();
+  r.series.erase("time");
+  const Vec model = reg.X * theta;
+    auto& t = r.series["time"];
+    for (Eigen::Index k = 0; k < nobs; ++k) t.push_back(data.time[reg.sample[static_cast<std::size_t>(k)]]);
+    r.series["force"].assign(reg.y.data(), reg.y.data() + nobs);
+    r.series["force_model"].assign(model.data(), model.data() + nobs);
+    // The friction map: the force less the non-friction terms (inertia, offset, user terms)
+    // against velocity, and the friction terms alone.
+    Vec friction = reg.y, friction_model = Vec::Zero(nobs);
+    for (Eigen::Index j = 0; j < p; ++j) {
+      const std::string& name = reg.terms[static_cast<std::size_t>(j)].parameter;
+      const bool is_friction = j < p - static_cast<Eigen::Index>(options.extra_terms.size()) && name != "M" &&
+                               name != "offset" && name != "load_gain";
+      if (is_friction) friction_model += reg.X.col(j) * theta(j);
+      else friction -= reg.X.col(j) * theta(j);
+    }
+    r.series["friction"].assign(friction.data(), friction.data() + nobs);
+    r.series["friction_model"].assign(friction_model.data(), friction_model.data() + nobs);
+}
+
+void add_idim_parameter_warnings(Result& r) {
+  for (const auto& q : r.parameters) {
+    constexpr double kPoorlyIdentified = 0.5;  // std above half the value: the estimate is not trustworthy
+    if (q.flag.empty() && std::abs(q.std) > kPoorlyIdentified * std::abs(q.value)) {
+      r.diagnostics.warnings.push_back(q.name + " = " + detail::format_value(q.value, 6) + " " + q.unit + " is poorly identified (std " +
+                                       detail::format_value(q.std, 6) + ")");
+    }
+    // Fv_per_K may be negative (grease thins as it warms); the coefficients themselves may not.
+    const bool must_be_positive = q.name == "M" || q.name == "mu_load" ||
+                                  ((q.name.rfind("Fv", 0) == 0 || q.name.rfind("Fc", 0) == 0) && q.name != "Fv_per_K");
+    if (must_be_positive && q.value < 0) {
+      r.diagnostics.warnings.push_back(q.name + " = " + detail::format_value(q.value, 6) + " " + q.unit + " is negative: not physical");
+    }
+  }
+}
+
+}  // namespace detail
 
 namespace {
 // Standard deviations and correlation from the Newey-West covariance of the fit (identify/
@@ -912,40 +1062,10 @@ Result identify_idim_fixed(const IdimData& data, const IdimOptions& options, dou
   }
   // std from the Newey-West covariance over the determined parameters, std_ols = s sqrt(diag((X'X)^-1)).
   set_idim_uncertainty(r, reg.X, fit, names);
-  {  // figure signals: the decimated samples keep every decimation-th sample after the skip
-    const Vec model = reg.X * theta;
-    auto& t = r.series["time"];
-    for (Eigen::Index k = 0; k < nobs; ++k) t.push_back(data.time[reg.sample[static_cast<std::size_t>(k)]]);
-    r.series["force"].assign(reg.y.data(), reg.y.data() + nobs);
-    r.series["force_model"].assign(model.data(), model.data() + nobs);
-    // The friction map: the force less the non-friction terms (inertia, offset, user terms)
-    // against velocity, and the friction terms alone.
-    Vec friction = reg.y, friction_model = Vec::Zero(nobs);
-    for (Eigen::Index j = 0; j < p; ++j) {
-      const std::string& name = reg.terms[static_cast<std::size_t>(j)].parameter;
-      const bool is_friction = j < p - static_cast<Eigen::Index>(options.extra_terms.size()) && name != "M" &&
-                               name != "offset" && name != "load_gain";
-      if (is_friction) friction_model += reg.X.col(j) * theta(j);
-      else friction -= reg.X.col(j) * theta(j);
-    }
-    r.series["friction"].assign(friction.data(), friction.data() + nobs);
-    r.series["friction_model"].assign(friction_model.data(), friction_model.data() + nobs);
-  }
+  detail::set_idim_series(r, data, reg, theta, options);
   r.diagnostics.numbers["residual_std"] = std::sqrt(s2);
 
-  for (const auto& q : r.parameters) {
-    constexpr double kPoorlyIdentified = 0.5;  // std above half the value: the estimate is not trustworthy
-    if (q.flag.empty() && std::abs(q.std) > kPoorlyIdentified * std::abs(q.value)) {
-      r.diagnostics.warnings.push_back(q.name + " = " + detail::format_value(q.value, 6) + " " + q.unit + " is poorly identified (std " +
-                                       detail::format_value(q.std, 6) + ")");
-    }
-    // Fv_per_K may be negative (grease thins as it warms); the coefficients themselves may not.
-    const bool must_be_positive = q.name == "M" || q.name == "mu_load" ||
-                                  ((q.name.rfind("Fv", 0) == 0 || q.name.rfind("Fc", 0) == 0) && q.name != "Fv_per_K");
-    if (must_be_positive && q.value < 0) {
-      r.diagnostics.warnings.push_back(q.name + " = " + detail::format_value(q.value, 6) + " " + q.unit + " is negative: not physical");
-    }
-  }
+  detail::add_idim_parameter_warnings(r);
   return r;
 }
 

@@ -45,9 +45,16 @@ namespace {
 
 // The one assessment behind both public forms: with `meat` null the covariance over the
 // determined set is s2 (A_SS)^-1; with it, (A_SS)^-1 meat_SS (A_SS)^-1 and std_ols from s2.
+// With `iv` (cross = Z'W, instruments = Z'Z) the bread is (Z'W)_SS^-1 instead: the instrumental-
+// variable sandwich (Z'W)^-1 meat (W'Z)^-1, and std_ols from s2 (Z'W)^-1 Z'Z (W'Z)^-1.
+struct IvBread {
+  const Eigen::MatrixXd* cross = nullptr;
+  const Eigen::MatrixXd* instruments = nullptr;
+};
+
 Eigen::MatrixXd assess(Result& r, const std::vector<std::string>& names, const Eigen::MatrixXd& A, double s2,
                        const Eigen::MatrixXd* meat, const std::vector<ParameterState>& states_in,
-                       const UncertaintyOptions& o) {
+                       const UncertaintyOptions& o, const IvBread& iv = {}) {
   const auto p = static_cast<Eigen::Index>(names.size());
   if (meat != nullptr && (meat->rows() != p || meat->cols() != p))
     throw std::invalid_argument("uncertainty: the sandwich's meat is " + std::to_string(meat->rows()) + " x " +
@@ -119,7 +126,28 @@ Eigen::MatrixXd assess(Result& r, const std::vector<std::string>& names, const E
       for (Eigen::Index b = 0; b < nk; ++b) Ainv(a, b) = d(a) * 0.5 * (inv(a, b) + inv(b, a)) * d(b);
     for (Eigen::Index a = 0; a < nk; ++a) var_ols(keep[a]) = s2 * Ainv(a, a);
     Eigen::MatrixXd ck = s2 * Ainv;
-    if (meat != nullptr) {
+    if (iv.cross != nullptr) {
+      // B = (Z'W)_SS scaled by the instruments' and the regressors' column norms, inverted by a
+      // rank-revealing decomposition (a weak instrument leaves it near-singular, not an error).
+      Eigen::VectorXd dz(nk);
+      for (Eigen::Index a = 0; a < nk; ++a) {
+        const double zz = (*iv.instruments)(keep[a], keep[a]);
+        dz(a) = zz > 0 ? 1.0 / std::sqrt(zz) : 1.0;
+      }
+      Eigen::MatrixXd Bs(nk, nk), Ms(nk, nk), Zs(nk, nk);
+      for (Eigen::Index a = 0; a < nk; ++a)
+        for (Eigen::Index b = 0; b < nk; ++b) {
+          Bs(a, b) = dz(a) * (*iv.cross)(keep[a], keep[b]) * d(b);
+          Ms(a, b) = (*meat)(keep[a], keep[b]);
+          Zs(a, b) = (*iv.instruments)(keep[a], keep[b]);
+        }
+      // (Z'W)^-1 = D_w Bs^-1 D_z.
+      const Eigen::MatrixXd Binv = d.asDiagonal() * Bs.completeOrthogonalDecomposition().pseudoInverse() * dz.asDiagonal();
+      Eigen::MatrixXd ols = s2 * Binv * Zs * Binv.transpose();
+      for (Eigen::Index a = 0; a < nk; ++a) var_ols(keep[a]) = ols(a, a);
+      ck = Binv * Ms * Binv.transpose();
+      ck = 0.5 * (ck + ck.transpose()).eval();
+    } else if (meat != nullptr) {
       Eigen::MatrixXd Bs(nk, nk);
       for (Eigen::Index a = 0; a < nk; ++a)
         for (Eigen::Index b = 0; b < nk; ++b) Bs(a, b) = (*meat)(keep[a], keep[b]);
@@ -184,6 +212,19 @@ Eigen::MatrixXd set_uncertainty_from_sandwich(Result& r, const std::vector<std::
                                               double residual_variance, const std::vector<ParameterState>& states,
                                               const UncertaintyOptions& options) {
   return assess(r, names, information, residual_variance, &meat, states, options);
+}
+
+Eigen::MatrixXd set_uncertainty_from_iv(Result& r, const std::vector<std::string>& names,
+                                        const Eigen::MatrixXd& information, const Eigen::MatrixXd& cross,
+                                        const Eigen::MatrixXd& instruments, const Eigen::MatrixXd& meat,
+                                        double residual_variance, const std::vector<ParameterState>& states,
+                                        const UncertaintyOptions& options) {
+  const auto p = static_cast<Eigen::Index>(names.size());
+  if (cross.rows() != p || cross.cols() != p || instruments.rows() != p || instruments.cols() != p)
+    throw std::invalid_argument("uncertainty: the instruments' matrices are " + std::to_string(cross.rows()) + " x " +
+                                std::to_string(cross.cols()) + " and " + std::to_string(instruments.rows()) + " x " +
+                                std::to_string(instruments.cols()) + " for " + std::to_string(p) + " parameters");
+  return assess(r, names, information, residual_variance, &meat, states, options, IvBread{&cross, &instruments});
 }
 
 Eigen::MatrixXd set_uncertainty_from_covariance(Result& r, const std::vector<std::string>& names,

@@ -17,9 +17,11 @@ j = json.load(open(sys.argv[1]))
 assert j["frictionlab"]["version"] == sys.argv[2], j["frictionlab"]
 o = j["options"]
 # Every option of idim's table (sorted by name, as every JSON object), with the value that shaped the result.
-assert list(o) == ["cutoff", "decimate", "delay", "delta", "exclude-below", "filter-order", "from", "load",
-                   "max-condition", "min-velocity", "padlen", "ripple-harmonics", "ripple-period", "skip", "skip-end",
-                   "temperature", "temperature-ref", "terms", "validate", "vs"], list(o)
+assert list(o) == ["control-delay", "control-limit", "controller", "cutoff", "decimate", "delay", "delta",
+                   "drive-gain", "exclude-below", "feedforward", "filter-order", "from", "iv", "iv-iterations",
+                   "iv-tolerance", "kd", "ki", "kp", "kv", "load", "max-condition", "min-velocity", "padlen",
+                   "reference", "ripple-harmonics", "ripple-period", "skip", "skip-end", "temperature",
+                   "temperature-ref", "terms", "validate", "vs"], list(o)
 assert o["terms"] == {"value": ["inertia", "asymmetric", "stribeck"], "unit": "", "given": True}, o["terms"]
 assert o["delay"] == {"value": 1, "unit": "samples", "given": True}, o["delay"]
 assert o["vs"] == {"value": 0.01, "unit": "m/s", "given": False}, o["vs"]

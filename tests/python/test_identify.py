@@ -319,3 +319,31 @@ def test_identify_auto_chooses_by_held_out_error():
     assert math.isclose(r.value("Fv" if "Fv" in j["parameters"] else "Fv_pos"), 20.0, rel_tol=AUTO_REL_TOL)
     with pytest.raises(ValueError, match="folds"):
         fl.identify_auto(t, force, position=q, folds=1)
+
+
+def test_idim_iv_on_emps_with_the_benchmark_controller(emps, emps_result):
+    """IDIM-IV with the same keywords as the command line (docs/identify.md): converges, close to
+    IDIM-LS on EMPS (0.5 %, tests/identify/test_idim_iv.cpp says why), IV diagnostics present."""
+    r = fl.identify_idim(emps["t"], emps_force(emps), position=emps["qm"], iv=True, reference=emps["qg"],
+                         controller="emps-pd", kp=float(emps["kp"]), kv=float(emps["kv"]),
+                         drive_gain=float(emps["gtau"]))
+    assert r.ok, r.message
+    d = r.diagnostics
+    assert set(d.groups["ls_estimate"]) == {"M", "Fv", "Fc", "offset"}
+    assert 1 <= d.numbers["iv_iterations"] <= 10
+    for name in ("M", "Fv", "Fc"):
+        assert abs(r.parameters[name].value - emps_result.parameters[name].value) <= 5e-3 * abs(
+            emps_result.parameters[name].value), name
+
+
+def test_idim_iv_without_the_controller_names_what_to_give(emps):
+    t, f, q = emps["t"], emps_force(emps), emps["qm"]
+    with pytest.raises(fl.Error, match="--controller pid with --kp"):
+        fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"])
+    with pytest.raises(fl.Error, match="--reference COLUMN"):
+        fl.identify_idim(t, f, position=q, iv=True, controller="emps-pd", kp=160.18, kv=243.45, drive_gain=35.15)
+    with pytest.raises(fl.Error, match="drive-gain"):
+        fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"], controller="emps-pd", kp=160.18, kv=243.45)
+    with pytest.raises(ValueError, match="reference"):
+        fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"][:-1], controller="emps-pd", kp=160.18,
+                         kv=243.45, drive_gain=35.15)

@@ -13,6 +13,10 @@ position of a 1 um encoder or a velocity with white noise.
   (explicit stick rule at v = 0, four integration steps per sample); the noise is a force that
   acts on the axis and is not recorded (current ripple, a disturbance), so the loop reacts to it
   and the recorded force is correlated with the motion's errors: least squares is biased there.
+  The closed loop's log also holds what IDIM-IV needs to simulate it: the reference position
+  ("reference", m) and the drive's feedforward ("feedforward", N: the model-based feedforward plus
+  KD times the reference velocity), so that the force is u = feedforward + KP (reference - q) -
+  KD v (v the velocity estimate), a PD on the position with Kp = KP, Kd = KD.
 
 Noise: white, or AR(1) with a correlation time of 20 ms (whatever the rate: coefficient
 exp(-1/(fs 0.02))), standard deviation NOISE_STD either way.
@@ -106,7 +110,8 @@ def friction_scalar(kind, v):
 
 def closed_loop(kind, t, q_ref, qd_ref, qdd_ref, disturbance):
     """The PD loop with feedforward (inverse dynamics of the reference, with the true friction's
-    smooth part) at the log's sampling; returns position, velocity and recorded force."""
+    smooth part) at the log's sampling; returns position, velocity, recorded force and the
+    feedforward force (N: everything in the force that depends on the reference's derivatives)."""
     n = t.size
     dt = t[1] - t[0]
     sub = 4
@@ -134,7 +139,7 @@ def closed_loop(kind, t, q_ref, qd_ref, qdd_ref, disturbance):
             q += h * 0.5 * (v + v_new)
             v = v_new
         qs[k], vs[k], us[k] = q, v, u
-    return qs, vs, us
+    return qs, vs, us, ff + KD * qd_ref
 
 
 def make_log(kind, noise_kind, sensor, fs, loop, seed, duration=DURATION, velocity_noise=VELOCITY_NOISE):
@@ -149,10 +154,12 @@ def make_log(kind, noise_kind, sensor, fs, loop, seed, duration=DURATION, veloci
         force = M * qdd + friction(kind, qd) + offset + w
         pos, vel = q, qd
     elif loop == "closed":
-        pos, vel, force = closed_loop(kind, t, q, qd, qdd, w)
+        pos, vel, force, feedforward = closed_loop(kind, t, q, qd, qdd, w)
     else:
         raise ValueError(f"unknown loop {loop!r}")
     log = {"time": t, "force": force}
+    if loop == "closed":
+        log["reference"], log["feedforward"] = q, feedforward
     if sensor == "position":
         log["position"] = np.round(pos / ENCODER) * ENCODER
     elif sensor == "velocity":

@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@
 #include "frictionlab/identify/options.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
 
 #include "frictionlab/export.hpp"
 namespace frictionlab FRICTIONLAB_API {
@@ -41,6 +43,14 @@ struct IdimData {
   /// Temperature of the contact (grease, gearbox), degC or K, length N; needed by the
   /// "temperature" term, else may stay empty.
   Eigen::VectorXd temperature;
+  /// Reference position of the closed loop the record was taken in, m or rad, length N; needed by
+  /// IDIM-IV (IdimOptions::iv), else may stay empty. The controller samples it at the record's
+  /// instants (held between them).
+  Eigen::VectorXd reference;
+  /// Feedforward force the drive added to its controller's output, N or N m, length N (a
+  /// function of the reference only: acceleration, velocity or friction feedforward as the drive
+  /// logged it); optional for IDIM-IV, empty when the controller has none.
+  Eigen::VectorXd feedforward;
   std::string file;          ///< source file, for results and messages
   std::string sha256;        ///< its digest
 };
@@ -93,6 +103,33 @@ struct IdimRateDefaults {
   Eigen::Index skip = 49;
 };
 IdimRateDefaults idim_rate_defaults(double sample_rate_hz);
+
+/// IDIM-IV: instrumental variables for a record taken in a closed loop (Janot, Vandanjon,
+/// Gautier, "A generic instrumental variable approach for industrial robot identification",
+/// IEEE TCST 2014). In a closed loop the controller reacts to the disturbance, so the measured
+/// acceleration and velocity are correlated with the force's error and least squares is biased.
+/// Starting from the least-squares estimate theta_0, each iteration simulates the model's own
+/// closed loop (M qdd = F - friction(qd) - offset with the current theta, the exact stick/slip
+/// engine, the same controller and reference as the experiment, from the measured initial
+/// position), builds the instrument matrix Z from the simulated position exactly as the
+/// regressor matrix W is built from the measured one (same filter, differences, skip,
+/// decimation, same rows kept), and solves theta_{k+1} = (Z'W)^-1 Z'y; it stops when
+/// max_j |theta_{k+1,j} - theta_{k,j}| ||W_j|| / ||W theta_k|| (each parameter's change as a share
+/// of the model force) is at most `tolerance`.
+struct IdimIvOptions {
+  bool enabled = false;  ///< run IDIM-IV after the least-squares fit. Default false.
+  /// The experiment's controller: a PID (control/pid.hpp; output in N or N m, the force the drive
+  /// applies) or the EMPS controller (control/emps_pd.hpp; output in V, times its gtau). Required
+  /// when enabled.
+  std::optional<Controller> controller;
+  /// Largest number of IV iterations (>= 1). Default 20.
+  int max_iterations = 20;
+  /// Convergence tolerance on the relative change above (> 0). Default 1e-4.
+  double tolerance = 1e-4;
+  /// Set the controller's sample period (PidParams::Ts, EmpsPdParams::dt) to the record's mean
+  /// step: a drive that logs at its control rate (make_idim_options sets it). Default false.
+  bool sample_at_record_rate = false;
+};
 
 /// Options of identify_idim; defaults are the EMPS recipe.
 struct IdimOptions {
@@ -161,6 +198,8 @@ struct IdimOptions {
   bool auto_cutoff = false, auto_decimation = false, auto_skip = false;
   /// What the regressors are built from (IdimData may hold both). Default automatic.
   IdimSource source = IdimSource::automatic;
+  /// Instrumental variables for closed-loop data (IDIM-IV, above). Default off.
+  IdimIvOptions iv;
 };
 
 /// The options of an IDIM run from the values of its option table (method_info(MethodId::idim));
@@ -208,7 +247,20 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options,
 /// "covariance_bandwidth" its lag count (decimated samples) and "covariance_rho" the AR(1)
 /// coefficient its bandwidth rule used.
 /// diagnostics.texts["regressors_from"] is "position" or "velocity".
-/// \throws std::invalid_argument on bad input, as idim_regression.
+/// With options.iv.enabled (IDIM-IV, IdimIvOptions): the values are the IV estimate, std its
+/// Newey-West IV sandwich and std_ols its ordinary IV figure (identify/uncertainty.hpp,
+/// set_uncertainty_from_iv); diagnostics.texts["estimator"] "idim-iv" (else "idim-ls"),
+/// numbers "iv_iterations", "iv_relative_change" (the last), "iv_min_canonical_correlation" (the
+/// smallest canonical correlation between Z and W: the instruments' relevance, 1 = perfect),
+/// groups "iv_instrument_correlation" (per parameter, the correlation of its regressor column
+/// with its instrument) and "ls_estimate" (the least-squares values). Status error, naming the
+/// cause and what to change, when the iteration does not converge in max_iterations, a model's
+/// simulation fails or diverges, or an estimate makes no model that can be simulated (M <= 0, a
+/// negative friction level).
+/// \throws std::invalid_argument on bad input, as idim_regression; with options.iv.enabled also
+///         without a controller, without a reference (naming what to give), for a reference or
+///         feedforward of another length than time or not finite, and for terms IDIM-IV cannot
+///         simulate (load, temperature, ripple, user terms).
 Result identify_idim(const IdimData& data, const IdimOptions& options = {});
 /// The same in the caller's work space (identify/idim_workspace.hpp), for identifications in a
 /// loop; the same result, to the bit. \throws as above; std::bad_alloc when it cannot grow.

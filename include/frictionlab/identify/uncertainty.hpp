@@ -72,6 +72,21 @@ Eigen::MatrixXd set_uncertainty_from_sandwich(Result& r, const std::vector<std::
                                               double residual_variance, const std::vector<ParameterState>& states = {},
                                               const UncertaintyOptions& options = {});
 
+/// The same for an instrumental-variable estimate theta = (Z'W)^-1 Z'y (identify/idim.hpp,
+/// IDIM-IV): the determined set S is chosen from `information` = W'W by the rules above (the same
+/// parameters as the least-squares fit's), std and correlation come from the IV sandwich
+/// (Z'W)_SS^-1 meat_SS (W'Z)_SS^-1 with `meat` the Newey-West meat of the scores z_t e_t
+/// (identify/covariance.hpp, hac_covariance(Z, e).meat), and std_ols from the ordinary IV form
+/// residual_variance (Z'W)_SS^-1 (Z'Z)_SS (W'Z)_SS^-1. `cross` = Z'W and `instruments` = Z'Z are
+/// p x p (instrument rows, regressor columns), in the parameters' units.
+/// \returns the p x p IV covariance (NaN rows and columns as above).
+/// \throws std::invalid_argument for mismatched sizes or a name not among r.parameters.
+Eigen::MatrixXd set_uncertainty_from_iv(Result& r, const std::vector<std::string>& names,
+                                        const Eigen::MatrixXd& information, const Eigen::MatrixXd& cross,
+                                        const Eigen::MatrixXd& instruments, const Eigen::MatrixXd& meat,
+                                        double residual_variance, const std::vector<ParameterState>& states = {},
+                                        const UncertaintyOptions& options = {});
+
 /// The same from a covariance matrix (p x p, symmetric positive semi-definite, parameters'
 /// units squared) when the method has no information matrix: the information is taken as its
 /// pseudo-inverse (residual variance 1). A zero or non-finite variance makes the parameter

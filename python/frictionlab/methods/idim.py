@@ -61,6 +61,10 @@ def identify_idim(time, force, position=None, velocity=None, *, axis="linear", s
     for a cross-test, a dict with "time", "force" and "position" or "velocity" (and optionally
     "source"; "load" and "temperature" for those terms); sets result.validation. ``load`` (N or N m)
     and ``temperature`` (degC or K): arrays of length N for the terms "load" and "temperature".
+    ``iv=True``: IDIM-IV for a record taken in a closed loop (docs/identify.md): give the
+    controller (``controller="pid"`` with ``kp`` N/m, ``kd`` N s/m, optional ``ki``, or
+    ``controller="emps-pd"`` with ``kp`` 1/s, ``kv`` V s/m and ``drive_gain`` N/V) and
+    ``reference`` (array, m or rad), optionally ``feedforward`` (array, N or N m).
 
     Returns a Result; ``result.law`` is the identified friction law. The arrays and options
     are kept on the result (``result.inputs``, ``result.options``) for idim_reconstruction and
@@ -69,7 +73,8 @@ def identify_idim(time, force, position=None, velocity=None, *, axis="linear", s
     values, opts, inputs = _idim_options("identify_idim", dict(options, axis=axis), time)
     file, sha = _source(source)
     load, temperature = inputs.get("load"), inputs.get("temperature")
-    r = _core._identify_idim(time, force, position, velocity, load, temperature, opts, file, sha)
+    r = _core._identify_idim(time, force, position, velocity, load, temperature, opts, file, sha,
+                             inputs.get("reference"), inputs.get("feedforward"))
     r._record_options(values)
     r.inputs = {"time": time, "force": force, "position": position, "velocity": velocity, "load": load,
                 "temperature": temperature}

@@ -56,8 +56,15 @@ void bind(py::module_& m) {
 
   m.def("_identify_idim", [](py::object time, py::object force, py::object position, py::object velocity,
                              py::object load, py::object temperature, const IdimOptions& o, const std::string& file,
-                             const std::string& sha256) {
-    const IdimData d = trajectory_arrays("identify_idim", time, force, position, velocity, load, temperature, file, sha256);
+                             const std::string& sha256, py::object reference, py::object feedforward) {
+    IdimData d = trajectory_arrays("identify_idim", time, force, position, velocity, load, temperature, file, sha256);
+    // The closed loop's reference and feedforward (IDIM-IV), as long as time when given.
+    ArraySpec optional;
+    optional.optional = true;
+    d.reference = vector_arg(reference, "identify_idim", "reference", optional);
+    d.feedforward = vector_arg(feedforward, "identify_idim", "feedforward", optional);
+    same_length("identify_idim", {{"time", d.time.size()}, {"reference", d.reference.size()},
+                                  {"feedforward", d.feedforward.size()}});
     py::gil_scoped_release release;
     return identify_idim(d, o);
   });

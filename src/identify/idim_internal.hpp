@@ -1,0 +1,35 @@
+#pragma once
+// Private pieces of IDIM (src/identify/idim.cpp) shared with IDIM-IV (src/identify/idim_iv.cpp).
+
+#include <Eigen/Core>
+
+#include "frictionlab/identify/idim.hpp"
+#include "frictionlab/identify/result.hpp"
+
+namespace frictionlab::detail {
+
+/// Sets r.law from r's parameter values (Fs = Fc + Fs_minus_Fc with the Stribeck term), or leaves
+/// it unset with a warning when the values break a law's rules. `vs`: the Stribeck velocity used.
+void attach_idim_law(Result& r, const IdimOptions& o, double vs);
+
+/// The figure series of a fit (time, force, force_model, friction, friction_model) from the
+/// regression `reg` and the parameters `theta` (column order).
+void set_idim_series(Result& r, const IdimData& data, const IdimRegression& reg, const Eigen::VectorXd& theta,
+                     const IdimOptions& options);
+
+/// The warnings on the parameters' values: poorly identified (std above half the value), negative
+/// where a coefficient must not be.
+void add_idim_parameter_warnings(Result& r);
+
+/// The checks of IDIM-IV's inputs before anything is computed (options.iv.enabled).
+/// \throws InputError naming the missing controller or reference (and what to give), a reference
+///         or feedforward of another length than time or not finite, or a term IDIM-IV cannot
+///         simulate.
+void check_idim_iv_inputs(const IdimData& data, const IdimOptions& options);
+
+/// IDIM-IV (IdimIvOptions) on the ok least-squares result `r` of `data` with the resolved
+/// options `o` and mean step dt (s): replaces its values, std, fit figures and series with the IV
+/// ones and adds the IV diagnostics, or sets status error (not converged, a simulation that fails).
+void run_idim_iv(Result& r, const IdimData& data, const IdimOptions& o, double dt);
+
+}  // namespace frictionlab::detail
