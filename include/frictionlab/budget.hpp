@@ -8,9 +8,9 @@
 //
 // Defaults: memory, half of what this process may use (the cgroup's memory.max when there is one,
 // else the physical memory); work, 1e9 units per command (a simulation of 1e9 output rows or solver
-// steps, 1e9 runs, ...). One factor raises both (`frictionlab --budget FACTOR`; Python
-// frictionlab.set_budget(FACTOR)): the work budget is multiplied by it, the memory budget too but
-// never beyond all the memory the process may use.
+// steps, 1e9 runs, ...). One factor raises both (`frictionlab --budget FACTOR`, C++
+// set_budget_factor): the work budget is multiplied by it, the memory budget too but never
+// beyond all the memory the process may use.
 //
 // The budget is one process-wide setting (an atomic), read by every check.
 

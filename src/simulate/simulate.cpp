@@ -106,8 +106,14 @@ void check_steps(const SimulationOptions& o, SolverMode mode, double Ts) {
   check_work(rows, "output rows", "simulation options duration = " + detail::format_value(o.duration) + " s and output_rate = " + detail::format_value(o.output_rate) + " Hz", {.key = "duration", .value = detail::format_value(o.duration)});
   if (mode == SolverMode::fixed_step)
     check_work(o.duration / o.dt, "fixed steps", "simulation options duration = " + detail::format_value(o.duration) + " s and dt = " + detail::format_value(o.dt) + " s", {.key = "solver.dt", .value = detail::format_value(o.dt)});
-  if (Ts > 0)
-    check_work(o.duration / Ts, "controller samples", "duration = " + detail::format_value(o.duration) + " s at the plant's sample period Ts = " + detail::format_value(Ts) + " s", {.key = "Ts", .value = detail::format_value(Ts)});
+  if (Ts > 0) {
+    // The sample instants are listed before the run (the corners of the step schedule): about
+    // 48 bytes each, with the sort's pairs and the vectors' growth.
+    const std::string what = "duration = " + detail::format_value(o.duration) + " s at the plant's sample period Ts = " + detail::format_value(Ts) + " s";
+    const ErrorFields fields{.key = "Ts", .value = detail::format_value(Ts)};
+    check_work(o.duration / Ts, "controller samples", what, fields);
+    check_memory(48.0 * o.duration / Ts, what + " (" + detail::format_value(std::floor(o.duration / Ts)) + " sample instants)", fields);
+  }
 }
 
 // Numbers or an error, never both: a run whose columns hold an inf or NaN (a parameter beyond
