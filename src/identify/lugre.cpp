@@ -1,4 +1,5 @@
 #include "frictionlab/identify/lugre.hpp"
+#include "identify/ceres_quiet.hpp"
 #include "frictionlab/budget.hpp"
 
 #include <ceres/ceres.h>
@@ -584,6 +585,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
     problem.SetParameterUpperBound(sta, kLogVs, std::log(vmax));
   }
 
+  detail::quiet_ceres_logging();
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
   so.max_num_iterations = o.max_iterations;

@@ -45,8 +45,8 @@ sed 's/^\(\s*\)Ts: 2.5e-4.*/\1Ts: 1.0e-10/' "$src/examples/xy_circle.yaml" > "$t
 grep -q "Ts: 1.0e-10" "$tmp/xy_fast.yaml" || fail "xy_circle.yaml has no Ts to edit"
 expect_fail "controller samples; the work budget is" simulate "$tmp/xy_fast.yaml" -o "$tmp/out.csv"
 # The same file within a raised budget passes the check (and is not run here: only refused ones are).
-expect_fail "--budget = 0 must be a finite factor >= 1e-06" --budget 0 simulate "$pendulum" -o "$tmp/out.csv"
-expect_fail "--budget = 1e-09 must be a finite factor >= 1e-06" simulate "$pendulum" --budget 1e-9 -o "$tmp/out.csv"
+expect_fail "--budget = 0 must be a finite factor >= 1e-6" --budget 0 simulate "$pendulum" -o "$tmp/out.csv"
+expect_fail "--budget = 1e-09 must be a finite factor >= 1e-6" simulate "$pendulum" --budget 1e-9 -o "$tmp/out.csv"
 
 # Runs, points and substeps.
 expect_fail "--runs 2147483647 (1000 units per run before its samples): that is 2.15e+12 work units; the work budget is 1e+09" \

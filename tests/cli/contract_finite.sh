@@ -8,7 +8,7 @@ source "$(dirname "$0")/lib.sh"
 
 sed 's/^  Kb: 0.0141.*/  Kb: 1.0e308/' "$src/examples/craig_motor_trapezoid.yaml" > "$tmp/kb.yaml"
 grep -q "Kb: 1.0e308" "$tmp/kb.yaml" || fail "no Kb line to edit"
-expect_fail "is inf at t = " simulate "$tmp/kb.yaml" -o "$tmp/kb.csv"
+expect_fail "inf at t = " simulate "$tmp/kb.yaml" -o "$tmp/kb.csv"
 [ ! -e "$tmp/kb.csv" ] || fail "inf voltages written"
 
 # A short LuGre record: a force sine on Canudas de Wit 1995 Table I's axis, one force cell 1e308.

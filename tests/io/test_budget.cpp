@@ -55,7 +55,7 @@ TEST(Budget, FactorScalesWorkAndMemoryAndIsChecked) {
   EXPECT_EQ(fl::memory_budget(), fl::memory_available()) << "never beyond all the memory the process may use";
   fl::set_budget_factor(1e-3);
   EXPECT_EQ(fl::memory_budget(), 0.5e-3 * fl::memory_available());
-  for (double bad : {0.0, -1.0, 1e-9, NAN, INFINITY})
+  for (double bad : {0.0, -1.0, 1e-9, double(NAN), double(INFINITY)})
     EXPECT_EQ(code_of([&] { fl::set_budget_factor(bad); }), "option.out_of_range") << bad;
   EXPECT_EQ(fl::budget_factor(), 1e-3) << "a refused factor leaves the one in effect";
 }
