@@ -66,7 +66,9 @@ TEST(Budget, MemoryIsTheCgroupLimitOrThePhysicalMemory) {
   EXPECT_LE(fl::memory_available(), physical);
   std::ifstream in("/sys/fs/cgroup/memory.max");  // the root cgroup of a v2 system (a container's own)
   std::string limit;
-  if (in >> limit && limit != "max") EXPECT_LE(fl::memory_available(), std::stod(limit));
+  if (in >> limit && limit != "max") {
+    EXPECT_LE(fl::memory_available(), std::stod(limit));
+  }
 }
 
 TEST(Budget, ChecksNameWhatAndTheSize) {
