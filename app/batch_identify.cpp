@@ -162,6 +162,7 @@ void add_batch_options(CLI::App* cmd, BatchOptions& o) {
                   "OUT.csv|OUT.json` joins the parts into the table the unsharded run writes. Give every shard the "
                   "same DATA and options; --drift and --plot are refused (they need every file: give them to "
                   "`frictionlab merge`, which writes the same drift table and figure)")
+      ->check(shard_text_check())
       ->group(g);
   cmd->add_option("--date-from", o.date_from,
                   "The log's date per row: 'name' (from the file name, e.g. axis3_2026-11-02.csv or "

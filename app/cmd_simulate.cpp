@@ -13,6 +13,7 @@
 #include "output.hpp"
 #include "io/atomic_write.hpp"
 #include "frictionlab/scenario/scenario.hpp"
+#include "frictionlab/simulate/output_size.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 namespace frictionlab::cli {
@@ -106,6 +107,21 @@ Handler register_simulate(CLI::App& app) {
     const Scenario sc = load_scenario(args->scenario, options);
     for (const auto& f : named) inputs.push_back({"named by the scenario", f, RunFile::Kind::file});
     check_run_files(inputs, outputs, args->overwrite);
+    if (!args->output.empty()) {
+      // The CSV text is made in memory beside the columns the run holds: up to 25 bytes a
+      // number (%.17g and a separator) against 8, so the scenario's own check is not enough.
+      double columns = 1;  // time
+      for (int k = 0; k < sc.plant->num_contacts(); ++k) {
+        const FrictionLaw* law = sc.plant->contact(k).law ? sc.plant->contact(k).law : &sc.law;
+        columns += 11 + (law->is_dynamic() ? law->num_states() : 0);
+      }
+      const double rows = output_rows(sc.options);
+      check_memory(rows * columns * (8.0 + 25.0),
+                   args->scenario + ": duration " + format_number(sc.options.duration, 6) + " s at " +
+                       format_number(sc.options.output_rate, 6) + " Hz gives " + format_number(rows, 3) +
+                       " output rows, held with their CSV text for -o",
+                   {.file = args->scenario, .key = "duration", .value = format_number(sc.options.duration, 6)});
+    }
     progress_stage("simulating");
     const Trajectory tr = simulate(sc);
     if (!args->plot.empty()) {

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "output.hpp"
+#include "frictionlab/budget.hpp"
 #include "frictionlab/error.hpp"
 #include "frictionlab/version.hpp"
 
@@ -13,6 +14,14 @@ int main(int argc, char** argv) {
   CLI::App app{"frictionlab: model, simulate and identify friction in motion systems (SI units throughout)."};
   app.set_version_flag("--version", std::string("frictionlab ") + frictionlab::kVersion);
   app.require_subcommand(1);
+  // The one option of the work and memory budget (frictionlab/budget.hpp), before or after the
+  // command's name (fallthrough): every command checks its sizes against it before any work.
+  double budget = 1.0;
+  app.add_option("--budget", budget,
+                 "Factor on the work and memory budget (default 1: 1e9 work units, i.e. samples, solver steps, "
+                 "runs or bytes, and half the memory this process may use; memory never beyond all of it)")
+      ->type_name("FACTOR");
+  app.fallthrough();
   app.footer(
       "Exit status: 0 success, 2 bad input or data that cannot give an answer, 1 any other failure\n"
       "(a simulation that did not converge, a missing program such as gnuplot, an internal error).\n"
@@ -43,6 +52,7 @@ int main(int argc, char** argv) {
                                   frictionlab::errc::option_invalid);
   }
   try {
+    frictionlab::set_budget_factor(budget);
     for (auto& [sub, handler] : handlers)
       if (sub->parsed()) return handler();
   } catch (const std::invalid_argument& e) {

@@ -260,11 +260,12 @@ void add_map_options(CLI::App* cmd, MapArgs& a) {
                   "the scenario file (plant.k, plant.V0, controller.Kp, friction.Fs, ...); repeat for a 2-D map")
       ->group("Map (analyze map SCENARIO.yaml)");
   cmd->add_option("--jobs", a.jobs, "map: threads (default 0: all cores)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0, 1024))
       ->group("Map (analyze map SCENARIO.yaml)");
   cmd->add_option("--shard", a.shard,
                   "map: run only shard K of N (grid points i with i % N == K - 1) and write a part file to -o; "
                   "`frictionlab merge` joins the parts")
+      ->check(shard_text_check())
       ->group("Map (analyze map SCENARIO.yaml)");
   cmd->add_option("--contact", a.contact,
                   "map: the contact whose motion is classified, by name (x, y of an xy-table) or index from 0; "
@@ -298,6 +299,10 @@ int run_map_command(const std::string& scenario, const MapArgs& a, const OutputO
   const bool sharded = !a.shard.empty();
   if (sharded) {
     if (a.out.empty()) throw std::invalid_argument("--shard " + a.shard + " needs -o PART (the part file to write)");
+    if (std::filesystem::path(a.out).extension() != ".json")
+      throw InputError(errc::option_invalid,
+                       "-o " + a.out + ": --shard " + a.shard + " writes a part file, which is JSON: expected -o PART.json",
+                       {.option = "-o", .value = a.out});
     if (!output.json.empty() || !output.plot.empty())
       throw std::invalid_argument("--shard writes a part file only (-o); merge the parts (frictionlab merge PART... -o "
                                   "OUT.csv|OUT.json) and draw the unsharded map for --plot");

@@ -145,4 +145,12 @@ void progress_stage(const std::string& stage);
 /// Clears the line and stops.
 void progress_stop();
 
+/// The check of a --shard value: K/N, never empty (an empty --shard "" would otherwise read as
+/// "no sharding" and run every job).
+inline CLI::Validator shard_text_check() {
+  return CLI::Validator(
+      [](std::string& s) { return s.empty() ? std::string("empty; expected K/N (shard K of N, 1 <= K <= N)") : std::string(); },
+      "K/N");
+}
+
 }  // namespace frictionlab::cli

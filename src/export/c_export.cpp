@@ -1,6 +1,8 @@
 #include "frictionlab/export/c_export.hpp"
 #include "frictionlab/error.hpp"
 
+#include <cmath>
+#include <limits>
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -30,7 +32,19 @@ class Writer {
   bool single() const { return single_; }
 
   /// A C literal of `x` with full round-trip precision (%.17g), as a float literal in float mode.
+  /// \throws std::invalid_argument for a value the target type cannot hold: not finite (a
+  /// band of 1e307 gives -inf), or beyond float's range in float mode (a C compiler refuses the
+  /// literal with -Werror=overflow).
   std::string number(double x) const {
+    if (!std::isfinite(x))
+      throw std::invalid_argument("export: a constant of the header would be " + std::string(std::isnan(x) ? "NaN" : x > 0 ? "inf" : "-inf") +
+                                  " (a parameter or option too large or too small for double arithmetic); expected finite values");
+    if (single_ && std::abs(x) > static_cast<double>(std::numeric_limits<float>::max())) {
+      char v[40];
+      std::snprintf(v, sizeof v, "%.6g", x);
+      throw std::invalid_argument(std::string("--float: a constant of the header is ") + v +
+                                  ", beyond float's range (3.4e+38); export without --float (double)");
+    }
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.17g", x);
     std::string s = buf;

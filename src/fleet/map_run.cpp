@@ -5,7 +5,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "frictionlab/budget.hpp"
+#include "frictionlab/format.hpp"
 #include "frictionlab/identify/result.hpp"
+#include "frictionlab/simulate/output_size.hpp"
 #include "frictionlab/scenario/scenario_grid.hpp"
 #include "io/sha256.hpp"
 
@@ -37,9 +40,24 @@ MapRun map_scenario(const std::string& scenario, const MapGrid& grid, const MapR
   const ScenarioGrid g(scenario, keys);
   const std::size_t total = grid.size();
   const std::vector<std::size_t> jobs = shard_jobs(total, options.shard);
+  {
+    // The work before any point runs: the points times the first point's output rows (each
+    // point simulates its scenario); the exact sum is checked once the scenarios are made.
+    const double rows0 = output_rows(g.at(grid.point(0)).options);
+    check_work(static_cast<double>(jobs.size()) * (rows0 + kWorkPerRun), "work units",
+               scenario + ": the map's " + std::to_string(jobs.size()) + " points (--vary) of about " +
+                   format_number(rows0, 3) + " output rows each",
+               {.file = scenario, .option = "--vary"});
+  }
   std::vector<Scenario> scenarios;
   scenarios.reserve(jobs.size());
-  for (std::size_t i : jobs) scenarios.push_back(g.at(grid.point(i)));
+  double rows = 0;
+  for (std::size_t i : jobs) {
+    scenarios.push_back(g.at(grid.point(i)));
+    rows += output_rows(scenarios.back().options) + kWorkPerRun;
+  }
+  check_work(rows, "work units", scenario + ": the map's " + std::to_string(jobs.size()) + " points (--vary)",
+             {.file = scenario, .option = "--vary"});
 
   MapRun run;
   const Scenario first = !jobs.empty() && jobs.front() == 0 ? scenarios.front() : g.at(grid.point(0));

@@ -1,4 +1,6 @@
 #include "fleet/shard.hpp"
+#include "io/input_file.hpp"
+#include "frictionlab/budget.hpp"
 #include "frictionlab/io/json_text.hpp"
 
 #include <algorithm>
@@ -123,15 +125,10 @@ std::string part_to_json(const Part& part) {
 }
 
 Part read_part(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw std::invalid_argument(path + " is a directory; expected a part file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::invalid_argument(path + ": cannot open the part file");
-  std::stringstream ss;
-  ss << in.rdbuf();
+  const std::string text = read_input_file(path, "part file", errc::input_invalid);
   nlohmann::ordered_json j;
   try {
-    j = nlohmann::ordered_json::parse(ss.str());
+    j = nlohmann::ordered_json::parse(text);
   } catch (const nlohmann::ordered_json::parse_error& e) {
     throw std::invalid_argument(path + ": not a part file (not JSON: " + e.what() + ")");
   }
@@ -189,6 +186,16 @@ Part read_part(const std::string& path) {
     for (std::size_t c = 1; c < row.size(); ++c) cells.push_back(json_cell(row[c], where));
     p.table.rows.push_back(std::move(cells));
   }
+  // The total and the shard count size what merge allocates: a part's own rows bound them, so an
+  // edited total (1e18) is refused here, not allocated.
+  check_work(static_cast<double>(p.shard.count), "shards", path + ": shard " + p.shard.text(), {.file = path, .key = "shard"});
+  const std::size_t jobs = p.total >= p.shard.index ? (p.total - p.shard.index) / p.shard.count + 1 : 0;
+  if (jobs != p.table.rows.size())
+    throw InputError(errc::input_invalid,
+                     path + ": \"total\": " + std::to_string(p.total) + " jobs give shard " + p.shard.text() + " " +
+                         std::to_string(jobs) + " rows, but the part holds " + std::to_string(p.table.rows.size()) +
+                         " (a truncated or edited part)",
+                     {.file = path, .key = "total", .value = std::to_string(p.total)});
   return p;
 }
 

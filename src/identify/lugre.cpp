@@ -1,4 +1,6 @@
 #include "frictionlab/identify/lugre.hpp"
+#include "identify/ceres_quiet.hpp"
+#include "frictionlab/budget.hpp"
 
 #include <ceres/ceres.h>
 
@@ -297,6 +299,12 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
     throw std::invalid_argument("lugre: time, force and position must have equal lengths (have " + std::to_string(n) + ", " +
                                 std::to_string(d.force.size()) + ", " + std::to_string(d.position.size()) + ")");
   if (o.substeps < 1) throw std::invalid_argument("lugre: substeps = " + std::to_string(o.substeps) + " must be >= 1");
+  // The fit's work before it starts: each cost evaluation simulates every sample interval in
+  // substeps steps, at most once per iteration and once more at the start.
+  check_work(static_cast<double>(n) * o.substeps * (o.max_iterations + 1.0), "simulation steps",
+             "lugre: " + std::to_string(n) + " samples x --substeps " + std::to_string(o.substeps) + " x (--max-iterations " +
+                 std::to_string(o.max_iterations) + " + 1)",
+             {.option = "--substeps", .value = std::to_string(o.substeps)});
   if (!(std::isfinite(o.delta) && o.delta > 0))
     throw std::invalid_argument("lugre: delta = " + format_number(o.delta) + " must be > 0");
   if (!(std::isfinite(o.vd) && o.vd >= 0))
@@ -577,6 +585,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
     problem.SetParameterUpperBound(sta, kLogVs, std::log(vmax));
   }
 
+  detail::quiet_ceres_logging();
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
   so.max_num_iterations = o.max_iterations;
@@ -787,8 +796,9 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   if (summary.termination_type == ceres::NO_CONVERGENCE)
     warn("the output-error fit stopped at its iteration limit (" + std::to_string(o.max_iterations) +
          ") before converging: the estimates may be off");
-  else if (summary.termination_type == ceres::FAILURE)
-    warn("the output-error fit failed: " + summary.message);
+  else if (summary.termination_type == ceres::FAILURE || !std::isfinite(summary.final_cost))
+    // A solver failure is never ok: its numbers are not a fit (a record whose one cell is 1e308).
+    return fail(r, "the output-error fit failed: " + summary.message);
 
   LuGre lg;
   lg.sigma0 = S0;

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "identify/ceres_quiet.hpp"
 #include "frictionlab/identify/least_squares.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 
@@ -297,6 +298,7 @@ OneSided fit_one_sided(const Eigen::VectorXd& v, const Eigen::VectorXd& f, const
       problem.SetParameterLowerBound(cur.p, kDelta, o.delta_min);
       problem.SetParameterUpperBound(cur.p, kDelta, o.delta_max);
     }
+    detail::quiet_ceres_logging();
     ceres::Solver::Options sopts;
     sopts.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
     sopts.max_num_iterations = o.max_iterations;

@@ -8,10 +8,12 @@
 #include <limits>
 #include <locale.h>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "frictionlab/error.hpp"
+#include "io/input_file.hpp"
 #include "io/sha256.hpp"
 
 namespace frictionlab {
@@ -131,11 +133,9 @@ std::string at_line(const std::string& path, std::size_t line_no) { return path 
 }  // namespace
 
 Dataset read_csv(const std::string& path, const CsvOptions& options) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw InputError(errc::data_file_unreadable, path + ": cannot open the CSV file (does it exist and is it readable?)",
-                     {.file = path});
-  }
+  // Read once, within the budget (a FIFO too: its bytes are hashed and parsed from memory).
+  const std::string bytes = read_input_file(path, "CSV file", errc::data_file_unreadable);
+  std::istringstream in(bytes);
 
   Dataset data;
   data.file = path;
@@ -297,7 +297,7 @@ Dataset read_csv(const std::string& path, const CsvOptions& options) {
   for (std::size_t c = 0; c < names.size(); ++c) {
     data.add_column(names[c], Eigen::Map<const Eigen::VectorXd>(values[c].data(), static_cast<Eigen::Index>(values[c].size())));
   }
-  data.sha256 = sha256_file(path);
+  data.sha256 = sha256_hex(bytes);
   return data;
 }
 

@@ -1,4 +1,6 @@
 #include "io/sha256.hpp"
+#include "io/input_file.hpp"
+#include "frictionlab/budget.hpp"
 #include "frictionlab/error.hpp"
 
 #include <openssl/evp.h>
@@ -49,14 +51,20 @@ std::string sha256_hex(std::string_view bytes) {
 }
 
 std::string sha256_file(const std::string& path) {
+  // A device (/dev/zero) would be read without end: refused; a FIFO is read as a stream, counted
+  // against the work budget one unit per byte.
+  check_input_file(path, "file to hash", errc::data_file_unreadable);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(errc::data_file_unreadable, path + ": cannot open the file to compute its sha256", {.file = path});
   Sha256 s;
+  double read = 0;
   std::vector<char> buf(1 << 16);
   while (in) {
     in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
     const std::streamsize got = in.gcount();
     if (got > 0) s.update(buf.data(), static_cast<std::size_t>(got));
+    read += static_cast<double>(got);
+    if (read > work_budget()) check_work(read, "bytes read", path + ": hashing the file", {.file = path});
   }
   if (in.bad()) throw InputError(errc::data_file_unreadable, path + ": read error while computing its sha256", {.file = path});
   return s.hex();

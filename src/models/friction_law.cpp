@@ -1,5 +1,6 @@
 #include "frictionlab/models/friction_law.hpp"
 
+#include <algorithm>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -72,6 +73,11 @@ Law build(const LawSpec& spec) {
       throw std::invalid_argument(name + ": unknown parameter '" + key + "'; " + name + " has " + join(known) +
                                   (arrays.empty() ? "" : ", " + join(arrays)));
   }
+  // A parameter of one number given as a list (Fc: [1.0]) is that, not a missing parameter.
+  for (const auto& [key, value] : spec.arrays)
+    if (std::find(known.begin(), known.end(), key) != known.end())
+      throw std::invalid_argument(name + ": parameter '" + key + "' is a list of " + std::to_string(value.size()) +
+                                  " numbers; expected one number");
   if (!missing.empty())
     throw std::invalid_argument(name + ": missing parameter '" + missing + "' (" + name + " needs " + join(known) +
                                 (arrays.empty() ? "" : ", " + join(arrays)) + ")");

@@ -174,6 +174,13 @@ FigureFormat figure_format(const std::string& path) {
 FigureFiles figure_files(const std::string& path) { return {path, path + ".dat", path + ".gp"}; }
 
 void check_figure_path(const std::string& path, bool overwrite) {
+  // The name goes into gnuplot's script (its comments, the output file): a control character (a
+  // newline) would end a line of it, so gnuplot would fail or run what follows.
+  for (const char c : path)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+      throw std::invalid_argument("--plot: the file name holds a control character (" +
+                                  std::string(c == '\n' ? "a newline" : c == '\t' ? "a tab" : "code " + std::to_string(static_cast<int>(c))) +
+                                  "); expected a name gnuplot can be given");
   figure_format(path);
   const FigureFiles files = figure_files(path);
   const fs::path dir = fs::path(path).parent_path();

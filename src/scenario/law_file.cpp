@@ -1,4 +1,5 @@
 #include "frictionlab/scenario/law_file.hpp"
+#include "io/input_file.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -172,11 +173,10 @@ nlohmann::json read_model_json(const std::string& path) {
 FrictionLaw load_law(const std::string& path) {
   const bool is_json = path.size() >= 5 && path.substr(path.size() - 5) == ".json";
   if (is_json) return law_from_json(read_model_json(path), path);
-  std::ifstream in(path);
-  if (!in) throw InputError(errc::scenario_format, path + ": cannot open the friction law file", {.file = path});
+  const std::string text = read_input_file(path, "friction law file", errc::scenario_format);
   YAML::Node node;
   try {
-    node = YAML::Load(in);
+    node = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw InputError(errc::scenario_format, path + ": not valid YAML (" + e.what() + ")",
                      {.file = path, .row = static_cast<std::size_t>(e.mark.line + 1)});

@@ -34,6 +34,7 @@
 #include "frictionlab/simulate/simulate.hpp"
 #include "frictionlab/simulate/xy_table.hpp"
 #include "frictionlab/simulate/output_size.hpp"
+#include "io/input_file.hpp"
 #include "yaml_keys.hpp"
 
 namespace frictionlab {
@@ -977,17 +978,15 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
     // Columns beyond one contact's nine: every law's states, and nine per further contact.
     int extra = 9 * (static_cast<int>(laws.size()) - 1);
     for (const FrictionLaw* law : laws) extra += law->is_dynamic() ? law->num_states() : 0;
-    const double need = output_bytes(o, extra), limit = max_output_bytes();
-    if (!(need <= limit)) {
-      const bool rate_given = top.has("output_rate");
-      std::ostringstream m;
-      m << where << ": " << (rate_given ? "duration and output_rate" : "duration") << ": "
-        << detail::format_value(o.duration) << " s at " << detail::format_value(o.output_rate) << " Hz"
-        << (rate_given ? "" : " (the default output_rate)") << " gives " << std::setprecision(3) << output_rows(o)
-        << " output rows, which need " << format_bytes(need) << " of memory; the limit is half this machine's memory, "
-        << format_bytes(limit) << ": shorten duration or lower output_rate";
-      throw std::invalid_argument(m.str());
-    }
+    const bool rate_given = top.has("output_rate");
+    std::ostringstream m;
+    m << where << ": " << (rate_given ? "duration and output_rate" : "duration") << ": "
+      << detail::format_value(o.duration) << " s at " << detail::format_value(o.output_rate) << " Hz"
+      << (rate_given ? "" : " (the default output_rate)") << " gives " << std::setprecision(3) << output_rows(o)
+      << " output rows (shorten duration or lower output_rate)";
+    const ErrorFields fields{.file = where, .key = "duration", .value = detail::format_value(o.duration)};
+    check_memory(output_bytes(o, extra), m.str(), fields);
+    check_work(output_rows(o), "output rows", m.str(), fields);
   }
   if (top.has("solver")) {
     const Section s = section("solver");
@@ -1059,14 +1058,11 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
 }  // namespace
 
 Scenario load_scenario(const std::string& path, const ScenarioOptions& options) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(errc::scenario_format, path + " is a directory; expected a scenario YAML file", {.file = path});
-  std::ifstream file(path);
-  if (!file) throw InputError(errc::scenario_format, path + ": cannot open the scenario file", {.file = path});
+  // Read once within the budget: a device is refused, a FIFO read as a stream.
+  const std::string text = read_input_file(path, "scenario file", errc::scenario_format);
   YAML::Node root;
   try {
-    root = YAML::Load(file);
+    root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(errc::scenario_format,
                      path + ": not valid YAML at line " + std::to_string(e.mark.line + 1) + ", column " +

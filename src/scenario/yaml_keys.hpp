@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "frictionlab/budget.hpp"
 #include "frictionlab/error.hpp"
 
 namespace frictionlab::detail {
@@ -39,14 +40,37 @@ auto with_context(const std::string& where, F&& make) {
   }
 }
 
+/// The most nodes a scenario or law document may expand to, aliases expanded (times the budget
+/// factor, frictionlab/budget.hpp), and the deepest nesting: a 1 kB alias bomb (each level a list
+/// of nine aliases of the one before) expands to 9^8 nodes, and every reader walks the expansion.
+inline constexpr double kMaxYamlNodes = 1e6;
+inline constexpr int kMaxYamlDepth = 100;
+
 /// Refuses a mapping that gives a key twice (`k: 2.0` then `k: 3.0`), anywhere in the document:
 /// yaml-cpp keeps both pairs and a lookup silently finds one of them, so the user's intent is
-/// unknown. Also refuses keys that are not plain scalars (a list or mapping as a key).
-/// \throws std::invalid_argument "WHERE: line L: key 'k' given twice (first on line F)".
-inline void check_unique_keys(const YAML::Node& node, const std::string& where) {
+/// unknown. Also refuses keys that are not plain scalars (a list or mapping as a key), and a
+/// document that expands (aliases repeated) to more than kMaxYamlNodes nodes or nests deeper than
+/// kMaxYamlDepth levels, before any reader walks it.
+/// \throws std::invalid_argument "WHERE: line L: key 'k' given twice (first on line F)";
+///         InputError(budget.work) for the expansion and the depth.
+inline void check_unique_keys(const YAML::Node& node, const std::string& where, double& nodes, int depth) {
   if (!node || !node.IsDefined()) return;
+  const std::string file = where.substr(0, where.find(": "));
+  if (++nodes > kMaxYamlNodes * budget_factor()) {
+    throw InputError(errc::budget_work,
+                     where + ": the document expands to more than " + std::to_string(static_cast<long long>(kMaxYamlNodes * budget_factor())) +
+                         " nodes with its aliases (&name / *name) expanded; expected a scenario without repeated aliases "
+                         "(raise the limit with --budget FACTOR)",
+                     {.file = file});
+  }
+  if (depth > kMaxYamlDepth) {
+    throw InputError(errc::budget_work,
+                     where + ": line " + std::to_string(node.Mark().line + 1) + ": nested more than " +
+                         std::to_string(kMaxYamlDepth) + " levels deep; expected a scenario's few levels",
+                     {.file = file});
+  }
   if (node.IsSequence()) {
-    for (const auto& item : node) check_unique_keys(item, where);
+    for (const auto& item : node) check_unique_keys(item, where, nodes, depth + 1);
     return;
   }
   if (!node.IsMap()) return;
@@ -55,16 +79,21 @@ inline void check_unique_keys(const YAML::Node& node, const std::string& where) 
     const int line = kv.first.Mark().line + 1;
     if (!kv.first.IsScalar())
       throw InputError(errc::scenario_key_unknown, where + ": line " + std::to_string(line) + ": a key must be a name, not a list or mapping",
-                       {.file = where.substr(0, where.find(": ")), .row = static_cast<std::size_t>(line)});
+                       {.file = file, .row = static_cast<std::size_t>(line)});
     const std::string key = kv.first.Scalar();
     const auto [it, fresh] = seen.emplace(key, line);
     if (!fresh)
       throw InputError(errc::scenario_key_duplicate,
                        where + ": line " + std::to_string(line) + ": key '" + key + "' given twice (first on line " +
                            std::to_string(it->second) + "); give each key once",
-                       {.file = where.substr(0, where.find(": ")), .row = static_cast<std::size_t>(line), .key = key});
-    check_unique_keys(kv.second, where);
+                       {.file = file, .row = static_cast<std::size_t>(line), .key = key});
+    check_unique_keys(kv.second, where, nodes, depth + 1);
   }
+}
+
+inline void check_unique_keys(const YAML::Node& node, const std::string& where) {
+  double nodes = 0;
+  check_unique_keys(node, where, nodes, 0);
 }
 
 /// "WHERE: line L, column C: MESSAGE" for an exception yaml-cpp raised while a node was read

@@ -42,23 +42,11 @@ const char* solver_mode_name(SolverMode mode) {
 double output_rows(const SimulationOptions& o) { return std::floor(o.duration * o.output_rate * (1.0 + 1e-12) + 1e-9) + 1.0; }
 
 double output_bytes(const SimulationOptions& o, int law_states) {
-  return output_rows(o) * (9.0 + std::max(law_states, 0)) * static_cast<double>(sizeof(double));
+  // time and one contact's nine columns (position ... stuck, drive), then the caller's extras.
+  return output_rows(o) * (10.0 + std::max(law_states, 0)) * static_cast<double>(sizeof(double));
 }
 
-double max_output_bytes() {
-  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page <= 0) return 1024.0 * 1024.0 * 1024.0;
-  return 0.5 * static_cast<double>(pages) * static_cast<double>(page);
-}
-
-std::string format_bytes(double bytes) {
-  static const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB", "EB"};
-  int u = 0;
-  while (bytes >= 1000.0 && u < 6) bytes /= 1000.0, ++u;
-  char buf[64];
-  std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.3g %s", bytes, units[u]);
-  return buf;
-}
+double max_output_bytes() { return memory_budget(); }
 
 namespace {
 
@@ -103,14 +91,45 @@ void check_options(const SimulationOptions& o, SolverMode mode) {
 
 // Refuses, before anything is allocated, an output larger than the memory there is.
 void check_output_size(const SimulationOptions& o, int law_states) {
-  const double need = output_bytes(o, law_states), limit = max_output_bytes();
-  if (!(need <= limit)) {
-    char rows[32];
-    std::snprintf(rows, sizeof rows, "%.3g", output_rows(o));
-    throw std::invalid_argument("simulation options duration = " + detail::format_value(o.duration) + " s and output_rate = " +
-                                detail::format_value(o.output_rate) + " Hz give " + rows + " output rows, which need " +
-                                format_bytes(need) + " of memory; the limit is half this machine's memory, " +
-                                format_bytes(limit) + ": shorten the duration or lower the output rate");
+  char rows[32];
+  std::snprintf(rows, sizeof rows, "%.3g", output_rows(o));
+  check_memory(output_bytes(o, law_states),
+               "simulation options duration = " + detail::format_value(o.duration) + " s and output_rate = " +
+                   detail::format_value(o.output_rate) + " Hz give " + rows + " output rows",
+               {.key = "duration", .value = detail::format_value(o.duration)});
+}
+
+// Refuses, before the run, more steps than the work budget: output rows, fixed steps (duration /
+// dt) and controller samples (duration / Ts) each count one work unit.
+void check_steps(const SimulationOptions& o, SolverMode mode, double Ts) {
+  const double rows = output_rows(o);
+  check_work(rows, "output rows", "simulation options duration = " + detail::format_value(o.duration) + " s and output_rate = " + detail::format_value(o.output_rate) + " Hz", {.key = "duration", .value = detail::format_value(o.duration)});
+  if (mode == SolverMode::fixed_step)
+    check_work(o.duration / o.dt, "fixed steps", "simulation options duration = " + detail::format_value(o.duration) + " s and dt = " + detail::format_value(o.dt) + " s", {.key = "solver.dt", .value = detail::format_value(o.dt)});
+  if (Ts > 0) {
+    // The sample instants are listed before the run (the corners of the step schedule): about
+    // 48 bytes each, with the sort's pairs and the vectors' growth.
+    const std::string what = "duration = " + detail::format_value(o.duration) + " s at the plant's sample period Ts = " + detail::format_value(Ts) + " s";
+    const ErrorFields fields{.key = "Ts", .value = detail::format_value(Ts)};
+    check_work(o.duration / Ts, "controller samples", what, fields);
+    check_memory(48.0 * o.duration / Ts, what + " (" + detail::format_value(std::floor(o.duration / Ts)) + " sample instants)", fields);
+  }
+}
+
+// Numbers or an error, never both: a run whose columns hold an inf or NaN (a parameter beyond
+// what double arithmetic holds, plant.Kb: 1e308 giving inf voltages) is refused, not returned.
+// The temperature column is NaN by definition for a contact without a temperature effect.
+void check_finite(const Trajectory& tr) {
+  const std::vector<std::string> names = tr.names();
+  for (const std::string& name : names) {
+    if (name == "temperature" || (name.size() > 12 && name.compare(name.size() - 12, 12, ".temperature") == 0)) continue;
+    const std::vector<double>& c = tr.column(name);
+    for (std::size_t i = 0; i < c.size(); ++i)
+      if (!std::isfinite(c[i]))
+        throw std::invalid_argument("the simulation's column '" + name + "' is " + detail::format_value(c[i]) + " at t = " +
+                                    detail::format_value(tr.time[i]) +
+                                    " s: a parameter or input beyond what the model can compute in double precision; "
+                                    "expected values that keep every force, voltage and state finite");
   }
 }
 
@@ -235,6 +254,7 @@ class Engine {
       for (auto* col : {&c.position, &c.velocity, &c.friction, &c.applied, &c.current, &c.voltage, &c.reference, &c.stuck})
         *col = column();
       c.drive = column();
+      if (bodies_[static_cast<std::size_t>(k)].env) c.load = column(), c.temperature = column();
       c.law_state.resize(static_cast<std::size_t>(bodies_[static_cast<std::size_t>(k)].nz));
       for (auto& col : c.law_state) col = column();
       tr.contact_names.push_back(plant_.contact(k).name);
@@ -1261,13 +1281,16 @@ Trajectory simulate(const Plant& plant, const FrictionLaw& law, std::span<const 
   int extra_columns = 9 * static_cast<int>(nc - 1);  // other contacts' columns, then the law states
   for (const FrictionLaw* l : laws) extra_columns += l->is_dynamic() ? l->num_states() : 0;
   check_output_size(options, extra_columns);
+  check_steps(options, mode, plant.sample_period());
   if (inputs.size() == 1) {
     inputs[0].validate();
   } else {
     for (std::size_t i = 0; i < inputs.size(); ++i) inputs[i].validate("input " + std::to_string(i));
   }
   Engine engine(plant, law, laws, inputs, options, mode);
-  return engine.run();
+  Trajectory tr = engine.run();
+  check_finite(tr);
+  return tr;
 }
 
 Trajectory simulate(const Plant& plant, const FrictionLaw& law, const InputSignal& input,

@@ -23,7 +23,7 @@ expect_refused() {  # FILE TEXT...: exit 2, each TEXT in the one-line message, n
 }
 
 sed 's/^duration: 20/duration: 1e9/' "$base" > "$tmp/long.yaml"
-expect_refused "$tmp/long.yaml" "long.yaml: duration and output_rate: 1000000000 s at 200 Hz" "output rows, which need" "B of memory"
+expect_refused "$tmp/long.yaml" "long.yaml: duration and output_rate: 1000000000 s at 200 Hz" "output rows (shorten duration or lower output_rate): that needs" "B of memory; the memory budget is"
 grep -v '^output_rate' "$base" | sed 's/^duration: 20/duration: 1e9/' > "$tmp/long_default.yaml"
 expect_refused "$tmp/long_default.yaml" "duration: 1000000000 s at 100 Hz (the default output_rate)"
 sed 's/^output_rate: 200/output_rate: 1e9/' "$base" > "$tmp/rate.yaml"

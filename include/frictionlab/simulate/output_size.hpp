@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "frictionlab/budget.hpp"
 #include "frictionlab/simulate/options.hpp"
 
 #include "frictionlab/export.hpp"
@@ -16,11 +17,8 @@ double output_rows(const SimulationOptions& o);
 /// Memory (bytes) a run's output takes: output_rows * (9 + law_states) columns * 8 bytes.
 double output_bytes(const SimulationOptions& o, int law_states = 0);
 
-/// The largest output (bytes) simulate() accepts: half the machine's physical memory (1 GiB when
-/// it cannot be read). simulate() throws std::invalid_argument for a larger one.
+/// The largest output (bytes) simulate() accepts: the memory budget (frictionlab/budget.hpp).
+/// simulate() throws InputError (budget.memory) for a larger one.
 double max_output_bytes();
-
-/// A byte count for messages: "7.2 TB", "512 MB" (powers of 1000).
-std::string format_bytes(double bytes);
 
 }  // namespace frictionlab

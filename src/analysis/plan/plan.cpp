@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "frictionlab/analysis/plan/fisher.hpp"
+#include "frictionlab/budget.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
@@ -16,6 +17,7 @@ namespace {
 
 constexpr int kDefaultRuns = 40;       // sample std to about 11 % (1 / sqrt(2 (R - 1)))
 constexpr int kDefaultLugreRuns = 8;   // each LuGre output-error fit takes about a second
+constexpr double kBytesPerSample = 30 * 8.0;  // a trajectory's ten columns and the copies a run's fit makes
 constexpr double kLimitSlack = 1.02;   // a simulated peak within 2 % of a limit (loop overshoot) passes
 
 nlohmann::json number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
@@ -45,8 +47,22 @@ PlanResult plan_experiment(PlanMethod method, const PlanRig& rig, const PlanOpti
   out.scenario_file = rig.scenario_file;
   out.drive = plan_drive_name(rig.drive);
   out.axis = rig.axis;
+  const int runs = options.runs > 0 ? options.runs : (method == PlanMethod::lugre ? kDefaultLugreRuns : kDefaultRuns);
+  check_work(runs * kWorkPerRun, "work units", "--runs " + std::to_string(runs) + " (" + format_number(kWorkPerRun, 4) + " units per run before its samples)",
+             {.option = "--runs", .value = std::to_string(runs)});
   out.profile = design_experiment(method, rig, options.limits, options.noise, options.design);
   const ExperimentProfile& p = out.profile;
+  {
+    // The work and memory, before any run: each of the runs and the clean run simulates the
+    // profile's samples; one run holds its trajectory (ten columns) and its measurement copies.
+    const double samples = std::floor(p.duration * p.sample_rate + 1e-9) + 1.0;
+    const std::string what = "the " + out.method + " profile of " + format_number(p.duration, 4) + " s at " +
+                             format_number(p.sample_rate, 4) + " Hz (" + format_number(samples, 3) + " samples) and " +
+                             std::to_string(runs) + " runs";
+    const ErrorFields fields{.option = "--rate", .value = format_number(p.sample_rate, 4)};
+    check_memory(samples * kBytesPerSample, what, fields);
+    check_work((samples + kWorkPerRun) * (runs + 1.0), "work units (simulated samples and runs)", what, fields);
+  }
   const Trajectory clean = simulate_profile(p, rig, rig.law);
 
   // What the clean run on the prior reaches, against the limits.
@@ -88,7 +104,6 @@ PlanResult plan_experiment(PlanMethod method, const PlanRig& rig, const PlanOpti
         break;
       }
 
-  const int runs = options.runs > 0 ? options.runs : (method == PlanMethod::lugre ? kDefaultLugreRuns : kDefaultRuns);
   out.prediction = monte_carlo_spread(method, p, rig, clean, options.noise, runs, options.seed, options.progress);
   // The a-priori (Fisher-information) std of the noise-free plan next to the Monte Carlo one.
   const AprioriSpread apriori = a_priori_spread(method, p, rig, clean, options.noise);
