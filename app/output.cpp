@@ -580,7 +580,8 @@ std::string result_text(const Result& r) {
     s << "error: " << r.message << "\n";
     return s.str();
   }
-  s << "model " << r.model << ", " << r.fit.samples << " samples\n";
+  s << "model " << r.model << ", " << (r.axis == Axis::rotary ? "rotary" : "linear") << " axis, " << r.fit.samples
+    << " samples\n";
   std::size_t w = 6;
   for (const auto& p : r.parameters) w = std::max(w, p.name.size());
   for (const auto& p : r.parameters) {
