@@ -278,7 +278,7 @@ int fail(const std::string& message, int status, bool internal, const std::strin
       if (name == "row") error[name] = *fields.row;
       else error[name] = value;
     }
-    const nlohmann::json j = {{"schema", 1},
+    const nlohmann::json j = {{"schema", 2},
                               {"status", "error"},
                               {"message", text},
                               {"method", out->method ? out->method() : std::string()},

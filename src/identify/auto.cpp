@@ -470,7 +470,8 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
     line += chosen && *chosen == i ? "chosen" : c.refused() ? "refused: " + c.refusal : "runner-up";
     r.diagnostics.texts["candidate " + std::to_string(i + 1)] = line;
   }
-  r.json_sections["selection"] = selection_json(candidates, chosen);
+  // Every candidate with its name, errors, verdict and estimates: MODEL.json diagnostics.selection.
+  r.json_sections["diagnostics.selection"] = selection_json(candidates, chosen);
   if (!chosen) {
     std::string why;
     for (const auto& c : candidates) why += (why.empty() ? "" : "; ") + c.name + ": " + c.refusal;

@@ -61,7 +61,7 @@ TEST(Auto, PlateausBringTheSweepCandidatesAndTheAnswerIsPhysical) {
   constexpr double kRel = 0.05;
   const Result r = identify_auto(plateau_record(7));
   ASSERT_TRUE(r.ok()) << r.message;
-  const auto sel = nlohmann::json::parse(r.json_sections.at("selection"));
+  const auto sel = nlohmann::json::parse(r.json_sections.at("diagnostics.selection"));
   ASSERT_EQ(sel.size(), 5u) << sel.dump();  // three idim structures, two sweep laws
   int chosen = 0;
   for (const auto& c : sel) {
@@ -84,7 +84,7 @@ TEST(Auto, ChosenStdIsIdimsStdForTheSameOptions) {
   const IdimData d = plateau_record(7);
   const Result r = identify_auto(d);
   ASSERT_TRUE(r.ok()) << r.message;
-  const auto sel = nlohmann::json::parse(r.json_sections.at("selection"));
+  const auto sel = nlohmann::json::parse(r.json_sections.at("diagnostics.selection"));
   std::string chosen;
   for (const auto& c : sel)
     if (c["status"] == "chosen") chosen = c["name"].get<std::string>();

@@ -120,7 +120,7 @@ def test_result_api(emps_result, tmp_path):
     with pytest.raises(ValueError, match="no parameter 'Fs'"):
         r.value("Fs")
     d = r.to_dict()
-    assert d["schema"] == 1 and d["parameters"]["M"]["unit"] == "kg" and d["parameters"]["M"]["value"] == r["M"]
+    assert d["schema"] == 2 and d["parameters"]["M"]["unit"] == "kg" and d["parameters"]["M"]["value"] == r["M"]
     assert json.loads(r.to_json(indent=None)) == d
     path = tmp_path / "model.json"
     r.save(path)
