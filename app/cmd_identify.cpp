@@ -30,7 +30,7 @@ Handler register_identify(CLI::App& app) {
                     "file. Several files or a folder (its .csv and .mat files): each identified alone, one row per "
                     "file (see --table)")
         ->required();
-    add_data_options(cmd, io->columns, m.default_axis);
+    add_data_options(cmd, io->columns);  // every method: linear unless --axis rotary
     add_output_options(cmd, io->output);
     add_batch_options(cmd, io->batch);
     io->batch.method = m.name;

@@ -9,10 +9,12 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "commands.hpp"
+#include "frictionlab/error.hpp"
 #include "frictionlab/format.hpp"
 #include "data_options.hpp"
 #include "contour_figure.hpp"
@@ -46,6 +48,7 @@ struct ValidateArgs {
 struct ModelFile {
   IdentifiedModel model;
   std::string data_file, data_sha256;
+  std::optional<Axis> axis;  // the axis it was identified on, when the file says
 };
 
 // The one model reader (scenario/law_file.hpp: whole file, status ok) and the plant values, each
@@ -82,6 +85,7 @@ ModelFile read_model(const std::string& path) {
   m.model.axis.offset = -param("offset", false, 0.0, "a force offset in N or N m");
   if (j.contains("method") && j["method"].is_string()) m.model.method = j["method"].get<std::string>();
   m.model.source = path;
+  if (j.contains("axis")) m.axis = parse_axis(j["axis"].get<std::string>());  // linear or rotary: read_model_json checked it
   if (j.contains("data") && j["data"].is_object()) {
     const auto& d = j["data"];
     if (d.contains("file") && d["file"].is_string()) m.data_file = d["file"].get<std::string>();
@@ -249,6 +253,18 @@ int run(ValidateArgs& a) {
   so.files_read = &scenario_files;
   const Scenario sc = load_scenario(a.scenario, so);
   for (const auto& f : scenario_files) inputs.push_back({"named by the scenario", f, RunFile::Kind::file});
+  // A model of the other kind of axis has its numbers in other units (N m, not N): refused naming both.
+  const Axis plant_axis = sc.plant->motion_axis();
+  const auto axis_name = [](Axis x) { return std::string(x == Axis::rotary ? "rotary" : "linear"); };
+  const auto check_axis = [&](const std::string& file, const std::optional<Axis>& axis) {
+    if (axis && *axis != plant_axis)
+      throw InputError(errc::scenario_value,
+                       file + ": axis: a " + axis_name(*axis) + " model on the " + axis_name(plant_axis) + " plant of " +
+                           a.scenario + "; expected a model identified on a " + axis_name(plant_axis) + " axis",
+                       {.file = file, .key = "axis", .value = axis_name(*axis)});
+  };
+  if (named.empty()) check_axis(a.model, mf.axis);
+  for (const auto& [axis, file] : named) check_axis(file, read_model(file).axis);
   check_run_files(inputs, {{"--json", a.output.json}, {"--plot", a.output.plot, RunFile::Kind::figure},
                            {"--report", a.output.report, RunFile::Kind::report}},
                   a.output.overwrite);

@@ -50,7 +50,8 @@ void add_read_options(CLI::App* cmd, ReadOptions& o);
 
 /// Adds --time --position --velocity --current --force --input --gain --kt --scale --axis and
 /// the read options (add_read_options) to `cmd`. `default_axis` is the axis when --axis is not
-/// given.
+/// given: linear for every identification method, so one file never reports N m under one
+/// method and N under another.
 void add_data_options(CLI::App* cmd, DataOptions& o, const std::string& default_axis = "linear");
 
 /// Reads DATA (CSV with a header row or without one, or MAT): CSV columns named by --names;

@@ -293,7 +293,7 @@ int fail(const std::string& message, int status, bool internal, const std::strin
       if (name == "row") error[name] = *fields.row;
       else error[name] = value;
     }
-    const nlohmann::json j = {{"schema", 1},
+    const nlohmann::json j = {{"schema", 2},
                               {"status", "error"},
                               {"message", text},
                               {"method", out->method ? out->method() : std::string()},
@@ -595,7 +595,8 @@ std::string result_text(const Result& r) {
     s << "error: " << r.message << "\n";
     return s.str();
   }
-  s << "model " << r.model << ", " << r.fit.samples << " samples\n";
+  s << "model " << r.model << ", " << (r.axis == Axis::rotary ? "rotary" : "linear") << " axis, " << r.fit.samples
+    << " samples\n";
   std::size_t w = 6;
   for (const auto& p : r.parameters) w = std::max(w, p.name.size());
   for (const auto& p : r.parameters) {

@@ -37,7 +37,7 @@ void register_json_output(CLI::App* cmd, CLI::Option* json, std::function<std::s
 /// The one place a failed run is reported (main's catch blocks; emit prints the same line for a
 /// result whose data gave no answer): one line "frictionlab: error: MESSAGE" (or "internal
 /// error" when `internal`) on stderr; and when the subcommand that ran was given `--json -`, the
-/// JSON {"schema": 1, "status": "error", "message": MESSAGE, "method": ...} as one line on stdout.
+/// JSON {"schema": 2, "status": "error", "message": MESSAGE, "method": ...} as one line on stdout.
 /// The JSON also has "error": {"code": CODE, "message": MESSAGE, and the fields that apply: file,
 /// row, column, key, option, value, other_file, other_option} (codes: frictionlab/error.hpp; an
 /// empty `code` is input.invalid for status 2, internal otherwise). Bytes that are not UTF-8 are

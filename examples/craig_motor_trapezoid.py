@@ -19,7 +19,7 @@ for s in tr.switches:
     print(f"t = {s['time']:8.3f} s  {s['kind']}")
 
 KT = 0.0141  # N m/A
-r = fl.identify_breakaway(tr["time"], KT * tr["current"], tr["velocity"])
+r = fl.identify_breakaway(tr["time"], KT * tr["current"], tr["velocity"], axis="rotary")
 print(r)
 print("lecture read-offs:", r.diagnostics.groups["readoff"])
 for name, true in {"Fs": 0.0015, "Fc": 0.0012, "Fv": 2.85e-6}.items():

@@ -16,7 +16,7 @@ out = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else None
 
 tr = fl.simulate(here / "virgala_motor_sweep.yaml")
 KM = 0.039  # N m/A: at steady speed the friction torque is Km i
-r = fl.identify_sweep(tr["time"], KM * tr["current"], tr["velocity"])  # Stribeck law, exponent fitted
+r = fl.identify_sweep(tr["time"], KM * tr["current"], tr["velocity"], axis="rotary")  # Stribeck law, exponent fitted
 print(r)
 for p in r.diagnostics.lists["points"]:
     print(f"  {p['velocity']:8.2f} rad/s  {p['force'] * 1e3:7.4f} mN m")

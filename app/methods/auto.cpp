@@ -42,7 +42,6 @@ CliMethod auto_method() {
           "asymmetric; a sweep's laws with M from the trajectory) and answers with the one that predicts held-out "
           "time blocks (or --validate FILE) best; refuses physically impossible fits. The candidates are listed "
           "with their held-out errors",
-          "linear",
           run,
           {{"fit",
             "Measured drive force and the force the chosen model reconstructs (top), and their difference "

@@ -93,7 +93,6 @@ Figure breakaway_map(const Result& r) {
 CliMethod breakaway_method() {
   return {"Torque-mode trapezoid experiment (ramp up, hold, ramp down): Fs, Fc, Fv (and M) from "
           "time, torque (or current with --kt) and velocity",
-          "rotary",
           run,
           {{"fit",
             "Applied force and velocity over the experiment; the point marks the breakaway (Fs), the line the "

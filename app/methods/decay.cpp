@@ -45,7 +45,6 @@ Figure decay_figure(const Result& r) {
 CliMethod decay_method() {
   return {"Free oscillation of a pendulum or spring-mass: Coulomb and viscous friction from the energy lost "
           "per half cycle",
-          "linear",
           run,
           {{"fit", "Free oscillation with its turning points and the envelope fitted to their half swings.",
             decay_figure}},

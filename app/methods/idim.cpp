@@ -286,7 +286,6 @@ IdimData trajectory_record(const Dataset& d, const DataOptions& c, const std::st
 CliMethod idim_method() {
   return {"Inverse dynamic model least squares on a trajectory: force = M qdd + friction(qd) + offset "
           "(EMPS benchmark recipe). Best cross-test on EMPS: --terms inertia,asymmetric,stribeck --delay 1",
-          "linear",
           run,
           {{"fit",
             "Measured drive force and the force the identified inverse dynamic model reconstructs from position "

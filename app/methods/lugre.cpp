@@ -76,7 +76,6 @@ CliMethod lugre_method() {
           "sliding, reversals), all six: sigma0, sigma1 and the static part Fc, Fs, vs, sigma2 (started "
           "from the sliding samples and a grid of Fs and vs), unless --static gives the static part. A "
           "parameter the record cannot determine, or that ends at a bound, has std null (nan) and a warning",
-          "linear",
           run,
           {{"fit", "Measured and simulated position and force of the identified LuGre model.", lugre_figure},
            {"friction-map",

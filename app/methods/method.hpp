@@ -49,7 +49,6 @@ struct MethodFigure {
 
 struct CliMethod {
   std::string help;          ///< the subcommand's help text
-  std::string default_axis;  ///< --axis default: "linear" or "rotary"
   /// Runs the method on one file. Empty for a method with a command of its own (validate).
   MethodRun run;
   std::vector<MethodFigure> figures;  ///< the first is the fit figure

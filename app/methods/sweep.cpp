@@ -57,7 +57,6 @@ CliMethod sweep_method() {
   return {"Constant-velocity tests: friction-velocity points from steady segments (found on the smoothed "
           "velocity with a noise-aware band, or on --reference) and a fitted law; vs and delta get std "
           "null when no level is slow enough to show the Stribeck part",
-          "rotary",
           run,
           {{"fit",
             "Friction against velocity: the mean of each steady segment with its standard deviation, and the "

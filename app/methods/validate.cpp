@@ -16,7 +16,6 @@ Figure validate_figure(const Result& r) {
 
 CliMethod validate_method() {
   return {"",
-          "linear",
           {},
           {{"fit", "Measured signals and the simulation of the identified model driven by the same input.",
             validate_figure}},

@@ -11,6 +11,7 @@
 #include "frictionlab/identify/selection.hpp"
 #include "frictionlab/identify/static_fit.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
+#include "idim_stribeck.hpp"
 #include "method_support.hpp"
 
 namespace frictionlab {
@@ -89,15 +90,6 @@ void training_rows(const Mat& X, const Vec& y, Eigen::Index b, Eigen::Index e, M
   yt.resize(n - (e - b));
   Xt << X.topRows(b), X.bottomRows(n - e);
   yt << y.head(b), y.tail(n - e);
-}
-
-// The vs grid of idim's search (identify_idim: 40 values on a log grid from 1e-4 to 0.5 of the
-// top speed), so the held-out search is the whole-record search on fewer samples.
-std::vector<double> vs_grid(double top_speed) {
-  constexpr int kGrid = 40;
-  std::vector<double> g;
-  for (int i = 0; i < kGrid; ++i) g.push_back(top_speed * std::pow(10.0, -4.0 + (4.0 - std::log10(2.0)) * i / (kGrid - 1)));
-  return g;
 }
 
 // Held-out errors of idim with the stribeck term, vs searched on each training set alone.
@@ -274,70 +266,19 @@ std::vector<Eigen::Index> moving_rows(const IdimRegression& cv, double fraction)
   return rows;
 }
 
-// The friction law of identified idim terms (Fs = Fc + Fs_minus_Fc with the Stribeck term), or
-// none when the estimates break a law's rules.
-std::optional<LawSpec> idim_law(const Result& r, double vs, double delta) {
-  const auto has = [&](const std::string& n) { return r.find(n) != nullptr; };
-  const auto val = [&](const std::string& n) { return has(n) ? r.value(n) : 0.0; };
-  const bool stribeck = has("Fs_minus_Fc");
-  LawSpec spec;
-  if (has("Fc_pos") && has("Fc_neg")) {
-    spec.name = stribeck ? "stribeck-asymmetric" : "coulomb-viscous-asymmetric";
-    for (const std::string s : {"_pos", "_neg"}) {
-      spec.scalars["Fc" + s] = val("Fc" + s);
-      spec.scalars["Fv" + s] = val("Fv" + s);
-      if (stribeck) spec.scalars["Fs" + s] = val("Fc" + s) + val("Fs_minus_Fc"), spec.scalars["vs" + s] = vs, spec.scalars["delta" + s] = delta;
-    }
-  } else {
-    spec.name = stribeck ? "stribeck" : "coulomb-viscous";
-    spec.scalars["Fc"] = val("Fc");
-    spec.scalars["Fv"] = val("Fv");
-    if (stribeck) spec.scalars["Fs"] = val("Fs"), spec.scalars["vs"] = vs, spec.scalars["delta"] = delta;
-  }
-  try {
-    FrictionLaw::from_spec(spec);
-    return spec;
-  } catch (const std::invalid_argument&) {
-    return std::nullopt;
-  }
-}
-
-// Ordinary least squares of a (row-selected) regression as a Result of idim: parameters with std
-// from s^2 (X'X)^-1 (identify/uncertainty.hpp), Fs = Fc + Fs_minus_Fc with its std when the
-// Stribeck term is present, fit figures, the law, the signals of the fit figure.
-Result fit_regression(const IdimRegression& reg, const std::vector<double>& time, double vs, double delta, Axis axis) {
-  Result r = new_result(method_info(MethodId::idim), "coulomb-viscous", axis);
-  const Eigen::Index n = reg.X.rows(), p = reg.X.cols();
-  if (n <= p) return fail(r, "fewer samples in motion (" + std::to_string(n) + ") than parameters");
-  const Eigen::ColPivHouseholderQR<Mat> qr(reg.X);
-  if (qr.rank() < p) return fail(r, "the regressor is rank deficient on the samples in motion");
-  const Vec theta = qr.solve(reg.y);
-  std::vector<std::string> names;
-  for (Eigen::Index j = 0; j < p; ++j) {
-    const auto& t = reg.terms[static_cast<std::size_t>(j)];
-    add_parameter(r, t.parameter, theta(j), std::numeric_limits<double>::quiet_NaN(), t.quantity, axis);
-    names.push_back(t.parameter);
-  }
-  const Vec model = reg.X * theta;
-  set_fit(r, reg.y, model);
-  const double s2 = (reg.y - model).squaredNorm() / static_cast<double>(n - p);
-  const Mat cov = set_uncertainty_from_information(r, names, reg.X.transpose() * reg.X, s2);
-  const auto at = [&](const std::string& name) {
-    return static_cast<Eigen::Index>(std::find(names.begin(), names.end(), name) - names.begin());
-  };
-  if (r.find("Fs_minus_Fc") && r.find("Fc")) {
-    const Eigen::Index a = at("Fc"), b = at("Fs_minus_Fc");
-    const double var = cov(a, a) + cov(b, b) + 2 * cov(a, b);
-    add_parameter(r, "Fs", r.value("Fc") + r.value("Fs_minus_Fc"), var >= 0 ? std::sqrt(var) : std::numeric_limits<double>::quiet_NaN(),
-                  Quantity::force, axis);
-  }
-  if (r.find("Fs_minus_Fc")) r.diagnostics.numbers["stribeck_vs"] = vs;
-  r.law = idim_law(r, vs, delta);
-  if (r.law) r.model = r.law->name;
-  r.series["time"] = time;
-  r.series["force"].assign(reg.y.data(), reg.y.data() + reg.y.size());
-  r.series["force_model"].assign(model.data(), model.data() + model.size());
-  return r;
+// Fs = Fc + Fs_minus_Fc of an idim result with the Stribeck term, its std from the two std and
+// their correlation (the result's Newey-West covariance); NaN when either is undetermined.
+void add_static_level(Result& r, Axis axis) {
+  const Parameter *fc = r.find("Fc"), *dF = r.find("Fs_minus_Fc");
+  if (fc == nullptr || dF == nullptr || r.find("Fs") != nullptr) return;
+  double rho = std::numeric_limits<double>::quiet_NaN();
+  const auto& names = r.diagnostics.correlation.names;
+  const auto ia = std::find(names.begin(), names.end(), "Fc"), ib = std::find(names.begin(), names.end(), "Fs_minus_Fc");
+  if (ia != names.end() && ib != names.end())
+    rho = r.diagnostics.correlation.matrix[static_cast<std::size_t>(ia - names.begin())][static_cast<std::size_t>(ib - names.begin())];
+  const double var = fc->std * fc->std + dF->std * dF->std + 2 * rho * fc->std * dF->std;
+  const double value = fc->value + dF->value;
+  add_parameter(r, "Fs", value, var >= 0 ? std::sqrt(var) : std::numeric_limits<double>::quiet_NaN(), Quantity::force, axis);
 }
 
 }  // namespace
@@ -365,6 +306,11 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
   std::vector<double> row_time;
   for (const Eigen::Index i : rows) row_time.push_back(time_all[static_cast<std::size_t>(i)]);
   const std::vector<SampleBlock> blocks = contiguous_blocks(cv.y.size(), options.folds);
+  // moving_rows's limit as idim's exclude_below: |qd| >= the next double above the limit is
+  // |qd| > limit, so identify_idim keeps exactly `rows`.
+  const double standstill_speed =
+      std::nextafter(options.standstill_fraction * cv_all.X.col(column_of(cv_all, "Fv")).cwiseAbs().maxCoeff(),
+                     std::numeric_limits<double>::infinity());
   std::optional<IdimRegression> second_cv;
   std::vector<Eigen::Index> second_rows;
   if (options.heldout) {
@@ -384,49 +330,25 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
     c.structure = joined(terms) + (search ? " (vs searched)" : "");
     IdimOptions o = base;
     o.terms = terms;
-    // The regressions of the candidate: one, or one per vs of the grid.
+    // The regressions the held-out errors are computed on: one, or with the Stribeck term one per
+    // vs of idim's search grid, its column remade from one filter pass (idim_stribeck.hpp).
     std::vector<IdimRegression> regs;
-    std::vector<double> grid = search ? vs_grid(cv_all.max_speed) : std::vector<double>{o.stribeck_vs};
-    for (double vs : grid) {
-      o.stribeck_vs = vs;
+    if (search) {
+      IdimWorkspace workspace;
+      StribeckColumns columns(data, o, workspace);
+      for (double vs : stribeck_vs_grid(columns.regression().max_speed)) regs.push_back(select_rows(columns.at(vs), rows));
+    } else {
       regs.push_back(select_rows(idim_regression(data, o), rows));
     }
-    // The whole-record fit: the vs with the least training residual (as idim's own search).
-    std::size_t best = 0;
-    double best_sse = std::numeric_limits<double>::infinity();
-    for (std::size_t g = 0; g < regs.size(); ++g) {
-      const Eigen::ColPivHouseholderQR<Mat> qr(regs[g].X);
-      if (qr.rank() < regs[g].X.cols()) continue;
-      const double sse = (regs[g].y - regs[g].X * qr.solve(regs[g].y)).squaredNorm();
-      if (sse < best_sse) best_sse = sse, best = g;
-    }
-    IdimRegression chosen_reg = regs[best];
-    double chosen_vs = grid[best];
-    if (search && std::isfinite(best_sse)) {
-      // The grid steps by a quarter; Fv and Fc move with vs, so the minimum is refined by a
-      // golden-section search on log vs between the best point's neighbours.
-      const auto sse_at = [&](double vs, IdimRegression* keep) {
-        o.stribeck_vs = vs;
-        IdimRegression reg = select_rows(idim_regression(data, o), rows);
-        const Eigen::ColPivHouseholderQR<Mat> qr(reg.X);
-        const double sse = qr.rank() < reg.X.cols() ? std::numeric_limits<double>::infinity()
-                                                   : (reg.y - reg.X * qr.solve(reg.y)).squaredNorm();
-        if (keep) *keep = std::move(reg);
-        return sse;
-      };
-      double a = std::log(grid[best > 0 ? best - 1 : best]), b = std::log(grid[std::min(best + 1, grid.size() - 1)]);
-      const double phi = (std::sqrt(5.0) - 1) / 2;
-      double x1 = b - phi * (b - a), x2 = a + phi * (b - a);
-      double f1 = sse_at(std::exp(x1), nullptr), f2 = sse_at(std::exp(x2), nullptr);
-      for (int it = 0; it < 30; ++it) {
-        if (f1 < f2) b = x2, x2 = x1, f2 = f1, x1 = b - phi * (b - a), f1 = sse_at(std::exp(x1), nullptr);
-        else a = x1, x1 = x2, f1 = f2, x2 = a + phi * (b - a), f2 = sse_at(std::exp(x2), nullptr);
-      }
-      IdimRegression refined;
-      const double vs = std::exp((a + b) / 2);
-      if (sse_at(vs, &refined) < best_sse) chosen_reg = std::move(refined), chosen_vs = vs;
-    }
-    c.result = fit_regression(chosen_reg, row_time, chosen_vs, o.stribeck_delta, options.axis);
+    // The candidate's result is idim's own on the samples in motion (exclude_below at the
+    // standstill speed), vs searched as by --vs search: its std is idim's Newey-West figure.
+    IdimOptions fit = o;
+    fit.exclude_below = standstill_speed;
+    fit.search_stribeck_vs = search;
+    c.result = identify_idim(data, fit);
+    if (c.result.ok()) add_static_level(c.result, options.axis);
+    const auto vs_used = c.result.diagnostics.numbers.find("stribeck_vs");
+    const double chosen_vs = vs_used != c.result.diagnostics.numbers.end() ? vs_used->second : o.stribeck_vs;
     c.training_error_percent = c.result.fit.relative_error_percent;
     HeldOutErrors h;
     if (!c.result.ok()) {
@@ -548,7 +470,8 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
     line += chosen && *chosen == i ? "chosen" : c.refused() ? "refused: " + c.refusal : "runner-up";
     r.diagnostics.texts["candidate " + std::to_string(i + 1)] = line;
   }
-  r.json_sections["selection"] = selection_json(candidates, chosen);
+  // Every candidate with its name, errors, verdict and estimates: MODEL.json diagnostics.selection.
+  r.json_sections["diagnostics.selection"] = selection_json(candidates, chosen);
   if (!chosen) {
     std::string why;
     for (const auto& c : candidates) why += (why.empty() ? "" : "; ") + c.name + ": " + c.refusal;

@@ -13,6 +13,7 @@
 #include "frictionlab/identify/adequacy.hpp"
 #include "frictionlab/identify/covariance.hpp"
 #include "frictionlab/identify/method.hpp"
+#include "idim_stribeck.hpp"
 #include "method_support.hpp"
 #include "idim_internal.hpp"
 #include "frictionlab/identify/least_squares.hpp"
@@ -589,7 +590,8 @@ MethodInfo detail::idim_method_info() {
        .words = {"position", "velocity"}},
       {.name = "vs", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s", .default_value = d.stribeck_vs,
        .help = "Stribeck velocity of the stribeck term, or 'search' for the value that minimises the identification "
-               "error",
+               "error (the best of a 40-point log grid from 1e-4 to 0.5 of the top speed, refined by a golden-section "
+               "search)",
        .min = 0, .min_open = true, .words = {"search"},
        .expected_text = "a Stribeck velocity (m/s or rad/s) or 'search'", .deprecated_keywords = {"stribeck_vs"}},
       {.name = "delta", .type = OptionType::number, .default_value = d.stribeck_delta,
@@ -821,54 +823,102 @@ void describe_conditions(Result& r, const IdimData& data, const IdimOptions& o) 
   }
 }
 
-// The Stribeck velocity, on a log grid from 1e-4 to 0.5 of the top speed, whose identification has
-// the smallest relative error: the identification residual alone chooses, never the cross-test.
-// Only the Stribeck column depends on vs, and decimation is linear and column by column, so the
-// recipe runs once and each trial rebuilds and decimates that one column and refits (the same
-// numbers as running the whole recipe per trial). options.stribeck_vs when no trial gives a fit.
-double searched_stribeck_vs(const IdimData& data, const IdimOptions& options, double dt, IdimWorkspace& workspace) {
-  Pass base = regression_pass(data, options, dt, false, workspace);
-  IdimRegression& reg = base.reg;
-  // A record without motion or force gives no fit at any vs: identify_idim_fixed says why.
-  if (!(reg.max_speed > no_motion_speed(data, options, base)) || !(reg.y.cwiseAbs().maxCoeff() > 0.0))
-    return options.stribeck_vs;
-  std::vector<std::string> names;
+}  // namespace
+
+// The Stribeck columns (idim_stribeck.hpp): one pass of the recipe, the Stribeck column rebuilt
+// and decimated per trial into the workspace's buffer of that column.
+struct detail::StribeckColumns::Impl {
+  const IdimData& data;
+  IdimWorkspace& workspace;
+  IdimOptions options;
+  Pass base;
   Eigen::Index j = -1;  // the Stribeck column (a built-in term: extras come after)
-  for (const auto& t : reg.terms) {
-    if (t.parameter == "Fs_minus_Fc" && j < 0) j = static_cast<Eigen::Index>(names.size());
-    names.push_back(t.parameter);
-  }
-  const Eigen::Index n = data.time.size(), used = n - options.skip - options.skip_end;
-  Eigen::Map<Vec> column(workspace.buffer(kFirstColumnBuffer + static_cast<std::size_t>(j), static_cast<std::size_t>(n)).data(), n);
-  LeastSquaresOptions lso;
-  lso.max_condition = options.max_condition;
-  const double y_norm = reg.y.norm();
-  IdimOptions o = options;
-  double best = std::numeric_limits<double>::infinity(), best_vs = options.stribeck_vs;
-  constexpr int kGrid = 40;
-  for (int i = 0; i < kGrid; ++i) {
-    o.stribeck_vs = reg.max_speed * std::pow(10.0, -4.0 + (4.0 - std::log10(2.0)) * i / (kGrid - 1));
-    builtin("stribeck", o).fill(*base.kinematics, column);
-    const Vec all = options.decimation == 1
-                        ? Vec(column.segment(options.skip, used))
-                        : Vec(decimate_columns(ColumnViews{{column.data() + options.skip, used}}, options.decimation,
-                                               workspace.filter()));
-    // The rows the regression kept (exclude_below may have left some out): row k is raw sample
-    // skip + k * decimation.
-    for (Eigen::Index k = 0; k < reg.X.rows(); ++k)
-      reg.X(k, j) = all((reg.sample[static_cast<std::size_t>(k)] - options.skip) / std::max(1, options.decimation));
-    const LeastSquaresFit fit = linear_least_squares(reg.X, reg.y, names, lso);
-    if (fit.refusal != LeastSquaresRefusal::none || !fit.theta.allFinite()) continue;
-    const double error_percent = 100.0 * std::sqrt(fit.residual.squaredNorm()) / y_norm;
-    if (error_percent < best) {
-      best = error_percent;
-      best_vs = o.stribeck_vs;
-    }
-  }
-  return best_vs;
+  bool usable = false;
+  Impl(const IdimData& d, IdimWorkspace& w, const IdimOptions& o, double dt)
+      : data(d), workspace(w), options(resolved(o, d, dt)), base(regression_pass(d, options, dt, false, w)) {}
+};
+
+detail::StribeckColumns::StribeckColumns(const IdimData& data, const IdimOptions& options, IdimWorkspace& workspace)
+    : impl_(std::make_unique<Impl>(data, workspace, options, checked_step(data))) {
+  const IdimRegression& reg = impl_->base.reg;
+  for (std::size_t k = 0; k < reg.terms.size() && impl_->j < 0; ++k)
+    if (reg.terms[k].parameter == "Fs_minus_Fc") impl_->j = static_cast<Eigen::Index>(k);
+  if (impl_->j < 0) throw std::invalid_argument("idim: the vs search needs the 'stribeck' term among the terms");
+  // A record without motion or force gives no fit at any vs: identify_idim_fixed says why.
+  impl_->usable = reg.max_speed > no_motion_speed(data, impl_->options, impl_->base) && reg.y.cwiseAbs().maxCoeff() > 0.0;
 }
 
-}  // namespace
+detail::StribeckColumns::~StribeckColumns() = default;
+
+const IdimOptions& detail::StribeckColumns::options() const { return impl_->options; }
+const IdimRegression& detail::StribeckColumns::regression() const { return impl_->base.reg; }
+bool detail::StribeckColumns::usable() const { return impl_->usable; }
+
+const IdimRegression& detail::StribeckColumns::at(double vs) {
+  Impl& m = *impl_;
+  IdimRegression& reg = m.base.reg;
+  const IdimOptions& options = m.options;
+  const Eigen::Index n = m.data.time.size(), used = n - options.skip - options.skip_end;
+  Eigen::Map<Vec> column(m.workspace.buffer(kFirstColumnBuffer + static_cast<std::size_t>(m.j), static_cast<std::size_t>(n)).data(), n);
+  IdimOptions o = options;
+  o.stribeck_vs = vs;
+  builtin("stribeck", o).fill(*m.base.kinematics, column);
+  const Vec all = options.decimation == 1
+                      ? Vec(column.segment(options.skip, used))
+                      : Vec(decimate_columns(ColumnViews{{column.data() + options.skip, used}}, options.decimation,
+                                             m.workspace.filter()));
+  // The rows the regression kept (exclude_below may have left some out): row k is raw sample
+  // skip + k * decimation.
+  for (Eigen::Index k = 0; k < reg.X.rows(); ++k)
+    reg.X(k, m.j) = all((reg.sample[static_cast<std::size_t>(k)] - options.skip) / std::max(1, options.decimation));
+  return reg;
+}
+
+double detail::StribeckColumns::error_percent(double vs) {
+  const IdimRegression& reg = at(vs);
+  std::vector<std::string> names;
+  for (const auto& t : reg.terms) names.push_back(t.parameter);
+  LeastSquaresOptions lso;
+  lso.max_condition = impl_->options.max_condition;
+  const LeastSquaresFit fit = linear_least_squares(reg.X, reg.y, names, lso);
+  if (fit.refusal != LeastSquaresRefusal::none || !fit.theta.allFinite()) return std::numeric_limits<double>::infinity();
+  const double e = 100.0 * std::sqrt(fit.residual.squaredNorm()) / reg.y.norm();
+  return std::isfinite(e) ? e : std::numeric_limits<double>::infinity();
+}
+
+std::vector<double> detail::stribeck_vs_grid(double top_speed) {
+  constexpr int kGrid = 40;
+  std::vector<double> g;
+  g.reserve(kGrid);
+  for (int i = 0; i < kGrid; ++i) g.push_back(top_speed * std::pow(10.0, -4.0 + (4.0 - std::log10(2.0)) * i / (kGrid - 1)));
+  return g;
+}
+
+// The identification residual alone chooses, never the cross-test.
+double detail::searched_stribeck_vs(StribeckColumns& columns) {
+  const double fallback = columns.options().stribeck_vs;
+  if (!columns.usable()) return fallback;
+  const std::vector<double> grid = stribeck_vs_grid(columns.regression().max_speed);
+  double best = std::numeric_limits<double>::infinity();
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    if (const double e = columns.error_percent(grid[i]); e < best) best = e, at = i;
+  if (!std::isfinite(best)) return fallback;
+  // Golden-section search on log vs between the best grid point's neighbours (30 steps shrink the
+  // bracket of half a decade by 0.618^30, below 1e-6 of a decade).
+  constexpr int kGoldenSteps = 30;
+  const double phi = (std::sqrt(5.0) - 1) / 2;
+  double a = std::log(grid[at > 0 ? at - 1 : at]), b = std::log(grid[std::min(at + 1, grid.size() - 1)]);
+  double x1 = b - phi * (b - a), x2 = a + phi * (b - a);
+  double f1 = columns.error_percent(std::exp(x1)), f2 = columns.error_percent(std::exp(x2));
+  for (int it = 0; it < kGoldenSteps; ++it) {
+    if (f1 < f2) b = x2, x2 = x1, f2 = f1, x1 = b - phi * (b - a), f1 = columns.error_percent(std::exp(x1));
+    else a = x1, x1 = x2, f1 = f2, x2 = a + phi * (b - a), f2 = columns.error_percent(std::exp(x2));
+  }
+  const double refined = std::exp((a + b) / 2);
+  return columns.error_percent(refined) < best ? refined : grid[at];
+}
+
 
 Result identify_idim(const IdimData& data, const IdimOptions& options) {
   IdimWorkspace workspace;  // the regressions of a vs search share it
@@ -882,7 +932,10 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in, IdimWo
   const auto terms = idim_terms(options);
   const bool has_stribeck = std::any_of(terms.begin(), terms.end(), [](const IdimTerm& t) { return t.parameter == "Fs_minus_Fc"; });
   IdimOptions o = options;
-  if (options.search_stribeck_vs && has_stribeck) o.stribeck_vs = searched_stribeck_vs(data, options, dt, workspace);
+  if (options.search_stribeck_vs && has_stribeck) {
+    detail::StribeckColumns columns(data, options, workspace);
+    o.stribeck_vs = detail::searched_stribeck_vs(columns);
+  }
   Vec v;  // the filtered velocity at the fitted samples, for the friction map
   std::vector<Eigen::Index> sample;  // the raw sample of each fitted row
   Result r = identify_idim_fixed(data, o, dt, workspace, &v, &sample);

@@ -6,6 +6,7 @@
 
 #include "frictionlab/version.hpp"
 #include <stdexcept>
+#include <string_view>
 
 namespace frictionlab {
 namespace {
@@ -30,7 +31,7 @@ double Result::value(const std::string& name) const {
 
 std::string to_json(const Result& r, int indent) {
   nlohmann::json j;
-  j["schema"] = 1;
+  j["schema"] = 2;  // MODEL.json schema 2 (docs/contract.md); read_model_json reads 1 and 2
   j["frictionlab"] = {{"version", kVersion}};  // the program that made the result (reproducibility)
   j["status"] = r.ok() ? "ok" : "error";
   j["message"] = r.message;
@@ -107,9 +108,12 @@ std::string to_json(const Result& r, int indent) {
     for (const auto& [k, v] : r.law->strings) law[k] = v;
     j["law"] = law;
   }
+  // A section keyed "diagnostics.NAME" goes under diagnostics (schema 2: auto's "selection").
   for (const auto& [key, text] : r.json_sections) {
     try {
-      j[key] = nlohmann::json::parse(text);
+      constexpr std::string_view kUnder = "diagnostics.";
+      if (key.rfind(kUnder, 0) == 0) j["diagnostics"][key.substr(kUnder.size())] = nlohmann::json::parse(text);
+      else j[key] = nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
       throw std::invalid_argument("result of " + r.method + ": section '" + key + "' is not valid JSON: " + e.what());
     }

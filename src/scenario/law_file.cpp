@@ -3,16 +3,22 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <stdexcept>
+#include <vector>
 
 #include "frictionlab/error.hpp"
 #include "yaml_keys.hpp"
 
 namespace frictionlab {
 namespace {
+// The MODEL.json schemas this frictionlab reads (docs/contract.md); it writes the last.
+constexpr long long kModelSchemasRead[] = {1, 2};
+
 // FrictionLaw::from_spec with its messages prefixed by `where`; an effect's parameter error
 // (law.parameter, keyed by the bare parameter name) gets the file and the section's dotted key.
 FrictionLaw build_law(const LawSpec& spec, const std::string& where) {
@@ -126,6 +132,103 @@ FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where) {
   return build_law(spec, where);
 }
 
+namespace {
+
+// The JSON of `in`, with a key repeated within one object refused naming the file and the key
+// (dotted from the top; "[]" for an array's element), as the scenario reader refuses it: the
+// JSON standard leaves the meaning of a repeated key open, so no reader may guess.
+nlohmann::json parse_unique_keys(std::istream& in, const std::string& path) {
+  struct Frame {
+    bool object = false;
+    std::string where;  // dotted key of this object or array ("" at the top)
+    std::set<std::string> keys;
+    std::string key;  // the object's last key read
+  };
+  std::vector<Frame> stack;
+  const auto child = [&]() -> std::string {
+    if (stack.empty()) return "";
+    const Frame& f = stack.back();
+    const std::string step = f.object ? f.key : "[]";
+    return f.where.empty() ? step : f.where + (f.object ? "." : "") + step;
+  };
+  using Event = nlohmann::json::parse_event_t;
+  const nlohmann::json::parser_callback_t check = [&](int, Event event, nlohmann::json& parsed) {
+    switch (event) {
+      case Event::object_start: stack.push_back({true, child(), {}, {}}); break;
+      case Event::array_start: stack.push_back({false, child(), {}, {}}); break;
+      case Event::object_end:
+      case Event::array_end:
+        if (!stack.empty()) stack.pop_back();
+        break;
+      case Event::key: {
+        Frame& f = stack.back();
+        f.key = parsed.get<std::string>();
+        if (!f.keys.insert(f.key).second) {
+          const std::string key = f.where.empty() ? f.key : f.where + "." + f.key;
+          throw InputError(errc::scenario_value,
+                           path + ": " + key + ": the key is given twice; expected each key once in an object",
+                           {.file = path, .key = key});
+        }
+        break;
+      }
+      case Event::value: break;
+    }
+    return true;
+  };
+  return nlohmann::json::parse(in, check);  // strict: the object must end the file
+}
+
+// A number where one belongs (null too when `nullable`), else refused naming the key.
+void require_number(const nlohmann::json& v, const std::string& path, const std::string& key, bool nullable,
+                    const std::string& what) {
+  if (v.is_number() || (nullable && v.is_null())) return;
+  throw InputError(errc::scenario_value, path + ": " + key + ": expected " + what + ", got " + v.dump(),
+                   {.file = path, .key = key, .value = v.dump()});
+}
+
+// The fields of a MODEL.json whose type is fixed: status, axis, parameters, fit.
+void check_model_fields(const nlohmann::json& j, const std::string& path) {
+  if (!j.contains("status"))
+    throw InputError(errc::scenario_key_missing,
+                     path + ": missing 'status'; expected \"ok\" (a MODEL.json of frictionlab identify --json carries it)",
+                     {.file = path, .key = "status"});
+  if (j.contains("axis")) {
+    const auto& a = j["axis"];
+    if (!(a.is_string() && (a.get<std::string>() == "linear" || a.get<std::string>() == "rotary")))
+      throw InputError(errc::scenario_value, path + ": axis: expected \"linear\" or \"rotary\", got " + a.dump(),
+                       {.file = path, .key = "axis", .value = a.dump()});
+  }
+  if (j.contains("parameters")) {
+    const auto& ps = j["parameters"];
+    if (!ps.is_object())
+      throw InputError(errc::scenario_value, path + ": parameters: expected an object of parameters, got " + ps.dump(),
+                       {.file = path, .key = "parameters", .value = ps.dump()});
+    for (const auto& [name, p] : ps.items()) {
+      const std::string key = "parameters." + name;
+      if (!p.is_object()) {
+        require_number(p, path, key, false, "a number (the parameter's value) or {\"value\": number, \"std\": ...}");
+        continue;
+      }
+      if (p.contains("value")) require_number(p["value"], path, key + ".value", true, "a number (the parameter's value)");
+      for (const char* f : {"std", "std_ols"})
+        if (p.contains(f)) require_number(p[f], path, key + "." + f, true, "a number or null (a standard deviation)");
+      if (p.contains("unit") && !p["unit"].is_string())
+        throw InputError(errc::scenario_value, path + ": " + key + ".unit: expected a unit name, got " + p["unit"].dump(),
+                         {.file = path, .key = key + ".unit", .value = p["unit"].dump()});
+    }
+  }
+  if (j.contains("fit")) {
+    const auto& fit = j["fit"];
+    if (!fit.is_object())
+      throw InputError(errc::scenario_value, path + ": fit: expected an object, got " + fit.dump(),
+                       {.file = path, .key = "fit", .value = fit.dump()});
+    for (const char* f : {"relative_error_percent", "rmse", "samples"})
+      if (fit.contains(f)) require_number(fit[f], path, std::string("fit.") + f, true, "a number");
+  }
+}
+
+}  // namespace
+
 nlohmann::json read_model_json(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
@@ -136,7 +239,7 @@ nlohmann::json read_model_json(const std::string& path) {
   if (!in) throw InputError(errc::scenario_format, path + ": cannot open the model file", {.file = path});
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(in);  // strict: the object must end the file
+    j = parse_unique_keys(in, path);
   } catch (const nlohmann::json::exception& e) {
     throw InputError(errc::scenario_format, path + ": not valid JSON (" + e.what() + ")", {.file = path});
   }
@@ -145,13 +248,20 @@ nlohmann::json read_model_json(const std::string& path) {
   }
   // A schema this version does not know (a newer frictionlab's MODEL.json) is refused rather than
   // read by guess: its fields may mean something else.
-  if (j.contains("schema") && !(j["schema"].is_number_integer() && j["schema"].get<long long>() == 1)) {
+  const auto& known = kModelSchemasRead;
+  if (j.contains("schema") &&
+      !(j["schema"].is_number_integer() && std::find(std::begin(known), std::end(known), j["schema"].get<long long>()) != std::end(known))) {
     throw InputError(errc::scenario_value,
                      path + ": schema: " + j["schema"].dump() +
-                         " is not a MODEL.json schema this frictionlab reads (1); a newer frictionlab wrote it, or the "
-                         "file is not a MODEL.json",
+                         " is not a MODEL.json schema this frictionlab reads (1 or 2); a newer frictionlab wrote it, or "
+                         "the file is not a MODEL.json",
                      {.file = path, .key = "schema", .value = j["schema"].dump()});
   }
+  // A MODEL.json (a schema, a status, parameters, a method or a law object) is read strictly; a
+  // plain law file ({"law": NAME, ...}) is the law's alone (law_from_json checks it).
+  const bool model = j.contains("schema") || j.contains("status") || j.contains("parameters") || j.contains("method") ||
+                     (j.contains("law") && j["law"].is_object());
+  if (model) check_model_fields(j, path);
   if (j.contains("status")) {
     const auto& st = j["status"];
     if (!st.is_string()) {
@@ -166,6 +276,16 @@ nlohmann::json read_model_json(const std::string& path) {
                            "); it holds no model to use",
                        {.file = path, .key = "status", .value = st.get<std::string>()});
     }
+  }
+  // Schema 1 (the previous release, and a file without a schema) read in schema 2's layout: auto's
+  // candidates move from the top-level "selection" to diagnostics.selection.
+  if (model && (!j.contains("schema") || j["schema"] == 1)) {
+    if (j.contains("selection")) {
+      if (!j.contains("diagnostics") || !j["diagnostics"].is_object()) j["diagnostics"] = nlohmann::json::object();
+      j["diagnostics"]["selection"] = j["selection"];
+      j.erase("selection");
+    }
+    j["schema"] = 2;
   }
   return j;
 }

@@ -234,6 +234,7 @@ struct CompensationContext {
   std::vector<std::string>* files_read = nullptr;  // ScenarioOptions::files_read
   std::function<FrictionLaw()> law;
   double inertia = 0.0;
+  Axis axis = Axis::linear;  // how the plant moves (Plant::motion_axis): a model file must be of it
 };
 
 // The law with every parameter that carries newtons (forces, viscous coefficients, stiffnesses,
@@ -295,6 +296,14 @@ std::shared_ptr<const Compensator> read_compensation(const Section& s, const Com
     if (path.is_relative() && !ctx.base_dir.empty()) path = std::filesystem::path(ctx.base_dir) / path;
     if (ctx.files_read) ctx.files_read->push_back(path.string());
     const ModelFile m = detail::with_context(s.at("model"), [&] { return read_model_file(path.string()); });
+    // A model identified on the other kind of axis has its numbers in other units (N m, not N).
+    if (m.axis && *m.axis != ctx.axis) {
+      const auto name = [](Axis x) { return std::string(x == Axis::rotary ? "rotary" : "linear"); };
+      throw InputError(errc::scenario_value,
+                       s.at("model") + ": " + path.string() + ": axis: a " + name(*m.axis) + " model on a " +
+                           name(ctx.axis) + " plant; expected a model identified on a " + name(ctx.axis) + " axis",
+                       {.file = path.string(), .key = "axis", .value = name(*m.axis)});
+    }
     law = m.law;
     law_key = "model";
     if (observer && m.inertia && !values.count("inertia")) inertia = m.inertia;
@@ -750,6 +759,7 @@ std::shared_ptr<const Compensator> loop_compensation(const Section& s, const Pla
   if (!s.has("compensation")) return nullptr;
   CompensationContext with_inertia = cc;
   with_inertia.inertia = plant->inertia();
+  with_inertia.axis = plant->motion_axis();
   return read_compensation(Section(s.node("compensation"), s.at("compensation")), with_inertia);
 }
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A scenario's `compensation:` block that does not fit (scenario/scenario.hpp): exit 2 with a one-line
 # message naming the file and the key (a LuGre observer without a LuGre law, an unknown type, a
-# parameter of another type, an unknown key, a model file that is not there); nothing written.
+# parameter of another type, an unknown key, a model file that is not there, a model of the other
+# kind of axis); nothing written.
 # Usage: compensation_bad_input.sh PATH_TO_frictionlab SOURCE_DIR
 source "$(dirname "$0")/lib.sh"
 
@@ -35,6 +36,10 @@ check unknown_key 's/    gain: 0.01 .*/    gian: 0.01/' "$hunting" \
   "controller.compensation" "'gian'"
 check missing_model 's/    gain: 0.01 .*/    model: missing_model.json/' "$hunting" \
   "controller.compensation.model" "missing_model.json"
+# A model identified on a rotary axis (N m) compensating the linear rig (N): refused naming both.
+echo '{"schema": 2, "status": "ok", "axis": "rotary", "law": {"law": "lugre", "sigma0": 1e5, "sigma1": 316, "sigma2": 0.4, "Fc": 1, "Fs": 1.5, "vs": 0.001}}' > "$tmp/rotary.json"
+check rotary_model "s|    gain: 0.01 .*|    model: $tmp/rotary.json|" "$hunting" \
+  "controller.compensation.model" "rotary.json: axis: a rotary model on a linear plant"
 check bad_scale 's/    band: 1.0e-4 .*/    scale: -1/' "$circle" \
   "plant.compensation.scale" "-1" "> 0"
 echo "ok"

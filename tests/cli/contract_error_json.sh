@@ -20,7 +20,7 @@ text = open(sys.argv[1], encoding="utf-8").read()
 assert text.count("\n") == 1, text
 j = json.loads(text)
 e = j["error"]
-assert j["status"] == "error" and j["schema"] == 1, j
+assert j["status"] == "error" and j["schema"] == 2, j
 assert e["code"] == sys.argv[2], (e, sys.argv[2])
 assert e["message"] == j["message"] and e["message"], j
 assert eval(sys.argv[3]), (sys.argv[3], e)

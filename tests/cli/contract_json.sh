@@ -26,7 +26,7 @@ import json, sys
 text = open(sys.argv[1]).read()
 assert text.count("\n") == 1, "expected one line of JSON"
 j = json.loads(text)
-assert j["schema"] == 1 and j["status"] == "error", j
+assert j["schema"] == 2 and j["status"] == "error", j
 assert sys.argv[2] in j["message"], j["message"]
 assert isinstance(j.get("method"), str) and j["method"], j
 PY
@@ -75,10 +75,46 @@ expect_json "garbage.json" validate "$tmp/garbage.json" "$emps" --scenario "$sce
 echo '{"schema": 1, "status": "error", "message": "no excitation", "method": "idim"}' > "$tmp/failed.json"
 expect_json "the identification failed" validate "$tmp/failed.json" "$emps" --scenario "$scenario" --time t --position qm --input vir --gain gtau
 echo "${model/\"schema\": 1/\"schema\": 7}" > "$tmp/future.json"
-expect_json "future.json: schema: 7 is not a MODEL.json schema this frictionlab reads (1)" validate "$tmp/future.json" "$emps" --scenario "$scenario" --time t --position qm --input vir --gain gtau
+expect_json "future.json: schema: 7 is not a MODEL.json schema this frictionlab reads (1 or 2)" validate "$tmp/future.json" "$emps" --scenario "$scenario" --time t --position qm --input vir --gain gtau
 echo "${model/95.1/-3}" > "$tmp/negative.json"
 expect_json "negative.json: parameters.M" validate "$tmp/negative.json" "$emps" --scenario "$scenario" --time t --position qm --input vir --gain gtau
 grep -qF "$scenario" "$tmp/err.txt" && fail "a bad value of MODEL.json blamed on the scenario: $(cat "$tmp/err.txt")"
+# MODEL.json schema 2 and its strict reader. A schema-1 file of the previous release (auto's
+# candidates at the top level) is still read; so is the schema-2 file this build writes.
+cat > "$tmp/schema1.json" <<'EOF'
+{"schema": 1, "status": "ok", "message": "", "method": "auto", "model": "coulomb-viscous", "axis": "linear",
+ "parameters": {"M": {"value": 95.1, "std": 0.1, "unit": "kg"}, "Fc": {"value": 20, "std": 0.1, "unit": "N"},
+                "Fv": {"value": 200, "std": 1, "unit": "N s/m"}},
+ "law": {"law": "coulomb-viscous", "Fc": 20, "Fv": 200},
+ "fit": {"relative_error_percent": 4.1, "rmse": 1.2, "samples": 2480},
+ "diagnostics": {"selection": [{"candidate": 1, "chosen": 1}], "warnings": []},
+ "selection": [{"name": "idim coulomb-viscous", "status": "chosen", "heldout_error_percent": 4.2}]}
+EOF
+expect 0 "" export "$tmp/schema1.json" --c "$tmp/schema1.h"
+grep -q "20" "$tmp/schema1.h" || fail "the schema-1 model's Fc is not in the exported header"
+"$exe" identify idim "$emps" --time t --position qm --input vir --gain gtau --json "$tmp/schema2.json" > /dev/null
+/usr/bin/python3 - "$tmp/schema2.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["schema"] == 2 and j["axis"] == "linear", j
+assert "selection" not in j, "schema 2 has no top-level selection"
+assert j["diagnostics"]["covariance"].startswith("newey-west"), j["diagnostics"]
+assert all(p["std_ols"] is not None for p in j["parameters"].values()), j["parameters"]
+PY
+expect 0 "" export "$tmp/schema2.json" --c "$tmp/schema2.h"
+# Refused naming the key: a key given twice, a text where a number belongs, no status, an axis
+# that is neither linear nor rotary.
+echo '{"schema": 2, "status": "ok", "law": {"law": "coulomb", "Fc": 1, "Fc": 2}, "parameters": {"M": 1}}' > "$tmp/twice.json"
+expect_fail "twice.json: law.Fc: the key is given twice" export "$tmp/twice.json" --c "$tmp/x.h"
+echo "${model/\"value\": 95.1/\"value\": \"95.1\"}" > "$tmp/text.json"
+expect_fail "text.json: parameters.M.value: expected a number" export "$tmp/text.json" --c "$tmp/x.h"
+echo "${model/\"status\": \"ok\", /}" > "$tmp/nostatus.json"
+expect_fail "nostatus.json: missing 'status'" export "$tmp/nostatus.json" --c "$tmp/x.h"
+echo "${model/\"method\"/\"axis\": \"diagonal\", \"method\"}" > "$tmp/diagonal.json"
+expect_fail "diagonal.json: axis: expected \"linear\" or \"rotary\", got \"diagonal\"" export "$tmp/diagonal.json" --c "$tmp/x.h"
+# A rotary model on the EMPS scenario's linear plant: exit 2 naming both axes.
+echo "${model/\"method\"/\"axis\": \"rotary\", \"method\"}" > "$tmp/rotary.json"
+expect_json "rotary.json: axis: a rotary model on the linear plant" validate "$tmp/rotary.json" "$emps" --scenario "$scenario" --time t --position qm --input vir --gain gtau
 expect_json "adir" validate "$tmp/model.json" "$tmp/adir" --scenario "$scenario" --time t --position qm --input vir --gain gtau
 # identify lugre --static reads the model the same way.
 /usr/bin/python3 - "$tmp/lugre.csv" <<'PY'

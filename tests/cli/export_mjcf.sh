@@ -93,7 +93,7 @@ printf '{"law": "viscous", "Fv": 0.4}\n' > "$tmp/viscous.json"
 expect_fail "$tmp/viscous.json has no Fc (law viscous): --mjcf needs a Coulomb level" export "$tmp/viscous.json" --mjcf "$out" --inertia 1
 no_output "$out"
 expect_fail "$tmp/law.json has no parameters.M: --mjcf needs the axis' inertia (kg)" export "$tmp/law.json" --mjcf "$out"
-printf '{"law": {"law": "coulomb", "Fc": 1}, "parameters": {"M": {"value": -2}}}\n' > "$tmp/negm.json"
+printf '{"status": "ok", "law": {"law": "coulomb", "Fc": 1}, "parameters": {"M": {"value": -2}}}\n' > "$tmp/negm.json"
 expect_fail "$tmp/negm.json: parameters.M = -2 must be > 0 (kg)" export "$tmp/negm.json" --mjcf "$out"
 printf '{"law": "coulomb", "Fc": -1}\n' > "$tmp/negfc.json"
 expect_fail "Fc = -1 must be >= 0" export "$tmp/negfc.json" --mjcf "$out" --inertia 1

@@ -6,7 +6,7 @@
 source "$(dirname "$0")/lib.sh"
 
 /usr/bin/python3 "$src/examples/fleet_logs.py" "$tmp/fleet" > /dev/null
-sweep=(identify sweep --resample --model coulomb-viscous)
+sweep=(identify sweep --resample --model coulomb-viscous --axis rotary)
 
 # A folder: 8 good logs and 3 broken files, one row each, in name order; exit 0 (some ok).
 expect 0 "" "${sweep[@]}" "$tmp/fleet" --table "$tmp/t1.csv" --jobs 1

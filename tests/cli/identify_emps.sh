@@ -10,7 +10,7 @@ grep -q "M      =      95.1007" "$tmp/out.txt" || { echo "FAIL: text table"; cat
 /usr/bin/python3 - "$tmp/model.json" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
-assert j["schema"] == 1 and j["status"] == "ok" and j["method"] == "idim", j
+assert j["schema"] == 2 and j["status"] == "ok" and j["method"] == "idim", j
 p = j["parameters"]
 published = {"M": 95.1089, "Fv": 203.5034, "Fc": 20.3935, "offset": -3.1648}
 for name, value in published.items():

@@ -73,7 +73,7 @@ import json, sys
 o = json.load(open(sys.argv[1]))["options"]
 assert o["model"] == {"value": "coulomb-viscous", "unit": "", "given": True}, o["model"]
 assert o["min-duration"] == {"value": 0.5, "unit": "s", "given": False}, o["min-duration"]
-assert o["velocity-tolerance"]["unit"] == "rad/s", o  # sweep's default axis is rotary
+assert o["velocity-tolerance"]["unit"] == "m/s", o  # every method's default axis is linear
 assert o["min-speed"]["value"] is None, o["min-speed"]  # computed from the data
 PY
 

@@ -40,13 +40,13 @@ emps="$src/data/emps/DATA_EMPS.mat"
 "$exe" identify idim "$emps" --time t --position qm --input vir --gain gtau --plot "$out/identify_idim.png" \
   --overwrite > /dev/null
 check_figure "$out/identify_idim.png"
-"$exe" identify breakaway "$tmp/trap.csv" --kt 0.0141 --plot "$out/identify_breakaway.svg" --overwrite > /dev/null
+"$exe" identify breakaway "$tmp/trap.csv" --kt 0.0141 --axis rotary --plot "$out/identify_breakaway.svg" --overwrite > /dev/null
 check_figure "$out/identify_breakaway.svg"
 grep -q "N m" "$out/identify_breakaway.svg" || fail "breakaway figure lacks the torque unit"
 "$exe" simulate "$src/examples/virgala_motor_sweep.yaml" -o "$tmp/sweep.csv" > /dev/null 2>&1
-"$exe" identify sweep "$tmp/sweep.csv" --kt 0.039 --plot "$out/identify_sweep.pdf" --overwrite > /dev/null
+"$exe" identify sweep "$tmp/sweep.csv" --kt 0.039 --axis rotary --plot "$out/identify_sweep.pdf" --overwrite > /dev/null
 check_figure "$out/identify_sweep.pdf"
-"$exe" identify sweep "$tmp/sweep.csv" --kt 0.039 --plot "$out/identify_sweep.svg" --overwrite > /dev/null
+"$exe" identify sweep "$tmp/sweep.csv" --kt 0.039 --axis rotary --plot "$out/identify_sweep.svg" --overwrite > /dev/null
 check_figure "$out/identify_sweep.svg"
 grep -q "steady segments" "$out/identify_sweep.svg" || fail "sweep figure lacks its legend"
 "$exe" simulate "$src/examples/craig_pendulum_combined.yaml" -o "$tmp/pend.csv" > /dev/null 2>&1
@@ -75,7 +75,7 @@ awk '/series .mean \+- std per velocity bin/ {b = 1; next} /^# index/ {b = 0} b 
        n++; if ($3 > 0 && $3 < 1e9) ok++; if ($1 < 0) neg++; if ($1 > 0) pos++ }
      END { exit !(n >= 10 && ok == n && neg >= 5 && pos >= 5) }' "$out/report_idim/friction-map.svg.dat" ||
   fail "friction map: binned means without error bars on both sides of v = 0"
-"$exe" identify breakaway "$tmp/trap.csv" --kt 0.0141 --report "$out/report_breakaway" --overwrite > /dev/null
+"$exe" identify breakaway "$tmp/trap.csv" --kt 0.0141 --axis rotary --report "$out/report_breakaway" --overwrite > /dev/null
 map_check "$out/report_breakaway" "velocity (rad/s)" "applied torque (N m)" "breakaway Fs"
 
 # With --json -, stdout stays pure JSON (the figure note goes to stderr).
@@ -96,7 +96,7 @@ check_figure "$out/identify_decay.svg"
 # An existing figure is not replaced without --overwrite (exit 2, nothing changed).
 before=$(md5sum < "$out/identify_sweep.svg")
 set +e
-"$exe" identify sweep "$tmp/sweep.csv" --kt 0.039 --plot "$out/identify_sweep.svg" > /dev/null 2> "$tmp/err.txt"
+"$exe" identify sweep "$tmp/sweep.csv" --kt 0.039 --axis rotary --plot "$out/identify_sweep.svg" > /dev/null 2> "$tmp/err.txt"
 code=$?
 set -e
 [ "$code" -eq 2 ] || fail "existing --plot file: exit $code, expected 2"

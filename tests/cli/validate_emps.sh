@@ -29,7 +29,7 @@ import json, sys
 published = [(0.0138, 0.229, 8.60, 5.85), (0.0080, 0.479, 19.8, 8.94)]
 for path, pub, name in zip(sys.argv[1:], published, ["DATA_EMPS.mat", "DATA_EMPS_PULSES.mat"]):
     j = json.load(open(path))
-    assert j["schema"] == 1 and j["status"] == "ok" and j["method"] == "validate", j
+    assert j["schema"] == 2 and j["status"] == "ok" and j["method"] == "validate", j
     v = j["validation"]
     assert v["file"].endswith(name) and len(v["sha256"]) == 64, v
     e = v["relative_error_percent"]

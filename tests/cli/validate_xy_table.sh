@@ -62,7 +62,7 @@ grep -q "roundness" "$tmp/nominal.txt" || fail "text goes to stderr with --json 
 import json, sys
 exact, nominal = (json.load(open(p)) for p in sys.argv[1:])
 for j in (exact, nominal):
-    assert j["schema"] == 1 and j["status"] == "ok" and j["method"] == "validate", j
+    assert j["schema"] == 2 and j["status"] == "ok" and j["method"] == "validate", j
     v = j["validation"]
     assert v["file"].endswith("log.csv") and len(v["sha256"]) == 64, v
     keys = {f"{a}.{s}" for a in "xy" for s in ("position", "velocity", "acceleration", "force")}

@@ -61,7 +61,7 @@ TEST(Auto, PlateausBringTheSweepCandidatesAndTheAnswerIsPhysical) {
   constexpr double kRel = 0.05;
   const Result r = identify_auto(plateau_record(7));
   ASSERT_TRUE(r.ok()) << r.message;
-  const auto sel = nlohmann::json::parse(r.json_sections.at("selection"));
+  const auto sel = nlohmann::json::parse(r.json_sections.at("diagnostics.selection"));
   ASSERT_EQ(sel.size(), 5u) << sel.dump();  // three idim structures, two sweep laws
   int chosen = 0;
   for (const auto& c : sel) {
@@ -75,6 +75,64 @@ TEST(Auto, PlateausBringTheSweepCandidatesAndTheAnswerIsPhysical) {
   EXPECT_NEAR(r.value(r.find("Fv") ? "Fv" : "Fv_pos"), kFv, kRel * kFv);
   ASSERT_TRUE(r.law.has_value());
   EXPECT_EQ(r.diagnostics.lists.at("selection").size(), sel.size());
+}
+
+// The candidates' results are idim's own (identify_idim on the samples in motion, vs searched as
+// by --vs search), so the std auto reports is the Newey-West std that idim reports for the same
+// options, not an ordinary least-squares figure of a fit of its own.
+TEST(Auto, ChosenStdIsIdimsStdForTheSameOptions) {
+  const IdimData d = plateau_record(7);
+  const Result r = identify_auto(d);
+  ASSERT_TRUE(r.ok()) << r.message;
+  const auto sel = nlohmann::json::parse(r.json_sections.at("diagnostics.selection"));
+  std::string chosen;
+  for (const auto& c : sel)
+    if (c["status"] == "chosen") chosen = c["name"].get<std::string>();
+  ASSERT_EQ(chosen.rfind("idim ", 0), 0u) << "the record is meant to choose a trajectory candidate: " << chosen;
+  IdimOptions o = AutoOptions{}.idim;
+  o.terms = chosen == "idim coulomb-viscous" ? std::vector<std::string>{"inertia", "viscous", "coulomb", "offset"}
+            : chosen == "idim asymmetric"    ? std::vector<std::string>{"inertia", "asymmetric"}
+                                             : std::vector<std::string>{"inertia", "viscous", "coulomb", "offset", "stribeck"};
+  o.search_stribeck_vs = chosen == "idim stribeck (vs searched)";
+  o.exclude_below = r.diagnostics.numbers.at("exclude_below");  // auto's standstill speed, reported
+  const Result idim = identify_idim(d, o);
+  ASSERT_TRUE(idim.ok()) << idim.message;
+  EXPECT_EQ(r.diagnostics.texts.at("covariance"), idim.diagnostics.texts.at("covariance"));
+  EXPECT_EQ(r.fit.samples, idim.fit.samples);
+  for (const Parameter& p : idim.parameters) {
+    ASSERT_NE(r.find(p.name), nullptr) << p.name;
+    // The same computation on the same numbers: equal to the last bit.
+    EXPECT_EQ(r.find(p.name)->value, p.value) << p.name;
+    EXPECT_EQ(r.find(p.name)->std, p.std) << p.name;
+    ASSERT_TRUE(p.std_ols.has_value()) << p.name;
+    EXPECT_NE(p.std, *p.std_ols) << p.name << ": the std must be the Newey-West figure, not the ordinary one";
+  }
+}
+
+// idim's --vs search: the best of the 40-point log grid, refined by a golden-section search
+// between its neighbours. The refined vs fits at least as well as every grid value, lies off the
+// grid, and is nearer the truth (0.01 m/s) than the grid's quarter-decade step.
+TEST(IdimVsSearch, GoldenSectionRefinesTheGridsBest) {
+  const IdimData d = plateau_record(3);
+  IdimOptions o = AutoOptions{}.idim;
+  o.terms = {"inertia", "viscous", "coulomb", "offset", "stribeck"};
+  o.search_stribeck_vs = true;
+  const Result searched = identify_idim(d, o);
+  ASSERT_TRUE(searched.ok()) << searched.message;
+  const double vs = searched.diagnostics.numbers.at("stribeck_vs"), top = searched.diagnostics.numbers.at("max_speed");
+  o.search_stribeck_vs = false;
+  // Relative: the grid's values are products of pow, the refined one an exp of a log.
+  constexpr double kOffGrid = 1e-6;
+  for (int i = 0; i < 40; ++i) {
+    o.stribeck_vs = top * std::pow(10.0, -4.0 + (4.0 - std::log10(2.0)) * i / 39);
+    const Result at = identify_idim(d, o);
+    if (!at.ok()) continue;
+    EXPECT_LE(searched.fit.relative_error_percent, at.fit.relative_error_percent) << "grid vs " << o.stribeck_vs;
+    EXPECT_GT(std::abs(vs - o.stribeck_vs), kOffGrid * vs) << "the search stopped on the grid at " << vs;
+  }
+  // Half the grid's step (a factor 10^(3.7/39/2) = 1.12): the grid alone lands within it only by chance.
+  constexpr double kNearTruth = 0.12;
+  EXPECT_NEAR(vs, kVs, kNearTruth * kVs);
 }
 
 TEST(Auto, TooFewFoldsAreRefused) {

@@ -31,7 +31,9 @@ TEST(IdentifySimulated, BreakawayRecoversCraigMotorWithinHalfAPercent) {
   const fl::Trajectory tr = fl::simulate(sc);
   constexpr double Kt = 0.0141;
   fl::BreakawayData d{vec(tr.time), Kt * vec(tr.current), vec(tr.velocity), {}};
-  const fl::Result r = fl::identify_breakaway(d);
+  fl::BreakawayOptions rotary;
+  rotary.axis = fl::Axis::rotary;  // a motor; every method's default axis is linear
+  const fl::Result r = fl::identify_breakaway(d, rotary);
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_NEAR(param(r, "Fs"), 0.0015, kRelTol * 0.0015);
   EXPECT_NEAR(param(r, "Fc"), 0.0012, kRelTol * 0.0012);

@@ -173,7 +173,7 @@ TEST(IdimEmps, JsonFollowsTheSchema) {
   fl::Result r = fl::identify_idim(load("DATA_EMPS.mat"));
   r.validation = fl::cross_test(r, load("DATA_EMPS_PULSES.mat"));
   const auto j = nlohmann::json::parse(fl::to_json(r));
-  EXPECT_EQ(j["schema"], 1);
+  EXPECT_EQ(j["schema"], 2);
   EXPECT_EQ(j["status"], "ok");
   EXPECT_EQ(j["method"], "idim");
   EXPECT_EQ(j["model"], "coulomb-viscous");

@@ -124,7 +124,7 @@ def test_result_api(emps_result, tmp_path):
     with pytest.raises(ValueError, match="no parameter 'Fs'"):
         r.value("Fs")
     d = r.to_dict()
-    assert d["schema"] == 1 and d["parameters"]["M"]["unit"] == "kg" and d["parameters"]["M"]["value"] == r["M"]
+    assert d["schema"] == 2 and d["parameters"]["M"]["unit"] == "kg" and d["parameters"]["M"]["value"] == r["M"]
     assert json.loads(r.to_json(indent=None)) == d
     path = tmp_path / "model.json"
     r.save(path)
@@ -171,7 +171,7 @@ def trapezoid(example):
 def test_breakaway_on_craig_trapezoid(trapezoid):
     tr = trapezoid
     kt = 0.0141  # N m/A, examples/craig_motor_trapezoid.yaml
-    r = fl.identify_breakaway(tr["time"], kt * tr["current"], tr["velocity"])
+    r = fl.identify_breakaway(tr["time"], kt * tr["current"], tr["velocity"], axis="rotary")
     assert r.ok and r.method == "breakaway"
     assert r["Fs"] == pytest.approx(0.0015, rel=SIM_REL_TOL)
     assert r["Fc"] == pytest.approx(0.0012, rel=SIM_REL_TOL)
@@ -179,7 +179,7 @@ def test_breakaway_on_craig_trapezoid(trapezoid):
     assert r["M"] == pytest.approx(1.06e-6, rel=SIM_REL_TOL)
     assert r.units["Fv"] == "N m s/rad"
     assert set(r.diagnostics.groups["readoff"]) >= {"Fs", "Fc", "Fv"}
-    fixed = fl.identify_breakaway(tr["time"], kt * tr["current"], tr["velocity"], inertia=1.06e-6)
+    fixed = fl.identify_breakaway(tr["time"], kt * tr["current"], tr["velocity"], inertia=1.06e-6, axis="rotary")
     assert "M" not in fixed and fixed["Fc"] == pytest.approx(0.0012, rel=SIM_REL_TOL)
 
 
@@ -202,7 +202,7 @@ VIRGALA_LAW = {"Fc": 0.002, "Fs": 0.003, "vs": 5.0, "delta": 2.0, "Fv": 1e-5}  #
 def test_sweep_on_virgala_motor(virgala):
     tr = virgala
     km = 0.039  # N m/A, examples/virgala_motor_sweep.yaml
-    r = fl.identify_sweep(tr["time"], km * tr["current"], tr["velocity"])
+    r = fl.identify_sweep(tr["time"], km * tr["current"], tr["velocity"], axis="rotary")
     assert r.ok and r.method == "sweep" and r.model == "stribeck"
     pts = r.diagnostics.lists["points"]
     assert len(pts) == 15

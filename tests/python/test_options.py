@@ -65,7 +65,7 @@ def test_new_keywords_need_no_warning():
     t, f, v = sweep_record()
     with warnings.catch_warnings():
         warnings.simplefilter("error", DeprecationWarning)
-        r = fl.identify_sweep(t, f, v, model="coulomb-viscous", min_duration=1.0, min_speed=0.1)
+        r = fl.identify_sweep(t, f, v, model="coulomb-viscous", min_duration=1.0, min_speed=0.1, axis="rotary")
     assert r.ok, r.message
     options = json.loads(r.to_json())["options"]
     assert options["min-duration"] == {"value": 1.0, "unit": "s", "given": True}

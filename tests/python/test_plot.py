@@ -24,7 +24,7 @@ def close_figures():
 
 def test_sweep_plot(tmp_path, example):
     tr = fl.simulate(example("virgala_motor_sweep"))
-    r = fl.identify_sweep(tr["time"], 0.039 * tr["current"], tr["velocity"], model="coulomb-viscous")
+    r = fl.identify_sweep(tr["time"], 0.039 * tr["current"], tr["velocity"], model="coulomb-viscous", axis="rotary")
     fig = fl.plot.sweep(r, file=tmp_path / "sweep.png")
     check_png(tmp_path / "sweep.png")
     assert fig.axes[0].get_xlabel() == "velocity (rad/s)" and fig.axes[0].get_ylabel() == "friction (N m)"

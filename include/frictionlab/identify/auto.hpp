@@ -64,8 +64,11 @@ AutoOptions make_auto_options(const OptionValues& values);
 /// auto; diagnostics.texts "experiment" (what the record holds), "choice" (the candidate and why),
 /// "candidate N" (each one: held-out and training error, status, the refusal reason);
 /// diagnostics.lists["selection"] one record per candidate (candidate, heldout_error_percent,
-/// training_error_percent, chosen, refused, block_N_percent); json_sections["selection"] the same
-/// with names and reasons (selection_json); with options.heldout, `validation` holds the chosen
+/// training_error_percent, chosen, refused, block_N_percent); json_sections["diagnostics.selection"]
+/// the same with names and reasons (selection_json; MODEL.json diagnostics.selection, schema 2). An
+/// idim candidate's result is identify_idim's own on the samples in motion (exclude_below at the
+/// standstill speed, reported; vs searched as by search_stribeck_vs), so its std is idim's
+/// Newey-West std; with options.heldout, `validation` holds the chosen
 /// candidate's error on the second record (samples in motion). Status error naming each candidate's refusal when
 /// none can be chosen.
 /// \throws std::invalid_argument for bad data, as identify_idim (naming the file), or folds < 2.

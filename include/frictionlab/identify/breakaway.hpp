@@ -36,7 +36,7 @@ struct BreakawayOptions {
   /// Samples skipped at each end of a sliding interval in the dynamic fit: the velocity has a
   /// kink at a stick/slip switch, where a central difference is wrong. Default 2.
   int edge_samples = 2;
-  Axis axis = Axis::rotary;  ///< units of the report; a motor is rotary
+  Axis axis = Axis::linear;  ///< units of the report. Default linear, as every method (Axis::rotary for a motor)
 };
 
 /// The options of a breakaway run from the values of its option table

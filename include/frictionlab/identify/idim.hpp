@@ -168,8 +168,9 @@ struct IdimOptions {
   int decimation = 10;
   /// Stribeck velocity (m/s or rad/s, > 0) and exponent of the "stribeck" term. Defaults 0.01, 2.
   double stribeck_vs = 0.01;
-  /// Search the Stribeck velocity instead: the value (on a log grid from 1e-4 to 0.5 of the top
-  /// speed) that minimises the identification residual; reported as diagnostics "stribeck_vs".
+  /// Search the Stribeck velocity instead: the value that minimises the identification residual,
+  /// the best of a 40-point log grid from 1e-4 to 0.5 of the top speed refined by a golden-section
+  /// search between its neighbours (m/s or rad/s); reported as diagnostics "stribeck_vs".
   bool search_stribeck_vs = false;
   double stribeck_delta = 2.0;
   /// Period P of the "ripple" term, m or rad (> 0 when the term is used). Default 0 (none).

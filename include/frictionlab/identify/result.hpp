@@ -96,7 +96,8 @@ struct Result {
   /// "position", "peak_time", "peak_position". Series that share a prefix share a length.
   std::map<std::string, std::vector<double>> series;
   /// Figures that are not parameters, as JSON text by key, each written under its key at the top
-  /// level of to_json: `frictionlab analyze`'s "result" (the envelope or stick-slip figures).
+  /// level of to_json: `frictionlab analyze`'s "result" (the envelope or stick-slip figures); a key
+  /// "diagnostics.NAME" is written as NAME under "diagnostics" (auto's "diagnostics.selection").
   std::map<std::string, std::string> json_sections;
 
   bool ok() const { return status == ResultStatus::ok; }
@@ -106,14 +107,14 @@ struct Result {
   double value(const std::string& name) const;
 };
 
-/// JSON text of a result (schema 1, docs/contract.md):
-/// {"schema":1,"status":"ok"|"error","message":...,"method":...,"model":...,
+/// JSON text of a result (MODEL.json schema 2, docs/contract.md):
+/// {"schema":2,"status":"ok"|"error","message":...,"method":...,"model":...,
 ///  "data":{"file":...,"sha256":...},"axis":"linear"|"rotary","parameters":{"Fc":{"value":v,"std":s,"unit":"N"},...},
 ///  "fit":{"relative_error_percent":e,"rmse":r,"samples":n,"quantity":...,"unit":...} (the last two when set),"validation":{...} (only when set),
 ///  "diagnostics":{"condition_number":c,"warnings":[...],"undetermined":[...],"at_bound":[...],
 ///  "correlation":{"names":[...],"matrix":[[...]]} (only when computed), ...numbers, ...groups,
 ///  ...lists, ...texts}}. Non-finite numbers are null.
-/// Then each of json_sections under its key. `indent` < 0 gives one line. (Returns text so
+/// Then each of json_sections under its key (under diagnostics for "diagnostics.NAME"). `indent` < 0 gives one line. (Returns text so
 /// nlohmann_json stays a private dependency.)
 /// \throws std::invalid_argument naming the key when a json_sections text is not valid JSON.
 std::string to_json(const Result& result, int indent = 2);

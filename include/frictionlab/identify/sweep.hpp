@@ -67,7 +67,8 @@ struct SweepOptions {
   std::vector<TimeWindow> windows;
   /// Fewer segments than this is an error status. Default: the law's parameter count + 1.
   int min_segments = -1;
-  Axis axis = Axis::rotary;
+  /// Units of the report. Default linear, as every method (Axis::rotary for a motor).
+  Axis axis = Axis::linear;
 };
 
 /// The options of a sweep from the values of its option table (method_info(MethodId::sweep),

@@ -41,11 +41,17 @@ FrictionLaw law_from_json(const nlohmann::json& j, const std::string& where);
 /// on a key given twice in one mapping (naming the key and its line).
 FrictionLaw load_law(const std::string& path);
 
-/// Reads a JSON law file or the MODEL.json of `frictionlab identify --json`, strictly: the whole
-/// file must be one JSON object (text after it is refused, with its line and column), and a model
-/// whose "status" is not "ok" is refused with its message (an identification that gave no answer
-/// has no law to use). The one reader of model files (identify lugre --static, validate, Python's
-/// load_law). \throws std::invalid_argument naming the file.
+/// Reads a JSON law file or the MODEL.json of `frictionlab identify --json`, strictly
+/// (docs/contract.md, "Reading a MODEL.json"): the whole file must be one JSON object (text after
+/// it is refused, with its line and column); a key given twice in one object is refused naming
+/// it; a MODEL.json (a file with a schema, status, method, parameters or a law object) must name
+/// schema 1 or 2 (none reads as 1) and carry a "status"; a model whose status is not "ok" is
+/// refused with its message (an identification that gave no answer has no law to use); its "axis"
+/// must be "linear" or "rotary", its parameters' value, std, std_ols and its fit's figures numbers
+/// (or null), each refusal naming the key. A schema-1 file is returned in schema 2's layout
+/// ("schema": 2; a top-level "selection" moved to diagnostics.selection). The one reader of model
+/// files (identify lugre --static, validate, simulate's model:, export, plan, Python's load_law).
+/// \throws std::invalid_argument (InputError) naming the file and, for a field, the key.
 nlohmann::json read_model_json(const std::string& path);
 
 /// The identified inertia parameters.M of a MODEL.json (kg or kg m^2), as `identify --json` writes

@@ -28,5 +28,5 @@ def identify_auto(time, force, position=None, velocity=None, *, axis="linear", s
     r = _core._identify_auto(time, force, position, velocity, values, axis, file, sha, inputs.get("validate"))
     r._record_options(values)
     r.inputs = {"time": time, "force": force, "position": position, "velocity": velocity}
-    r.selection = json.loads(r.to_json()).get("selection", [])
+    r.selection = json.loads(r.to_json()).get("diagnostics", {}).get("selection", [])
     return r

@@ -6,12 +6,12 @@ __all__ = ["identify_breakaway"]
 
 
 @_with_options_doc("breakaway")
-def identify_breakaway(time, force, velocity, *, axis="rotary", source=None, **options):
+def identify_breakaway(time, force, velocity, *, axis="linear", source=None, **options):
     """Torque-mode trapezoid experiment (slow ramp up, hold, ramp down): Fs, Fc, Fv (and M).
 
     Arrays (1-D, equal length, regular time): ``time`` (s), ``force`` (drive torque, N m, or
     force, N: Kt times current), ``velocity`` (rad/s or m/s).
-    ``axis`` ("rotary" default) picks the units; ``source`` (a Data from load() or a path) names
+    ``axis`` ("linear" default, as every method) picks the units; ``source`` (a Data from load() or a path) names
     the data in the result. ``diagnostics.groups['readoff']`` holds the lecture's read-offs.
     ``load`` (an option, N m or N, length N): the load the contact transmits; then
     mu_load_coulomb and mu_load_static (dimensionless) are fitted, Fs and Fc are the levels at

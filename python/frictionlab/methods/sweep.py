@@ -25,14 +25,14 @@ def _sweep_options(function, axis, options):
 
 
 @_with_options_doc("sweep")
-def identify_sweep(time, force, velocity, *, axis="rotary", source=None, **options):
+def identify_sweep(time, force, velocity, *, axis="linear", source=None, **options):
     """Constant-velocity tests: one friction-velocity point per steady segment, then a fitted law.
 
     Arrays (1-D, equal length, regular time): ``time`` (s), ``force`` (drive torque N m or force
     N), ``velocity`` (rad/s or m/s); ``reference`` (an option) the commanded velocity.
-    ``axis`` ("rotary" default) picks the units. ``load`` (an option, N m or N, length N): the
-    load the contact transmits; mu_load (dimensionless) is then fitted from the points' mean
-    |load| and the law's levels are those at zero load.
+    ``axis`` ("linear" default, as every method) picks the units. ``load`` (an option, N or N m,
+    length N): the load the contact transmits; mu_load (dimensionless) is then fitted from the
+    points' mean |load| and the law's levels are those at zero load.
     The points are in ``result.diagnostics.lists['points']``; the fitted law in ``result.law``.
     """
     values, o, load = _sweep_options("identify_sweep", axis, options)
@@ -43,7 +43,7 @@ def identify_sweep(time, force, velocity, *, axis="rotary", source=None, **optio
     return r
 
 
-def sweep_points(time, force, velocity, *, axis="rotary", source=None, **options):
+def sweep_points(time, force, velocity, *, axis="linear", source=None, **options):
     """The steady-segment points of a sweep, as a dict of numpy arrays: ``velocity``,
     ``velocity_std`` (rad/s or m/s), ``force``, ``force_std`` (N m or N), ``t_begin``,
     ``t_end`` (s), ``samples``; with the option ``load``, ``load`` (mean |load|, N m or N).
