@@ -116,8 +116,8 @@ def main():
                               "Each function also takes `ax=` (draws into your Axes and returns them).", ""]
                     python_started = True
                 make_figures.redraw_python(fig, dest, GALLERY_WIDTH)
-            lines += [f"### {fig.name}", "", WHAT.get(fig.name, ""), "", f"```sh\n{fig.command}\n```" if fig.kind ==
-                      "gnuplot" else f"```python\n{fig.command}\n```", "",
+            lines += [f"### {fig.name}", "", WHAT.get(fig.name, ""), "", f"```shell\n{fig.command}\n```" if fig.kind ==
+                      "gnuplot" else f"```py\n{fig.command}\n```", "",
                       f"![{fig.name}](gallery/{name}.png)", ""]
     for png in images.glob("*.png"):
         shrink(png)

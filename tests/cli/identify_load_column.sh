@@ -7,28 +7,13 @@
 # coefficients; a missing load column names --load and lists the file's columns, exit 2.
 source "$(dirname "$0")/lib.sh"
 cd "$tmp"
+/usr/bin/python3 "$src/tests/rigs/load_sweep_log.py" sweep.csv --seed 7
 /usr/bin/python3 - <<'PY'
 import numpy as np
 rng = np.random.default_rng(7)
-# Sweep: 1.5 s per level after 0.3 s at rest, first-order speed steps (tau 50 ms), 1 kHz.
-t, v, f, l = [], [], [], []
-vel, dt = 0.0, 1e-3
-for load in (10.0, 40.0, 80.0):
-    for sgn in (1, -1):
-        for speed in (0.5, 1.0, 2.0, 4.0):
-            for ref, dur in ((0.0, 0.3), (sgn * speed, 1.5)):
-                for _ in range(int(dur / dt)):
-                    a = (ref - vel) / 0.05
-                    vel += dt * a
-                    if ref == 0.0 and abs(vel) < 1e-9:
-                        vel = 0.0
-                    fr = 0.0 if vel == 0.0 else np.sign(vel) * (0.1 + 0.01 * load) + 0.002 * vel
-                    v.append(vel); f.append(fr + 0.005 * a + 2e-3 * rng.standard_normal()); l.append(load + 0.3 * rng.standard_normal())
-t = dt * np.arange(len(v))
-np.savetxt("sweep.csv", np.column_stack([t, v, f, l]), delimiter=",", header="time,velocity,torque,load", comments="", fmt="%.9g")
 # Breakaway: one trapezoid per load (10 integration steps per 1 ms sample, explicit stick rule).
 t, v, f, l = [], [], [], []
-vel = 0.0
+vel, dt = 0.0, 1e-3
 for load in (5.0, 20.0, 40.0, 60.0):
     peak = 1.5 * (0.3 + 0.01 * load) + 0.2
     for k in range(4500):

@@ -27,7 +27,7 @@ SKIP_PAGES = {"options.md"}
 # Blocks whose inputs the page does not make yet (each names files of the reader's own): listed
 # here by page and a line of the block, printed as PENDING on every run, to be made runnable.
 PENDING = {
-    ("identify.md", "build/app/frictionlab identify breakaway trapezoid.csv --kt 0.0141"),
+    ("identify.md", "build/app/frictionlab identify breakaway trapezoid.csv --kt 0.0141 --axis rotary"),
     ("identify.md", "build/app/frictionlab identify idim axis.csv --current current --kt 0.5 \\"),
     ("identify.md", "build/app/frictionlab validate x=model_x.json,y=model_y.json circle_log.csv --scenario examples/xy_circle.yaml \\"),
 }

@@ -65,12 +65,12 @@ def _cli_jobs(src):
                               f"--plot analyze-map-1d.svg", ["analyze-map-1d.svg"]),
         (0, "analyze-map-2d", f"analyze map {ex}/map_spring_block.yaml --vary plant.V0=log:0.004:0.2:6 "
                               f"--vary plant.c=0:8:4 -o map2.csv --plot analyze-map-2d.svg", ["analyze-map-2d.svg"]),
-        (0, "identify-drift", "identify sweep --resample --model coulomb-viscous fleet/axis3_2026-11-0?.csv "
+        (0, "identify-drift", "identify sweep --resample --axis rotary --model coulomb-viscous fleet/axis3_2026-11-0?.csv "
                               "--date-from name --table fleet.csv --drift drift.csv --drift-threshold 3 "
                               "--plot identify-drift.svg", ["identify-drift.svg"]),
-        (1, "identify-breakaway", "identify breakaway trap.csv --kt 0.0141 --plot identify-breakaway.svg",
+        (1, "identify-breakaway", "identify breakaway trap.csv --kt 0.0141 --axis rotary --plot identify-breakaway.svg",
          ["identify-breakaway.svg"]),
-        (1, "identify-sweep", "identify sweep sweep.csv --kt 0.039 --plot identify-sweep.svg", ["identify-sweep.svg"]),
+        (1, "identify-sweep", "identify sweep sweep.csv --kt 0.039 --axis rotary --plot identify-sweep.svg", ["identify-sweep.svg"]),
         (1, "identify-decay", "identify decay pend.csv --stiffness 9.81 --pendulum --axis rotary "
                               "--plot identify-decay.svg", ["identify-decay.svg"]),
         (1, "analyze-envelope", "analyze envelope pend.csv --plot analyze-envelope.svg", ["analyze-envelope.svg"]),
@@ -144,7 +144,7 @@ def make_python(src, out, png_width=None, records=None):
     rec = (lambda csv, yaml: fl.load(str(pathlib.Path(records) / csv))) if records else \
         (lambda csv, yaml: fl.simulate(str(ex / yaml)))
     sw = rec("sweep.csv", "virgala_motor_sweep.yaml")
-    r = fl.identify_sweep(sw["time"], 0.039 * sw["current"], sw["velocity"], model="coulomb-viscous")
+    r = fl.identify_sweep(sw["time"], 0.039 * sw["current"], sw["velocity"], model="coulomb-viscous", axis="rotary")
     save("plot.sweep", fl.plot.sweep(r), "fl.plot.sweep(fl.identify_sweep(...))")
     emps = fl.load(str(pathlib.Path(src) / "data/emps/DATA_EMPS.mat"))
     ri = fl.identify_idim(emps["t"], emps["gtau"] * emps["vir"], position=emps["qm"], source=emps)
@@ -153,7 +153,7 @@ def make_python(src, out, png_width=None, records=None):
     save("plot.simulation", fl.plot.simulation(pend), "fl.plot.simulation(fl.simulate(...))")
     save("plot.decay", fl.plot.decay(pend), "fl.plot.decay(fl.simulate(...))")
     tr = rec("trap.csv", "craig_motor_trapezoid.yaml")
-    rb = fl.identify_breakaway(tr["time"], 0.0141 * tr["current"], tr["velocity"])
+    rb = fl.identify_breakaway(tr["time"], 0.0141 * tr["current"], tr["velocity"], axis="rotary")
     save("plot.breakaway", fl.plot.breakaway(rb), "fl.plot.breakaway(fl.identify_breakaway(...))")
     c = rec("circle.csv", "xy_circle.yaml")
     rc = fl.analyze_contour(c["time"], c["x.position"], c["y.position"], c["x.reference"], c["y.reference"])

@@ -23,7 +23,7 @@ import fleet_logs  # noqa: E402
 FC_REL_TOL = 0.03
 # Fv likewise within 5 % (it rests on the spread of speeds, 0.2 to 4 rad/s).
 FV_REL_TOL = 0.05
-SWEEP = dict(model="coulomb-viscous", load={"resample": True}, date_from="name")
+SWEEP = dict(model="coulomb-viscous", axis="rotary", load={"resample": True}, date_from="name")  # motors: N m
 
 
 @pytest.fixture(scope="module")

@@ -1,11 +1,16 @@
 """Load, temperature and position effects on a friction law: the conditioned calls, the typed
 errors of bad parameters, and a scenario run with a load and a thermal model."""
 import math
+import os
+import sys
 
 import numpy as np
 import pytest
 
 import frictionlab as fl
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "rigs"))
+from load_sweep_log import load_sweep  # noqa: E402  (the rig made with numpy alone)
 
 STRIBECK = {"law": "stribeck", "Fc": 1.0, "Fs": 1.5, "vs": 0.01, "Fv": 0.4}
 
@@ -96,30 +101,8 @@ def test_c_export_refuses_a_law_with_effects_instead_of_dropping_them():
     assert fl.export_c(STRIBECK).startswith("/* Friction law 'stribeck'")  # the plain law still exports
 
 
-def _load_sweep(loads, seed):
-    """Steady speeds (4 per direction) at each load, 0.3 s at rest before each 1.5 s level, 1 kHz;
-    friction 0.1 + 0.01 |load| N m while sliding plus 0.002 N m s/rad; made here with numpy."""
-    rng = np.random.default_rng(seed)
-    v, f, load = [], [], []
-    vel, dt = 0.0, 1e-3
-    for L in loads:
-        for sgn in (1, -1):
-            for speed in (0.5, 1.0, 2.0, 4.0):
-                for ref, dur in ((0.0, 0.3), (sgn * speed, 1.5)):
-                    for _ in range(int(dur / dt)):
-                        a = (ref - vel) / 0.05
-                        vel += dt * a
-                        if ref == 0.0 and abs(vel) < 1e-9:
-                            vel = 0.0
-                        fr = 0.0 if vel == 0.0 else math.copysign(0.1 + 0.01 * L, vel) + 0.002 * vel
-                        v.append(vel)
-                        f.append(fr + 0.005 * a + 2e-3 * rng.standard_normal())
-                        load.append(L + 0.3 * rng.standard_normal())
-    return dt * np.arange(len(v)), np.array(f), np.array(v), np.array(load)
-
-
 def test_sweep_fits_mu_load_from_a_load_array():
-    t, f, v, load = _load_sweep((10.0, 40.0, 80.0), 3)
+    t, f, v, load = load_sweep((10.0, 40.0, 80.0), 3)
     r = fl.identify_sweep(t, f, v, model="coulomb-viscous", load=load)
     assert r.ok, r.message
     # 24 levels of 1.2 s each with 2 mN m of noise: within 1 %.

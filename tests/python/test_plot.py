@@ -108,7 +108,7 @@ def legend_outside(ax):
 
 def test_ax_keyword_every_function(example, emps, tmp_path):
     sw = fl.simulate(example("virgala_motor_sweep"))
-    r = fl.identify_sweep(sw["time"], 0.039 * sw["current"], sw["velocity"], model="coulomb-viscous")
+    r = fl.identify_sweep(sw["time"], 0.039 * sw["current"], sw["velocity"], model="coulomb-viscous", axis="rotary")
     fig, ax = plt.subplots()
     check_drawn_into(ax, fl.plot.sweep(r, ax=ax))
     legend_outside(ax)
@@ -133,7 +133,7 @@ def test_ax_keyword_every_function(example, emps, tmp_path):
 
 def test_breakaway_plot(example):
     tr = fl.simulate(example("craig_motor_trapezoid"))
-    r = fl.identify_breakaway(tr["time"], 0.0141 * tr["current"], tr["velocity"])
+    r = fl.identify_breakaway(tr["time"], 0.0141 * tr["current"], tr["velocity"], axis="rotary")
     fig, ax = plt.subplots()
     check_drawn_into(ax, fl.plot.breakaway(r, ax=ax))
     assert ax.get_ylabel() == "applied torque (N m)"
