@@ -2,8 +2,10 @@
 #include <pybind11/stl.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <charconv>
 #include <sstream>
+#include <vector>
 
 #include "common.hpp"
 #include "frictionlab/control/compensation_spec.hpp"
@@ -17,24 +19,39 @@ namespace frictionlab::python {
 
 namespace {
 
+// Deeper nesting than this is refused (the scenario reader's own limit); a real scenario is a few
+// levels deep. With the check of a container that holds itself, the conversion cannot recurse
+// without end and crash the interpreter.
+constexpr std::size_t kMaxDepth = 100;
+
 // A Python value (dict, list, tuple, numpy array, number, str, bool, None) as a YAML node, so
-// that a dict goes through the same reader, checks and messages as a scenario file.
-YAML::Node to_yaml(const py::handle& x, const std::string& where) {
+// that a dict goes through the same reader, checks and messages as a scenario file. `open` holds
+// the containers being converted, outermost first.
+YAML::Node to_yaml(const py::handle& x, const std::string& where, std::vector<const PyObject*>& open) {
   if (x.is_none()) return YAML::Node(YAML::NodeType::Null);
   if (py::isinstance<py::bool_>(x)) return YAML::Node(py::cast<bool>(x) ? "true" : "false");
   if (py::isinstance<py::str>(x)) return YAML::Node(py::cast<std::string>(x));
-  if (py::isinstance<py::dict>(x)) {
-    YAML::Node n(YAML::NodeType::Map);
-    for (auto item : py::reinterpret_borrow<py::dict>(x)) {
-      const std::string key = py::cast<std::string>(py::str(item.first));
-      n[key] = to_yaml(item.second, where + ": " + key);
+  const bool is_dict = py::isinstance<py::dict>(x);
+  const bool is_sequence = py::isinstance<py::list>(x) || py::isinstance<py::tuple>(x) ||
+                           (py::isinstance<py::array>(x) && py::cast<py::array>(x).ndim() > 0);
+  if (is_dict || is_sequence) {
+    if (std::find(open.begin(), open.end(), x.ptr()) != open.end())
+      throw std::invalid_argument(where + ": the " + (is_dict ? "dict" : "list") +
+                                  " contains itself; expected a tree of dicts, lists and values");
+    if (open.size() >= kMaxDepth)
+      throw std::invalid_argument(where + ": nested more than " + std::to_string(kMaxDepth) +
+                                  " levels deep; expected a scenario of a few levels");
+    open.push_back(x.ptr());
+    YAML::Node n(is_dict ? YAML::NodeType::Map : YAML::NodeType::Sequence);
+    if (is_dict) {
+      for (auto item : py::reinterpret_borrow<py::dict>(x)) {
+        const std::string key = py::cast<std::string>(py::str(item.first));
+        n[key] = to_yaml(item.second, where + ": " + key, open);
+      }
+    } else {
+      for (auto item : py::iter(x)) n.push_back(to_yaml(item, where, open));
     }
-    return n;
-  }
-  if (py::isinstance<py::list>(x) || py::isinstance<py::tuple>(x) ||
-      (py::isinstance<py::array>(x) && py::cast<py::array>(x).ndim() > 0)) {
-    YAML::Node n(YAML::NodeType::Sequence);
-    for (auto item : py::iter(x)) n.push_back(to_yaml(item, where));
+    open.pop_back();
     return n;
   }
   try {
@@ -46,6 +63,11 @@ YAML::Node to_yaml(const py::handle& x, const std::string& where) {
     throw std::invalid_argument(where + ": expected a number, text, list or dict, got " +
                                 py::cast<std::string>(py::str(py::type::of(x).attr("__name__"))));
   }
+}
+
+YAML::Node to_yaml(const py::handle& x, const std::string& where) {
+  std::vector<const PyObject*> open;
+  return to_yaml(x, where, open);
 }
 
 // What the scenario's loop compensates with: the type, per axis on an xy-table; None without one.

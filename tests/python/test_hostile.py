@@ -249,3 +249,25 @@ def test_law_parameter_that_is_text_is_not_missing():
         fl.FrictionLaw({"law": "coulomb", "Fc": float("nan")})
     with pytest.raises(ValueError, match=r"law parameter 'velocity' has NaN at index 1"):
         fl.FrictionLaw({"law": "table", "velocity": [0.1, float("nan")], "force": [1.0, 2.0]})
+
+
+def test_a_scenario_dict_that_contains_itself_or_nests_too_deep_is_refused():
+    """Used to end the interpreter with a segmentation fault (unbounded recursion in the dict's
+    conversion); now a ValueError naming where, for both Scenario and simulate."""
+    d = {"plant": {"type": "axis", "M": 1.0}, "law": {"law": "coulomb", "Fc": 1.0}}
+    d["plant"]["self"] = d
+    for call in (fl.Scenario, fl.simulate):
+        with pytest.raises(ValueError, match="plant: self: the dict contains itself"):
+            call(d)
+    deep = {"plant": {"type": "axis", "M": 1.0}, "law": {"law": "coulomb", "Fc": 1.0}}
+    node = deep
+    for _ in range(10000):
+        node["x"] = {}
+        node = node["x"]
+    for call in (fl.Scenario, fl.simulate):
+        with pytest.raises(ValueError, match="nested more than 100 levels deep"):
+            call(deep)
+    ring = [1.0]
+    ring.append(ring)
+    with pytest.raises(ValueError, match="the list contains itself"):
+        fl.Scenario({"plant": {"type": "axis", "M": 1.0, "v": ring}, "law": {"law": "coulomb", "Fc": 1.0}})
