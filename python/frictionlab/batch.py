@@ -622,7 +622,10 @@ def drift(table, parameters=None, *, threshold=1.0):
     A parameter without a std (null) is never flagged. Error rows are left out.
     Returns a :class:`Table` of DRIFT_COLUMNS (kind "drift").
     """
-    rows = table.rows if isinstance(table, Table) else list(table)
+    rows = table.rows if isinstance(table, Table) else list(table) if isinstance(table, (list, tuple)) else None
+    if rows is None or not all(isinstance(r, dict) for r in rows):
+        raise TypeError(f"drift: table: expected a Table of identify() or a list of row dicts, got "
+                        f"{type(table).__name__}")
     samples = []
     for r in rows:
         if r.get("status", "ok") != "ok":

@@ -14,6 +14,33 @@ namespace frictionlab::python {
 
 namespace {
 
+// The shape of an array argument for messages: "(3,)", "(2, 4)", "()" for a scalar.
+std::string shape_text(const py::array& a) {
+  std::string out = "(";
+  for (py::ssize_t d = 0; d < a.ndim(); ++d) out += (d ? ", " : "") + std::to_string(a.shape(d));
+  return out + (a.ndim() == 1 ? ",)" : ")");
+}
+
+// numpy's broadcasting rule, checked before py::vectorize, whose own error is a bare RuntimeError:
+// trailing dimensions equal or 1. \throws std::invalid_argument naming the function and the shapes.
+void check_broadcast(const std::string& function, std::initializer_list<std::pair<const char*, const py::array*>> arrays) {
+  std::vector<py::ssize_t> shape;
+  std::string named;
+  for (const auto& [name, a] : arrays) {
+    named += std::string(named.empty() ? "" : " and ") + name + " " + shape_text(*a);
+    const auto nd = static_cast<std::size_t>(a->ndim());
+    if (nd > shape.size()) shape.insert(shape.begin(), nd - shape.size(), 1);
+    for (std::size_t k = 0; k < nd; ++k) {
+      py::ssize_t& s = shape[shape.size() - nd + k];
+      const py::ssize_t n = a->shape(static_cast<py::ssize_t>(k));
+      if (s == 1) s = n;
+      else if (n != 1 && n != s)
+        throw std::invalid_argument(function + ": the shapes of " + named +
+                                    " do not match; expected equal shapes or a scalar (numpy broadcasting)");
+    }
+  }
+}
+
 // A law from a Python dict {"law": name, param: value, ...} (the same form as the YAML files).
 FrictionLaw law_from_dict(const py::dict& d) {
   LawSpec spec;
@@ -141,6 +168,7 @@ Raises ValueError naming the law and parameter for an unknown name, a missing or
         any.any_shape = true;
         const auto va = check_array(v, "FrictionLaw.force", "v", any);
         const auto aa = check_array(applied, "FrictionLaw.force", "applied", any);
+        check_broadcast("FrictionLaw.force", {{"v", &va}, {"applied", &aa}});
         return py::vectorize([&l](double x, double a) { return l.force(x, a); })(va, aa);
       }, py::arg("v"), py::arg("applied"),
            "Static law force with stiction (N or N m): at v == 0 it balances `applied` up to the breakaway level.")
@@ -209,6 +237,7 @@ Raises ValueError naming the law and parameter for an unknown name, a missing or
         const auto va = check_array(v, "FrictionLaw.force_at", "v", any);
         const auto aa = check_array(applied, "FrictionLaw.force_at", "applied", any);
         const auto qa = check_array(position, "FrictionLaw.force_at", "position", any);
+        check_broadcast("FrictionLaw.force_at", {{"v", &va}, {"applied", &aa}, {"position", &qa}});
         return py::vectorize([&](double x, double a, double q) { return l.force(x, a, Conditions{load, temperature, q}); })(va, aa, qa);
       }, py::arg("v"), py::arg("applied"), py::arg("load") = 0.0, py::arg("temperature") = py::none(), py::arg("position") = 0.0,
       "Static law's total friction (N or N m) with stiction at the conditions, ripple included: at v == 0 it balances "

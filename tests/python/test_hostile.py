@@ -7,6 +7,7 @@ The public names are enumerated from frictionlab.__all__: a new one that is in n
 below fails test_every_public_name_is_covered until its hostile calls are added here.
 """
 import inspect
+import os
 import math
 import re
 
@@ -271,3 +272,20 @@ def test_a_scenario_dict_that_contains_itself_or_nests_too_deep_is_refused():
     ring.append(ring)
     with pytest.raises(ValueError, match="the list contains itself"):
         fl.Scenario({"plant": {"type": "axis", "M": 1.0, "v": ring}, "law": {"law": "coulomb", "Fc": 1.0}})
+
+
+def test_the_documented_exception_types():
+    """Arguments of the wrong shape or kind raise ValueError or TypeError naming the function and
+    the argument, not pybind11's RuntimeError or an AttributeError from deep inside."""
+    law = fl.FrictionLaw({"law": "coulomb", "Fc": 1.0})
+    with pytest.raises(ValueError, match=r"FrictionLaw.force: the shapes of v \(2,\) and applied \(3,\) do not match"):
+        law.force([1.0, 2.0], [1.0, 2.0, 3.0])
+    with pytest.raises(ValueError, match=r"position \(3,\) do not match"):
+        law.force_at([1.0, 2.0], [1.0, 2.0], position=[0.0, 1.0, 2.0])
+    assert law.force(0.0, [0.5, 2.0]).tolist() == [0.5, 1.0]  # a scalar still broadcasts
+    with pytest.raises(TypeError, match="drift: table: expected a Table"):
+        fl.batch.drift("x")
+    with pytest.raises(TypeError, match="idim_reconstruction: result: expected the Result of identify_idim"):
+        fl.idim_reconstruction("x")
+    with pytest.raises(fl.Error, match="is a directory"):
+        fl.load_law(os.path.dirname(os.path.abspath(__file__)))

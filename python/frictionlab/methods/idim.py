@@ -118,6 +118,9 @@ def idim_reconstruction(result, time=None, force=None, position=None, velocity=N
     Uses the result's own data and options unless arrays are given (load and temperature, N or N m
     and degC or K, for results with those terms).
     """
+    if not hasattr(result, "ok") or getattr(result, "method", None) != "idim":
+        raise TypeError(f"idim_reconstruction: result: expected the Result of identify_idim, got "
+                        f"{type(result).__name__}")
     if not result.ok:
         raise ValueError(f"idim result has status error: {result.message}")
     opts = getattr(result, "options", None) or _idim_options("idim_reconstruction", {})[1]
