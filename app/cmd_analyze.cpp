@@ -2,6 +2,7 @@
 //                     [--x C --y C --x-reference C --y-reference C --centre X,Y --radius R]
 //                     [--json FILE|-] [--plot FILE] [--overwrite]: out through emit (output.hpp),
 //                     the one output path of identify and validate.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -171,6 +172,17 @@ bool run_envelope(const AnalyzeArgs& a, const Dataset& d, const std::vector<doub
   } catch (const std::invalid_argument& ex) {
     throw std::invalid_argument(d.where() + ex.what());
   }
+  // Numbers or an error, never a NaN or inf printed with exit 0: positions near the range of a
+  // double (1e307) overflow the fits' sums of squares.
+  const double figures_of_fit[] = {e.half_period, e.decrement_per_half_cycle, e.linear.relative_rms, e.exponential.lambda,
+                                   e.exponential.relative_rms, e.mixed.lambda, e.mixed.q, e.mixed.relative_rms};
+  if (!std::all_of(std::begin(figures_of_fit), std::end(figures_of_fit), [](double v) { return std::isfinite(v); })) {
+    r.status = ResultStatus::error;
+    r.message = d.where() + "decay envelope: a figure of the fits is not a finite number (positions up to " +
+                format_number(*std::max_element(e.amplitudes.begin(), e.amplitudes.end())) +
+                " overflow double arithmetic); expected positions in m or rad of ordinary size";
+    return false;
+  }
   r.json_sections["result"] = json_text(envelope_json(e));
   if (!a.output.plot.empty()) figures.push_back({"fit", "", envelope_figure(t, x, e, name)});
   text = envelope_text(e, parse_axis(a.axis));
@@ -197,6 +209,12 @@ bool run_contour(const AnalyzeArgs& a, const Dataset& d, const std::vector<doubl
     c = analyze_contour(t, x, y, xr, yr, o);
   } catch (const std::invalid_argument& ex) {
     throw std::invalid_argument(d.where() + ex.what());
+  }
+  if (!std::isfinite(c.radius) || !std::isfinite(c.roundness_m) || !std::isfinite(c.max_radial_error_m)) {
+    r.status = ResultStatus::error;
+    r.message = d.where() + "contour: the radius or the radial errors are not finite numbers (coordinates that overflow "
+                            "double arithmetic); expected positions in m of ordinary size";
+    return false;
   }
   r.json_sections["result"] = contour_json(c);
   contour_diagnostics(r, c);

@@ -59,4 +59,13 @@ else
 fi
 expect_fail "--float: a constant of the header is 1e+39, beyond float's range" export "$tmp/huge.json" --c "$tmp/f.h" --float
 [ ! -e "$tmp/f.h" ] || fail "--float header written"
+
+# analyze envelope on a free decay of amplitude 1e307: the fits' sums overflow; an error, never
+# "rms inf %" or "offset -nan m" with exit 0.
+/usr/bin/python3 -c "
+import numpy as np
+t = np.arange(0, 10, 0.001)
+np.savetxt('$tmp/huge_decay.csv', np.column_stack([t, 1e307 * np.exp(-0.2 * t) * np.cos(2 * np.pi * t)]),
+           delimiter=',', header='time,position', comments='')"
+expect 2 "decay envelope: a figure of the fits is not a finite number" analyze envelope "$tmp/huge_decay.csv"
 echo ok
