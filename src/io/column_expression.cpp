@@ -8,23 +8,19 @@
 #include <vector>
 
 #include "frictionlab/error.hpp"
+#include "io/error_place.hpp"
 #include "frictionlab/io/columns.hpp"
 
 namespace frictionlab {
 namespace {
 
+using detail::option_of;
+using detail::row_number;
+
 // Nesting deeper than this is refused rather than recursed into (a hostile expression cannot
 // exhaust the stack); no real derived column comes near it.
 constexpr int kMaxDepth = 64;
 constexpr std::size_t kMaxLength = 4096;
-
-std::string option_of(const std::string& role) { return role.rfind("-", 0) == 0 ? role : std::string(); }
-
-// The 1-based line of sample k in the file, or its sample number (as io/columns.cpp names rows).
-std::size_t row_number(const Dataset& data, Eigen::Index k) {
-  if (!data.resampling && k >= 0 && static_cast<std::size_t>(k) < data.lines.size()) return data.lines[static_cast<std::size_t>(k)];
-  return static_cast<std::size_t>(k + 1);
-}
 
 bool name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.'; }
 

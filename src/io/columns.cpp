@@ -1,5 +1,6 @@
 #include "frictionlab/io/columns.hpp"
 #include "frictionlab/error.hpp"
+#include "io/error_place.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -15,6 +16,9 @@
 namespace frictionlab {
 namespace {
 
+using detail::option_of;
+using detail::row_number;
+
 bool parse_number(const std::string& text, double& value) {
   const char* begin = text.data();
   const char* end = text.data() + text.size();
@@ -22,15 +26,6 @@ bool parse_number(const std::string& text, double& value) {
   const auto [ptr, ec] = std::from_chars(begin, end, value);
   return ec == std::errc() && ptr == end && begin != end && std::isfinite(value);
 }
-
-// The 1-based line of sample k in the file (or its sample number when the data has no lines).
-std::size_t row_number(const Dataset& data, Eigen::Index k) {
-  if (!data.resampling && k >= 0 && static_cast<std::size_t>(k) < data.lines.size()) return data.lines[static_cast<std::size_t>(k)];
-  return static_cast<std::size_t>(k + 1);
-}
-
-// A role that is an option ("--time") is reported as the error's option field.
-std::string option_of(const std::string& role) { return role.rfind("-", 0) == 0 ? role : std::string(); }
 
 std::string format_double(double v) {
   char buf[32];
