@@ -42,6 +42,12 @@ double parse_step(const std::string& text) {
 }  // namespace
 
 void add_read_options(CLI::App* cmd, ReadOptions& o) {
+  cmd->add_option("--format", o.format,
+                  "How DATA is read: csv (a text table, whatever the file's name: a robot's .log, a .dat), mat, or "
+                  "auto (by the extension: .csv .tsv .txt or .mat)")
+      ->check(CLI::IsMember({"auto", "csv", "mat"}))
+      ->capture_default_str()
+      ->group("Data columns");
   cmd->add_option("--names", o.names,
                   "Names of a CSV file's columns in order, for a file without a header row (its "
                   "columns are otherwise c1, c2, ...); with a header row they replace its names. Fewer names than "
@@ -101,7 +107,7 @@ Dataset read_data(const std::string& path, const ReadOptions& o) {
   csv.names_option = "--names";
   csv.drop_invalid_option = "--drop-invalid";
   csv.defer_invalid = true;  // only the columns a command uses are checked
-  Dataset d = load_dataset(path, csv);
+  Dataset d = load_dataset(path, csv, parse_data_format(o.format, "--format"));
   if (!o.names.empty() && d.lines.empty()) {
     throw InputError(errc::option_conflict,
                      d.where() + "--names names the columns of a CSV file; a MAT file's variables have their "

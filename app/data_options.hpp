@@ -2,7 +2,7 @@
 // The column options every data-reading subcommand shares (docs/contract.md):
 // which column or variable is time, position, velocity, current, force or drive input, the
 // constants that turn a drive signal into force, unit scale factors, the axis kind, and how the
-// file is read (--names for a file without a header row, --resample and --max-gap for
+// file is read (--format for a file whose name does not say, --names for a file without a header row, --resample and --max-gap for
 // irregular time, --drop-invalid).
 
 #include <CLI/CLI.hpp>
@@ -24,6 +24,7 @@ struct ReadOptions {
   std::string resample;  ///< --resample [DT]: grid step in s ("" = the median step)
   double max_gap = 0;    ///< --max-gap S: longest gap resampling may bridge, s (0 = 10 median steps)
   bool drop_invalid = false;
+  std::string format = "auto";  ///< --format csv|mat|auto: the reader, whatever the file's name
   CLI::Option* resample_opt = nullptr;  ///< set by add_read_options; resampling when it was given
 
   bool resample_given() const { return resample_opt != nullptr && resample_opt->count() > 0; }
@@ -44,7 +45,7 @@ struct DataOptions {
   Axis parsed_axis() const { return parse_axis(axis); }
 };
 
-/// Adds --names --resample --max-gap --drop-invalid to `cmd` (group "Data columns"): for
+/// Adds --format --names --resample --max-gap --drop-invalid to `cmd` (group "Data columns"): for
 /// commands that name their columns with options of their own (analyze).
 void add_read_options(CLI::App* cmd, ReadOptions& o);
 

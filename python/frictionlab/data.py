@@ -98,9 +98,11 @@ def _seconds_arg(value, name):
 
 
 def load(path, names=None, resample=None, max_gap=None, *, time=None, delimiter=None, drop_invalid=False,
-         comment="#"):
-    """Reads a data file by its extension: ``.csv`` or ``.mat`` (MATLAB v5 or v7.3; vectors
-    become columns, 1x1 values scalars).
+         comment="#", format="auto"):
+    """Reads a data file by its extension: ``.csv``, ``.tsv`` or ``.txt`` (a text table) or ``.mat``
+    (MATLAB v5 or v7.3; vectors become columns, 1x1 values scalars). ``format`` names the reader
+    for a file whose name does not say (a robot's ``.log``): ``"csv"`` or ``"mat"``; ``"auto"``
+    (default) goes by the extension. It is the command line's ``--format``.
 
     A CSV file may have a header row of names or none: a first row of numbers is data, and the
     columns are then named by ``names``, the others ``c1``, ``c2``, ... (1-based). The delimiter
@@ -142,7 +144,9 @@ def load(path, names=None, resample=None, max_gap=None, *, time=None, delimiter=
         delimiter = ""
     elif not isinstance(delimiter, str) or len(delimiter) != 1:
         raise ValueError(f"delimiter {delimiter!r}: expected one character, or None to detect it")
+    if not isinstance(format, str):
+        raise TypeError(f"format: expected 'csv', 'mat' or 'auto', got {type(format).__name__}")
     # The path goes to the extension as given: it names the argument when it is not a path.
     columns, scalars, file, sha256, lines, info = _core._load_dataset(
-        path, delimiter, drop_invalid, comment, name_list, do_resample, dt, gap, time or "")
+        path, delimiter, drop_invalid, comment, name_list, do_resample, dt, gap, time or "", format)
     return Data(columns, scalars, file, sha256, lines, info)

@@ -7,6 +7,7 @@
 #include <tuple>
 #include <vector>
 
+#include "cancellable.hpp"
 #include "common.hpp"
 #include "frictionlab/analysis/drift.hpp"
 #include "frictionlab/analysis/envelope.hpp"
@@ -141,10 +142,7 @@ void init_analysis(py::module_& m) {
         o.contact = contact;
         o.contact_option = "contact";
         MapRun run;
-        {
-          py::gil_scoped_release release;
-          run = map_scenario(scenario, grid, o);
-        }
+        run = run_cancellable([&] { return map_scenario(scenario, grid, o); });
         py::list rows;
         for (std::size_t r = 0; r < run.part.table.rows.size(); ++r) {
           py::dict d;

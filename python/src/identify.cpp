@@ -1,6 +1,7 @@
 // Identification: the static law fit (fit_static_law, StaticFitOptions, StaticFit), every
 // registered method (methods/methods.cpp) and frictionlab.methods()'s table. The Result classes
 // are result.cpp; the keyword API is python/frictionlab/identify.py.
+#include "cancellable.hpp"
 #include "frictionlab/identify/method.hpp"
 #include "frictionlab/identify/static_fit.hpp"
 #include "methods/method.hpp"
@@ -68,8 +69,7 @@ void init_identify(py::module_& m) {
   m.def("_fit_static_law", [](py::object velocity, py::object force, const StaticFitOptions& o) {
     // Unequal lengths: the library's own message ("friction fit: velocity has ... points").
     const Eigen::VectorXd v = vector_arg(velocity, "fit_static_law", "velocity"), f = vector_arg(force, "fit_static_law", "force");
-    py::gil_scoped_release release;
-    return fit_static_law(v, f, o);
+    return run_cancellable([&] { return fit_static_law(v, f, o); });
   });
 
   // ---- the registered methods -------------------------------------------------------------

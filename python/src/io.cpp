@@ -1,6 +1,7 @@
 // Data files (CSV, MAT) and law files.
 #include <pybind11/stl.h>
 
+#include "cancellable.hpp"
 #include "common.hpp"
 #include "io/atomic_write.hpp"
 #include "frictionlab/io/column_expression.hpp"
@@ -14,7 +15,8 @@ namespace frictionlab::python {
 void init_io(py::module_& m) {
   m.def("_load_dataset",
         [](const py::object& path, const std::string& delimiter, bool drop_invalid, const std::string& comment,
-           const std::vector<std::string>& names, bool resample, double dt, double max_gap, const std::string& time) {
+           const std::vector<std::string>& names, bool resample, double dt, double max_gap, const std::string& time,
+           const std::string& format) {
           if (delimiter.size() > 1) throw std::invalid_argument("delimiter '" + delimiter + "': expected one character, or None to detect it");
           if (comment.size() > 1) throw std::invalid_argument("comment '" + comment + "': expected one character or ''");
           CsvOptions o;
@@ -24,7 +26,7 @@ void init_io(py::module_& m) {
           o.header = CsvHeader::detect;
           o.names = names;
           o.names_option = "names";
-          Dataset d = load_dataset(path_arg(path, "load"), o);
+          Dataset d = load_dataset(path_arg(path, "load"), o, parse_data_format(format, "format"));
           if (!names.empty() && d.lines.empty()) {
             throw std::invalid_argument(d.where() + "names: names the columns of a CSV file; a MAT file's variables have their own "
                                         "names: " + d.describe_contents());
@@ -69,7 +71,7 @@ void init_io(py::module_& m) {
         },
         py::arg("path"), py::arg("delimiter") = "", py::arg("drop_invalid") = false, py::arg("comment") = "#",
         py::arg("names") = std::vector<std::string>{}, py::arg("resample") = false, py::arg("dt") = 0.0,
-        py::arg("max_gap") = 0.0, py::arg("time") = "",
+        py::arg("max_gap") = 0.0, py::arg("time") = "", py::arg("format") = "auto",
         "Reads a CSV (header row or none) or MAT file, optionally resampled onto a uniform grid: ([(name, column)], "
         "{scalar: value}, file, sha256, csv line numbers, {header_row, warnings, unusable, contents, resampling}).");
 
@@ -99,7 +101,10 @@ void init_io(py::module_& m) {
   }, py::arg("path"), py::arg("text"), py::arg("overwrite") = false,
      "Writes `text` to `path` through a temporary file and a rename (io/atomic_write.hpp): a failed write "
      "leaves no half-written file. ValueError when the file exists and overwrite is False.");
-  m.def("sha256_file", [](const py::object& p) { return sha256_file(path_arg(p, "sha256_file")); }, py::arg("path"), "Lowercase hex SHA-256 of a file's bytes (as in results' data.sha256).");
+  m.def("sha256_file", [](const py::object& p) {
+    const std::string path = path_arg(p, "sha256_file");
+    return run_cancellable([&] { return sha256_file(path); });
+  }, py::arg("path"), "Lowercase hex SHA-256 of a file's bytes (as in results' data.sha256).");
 }
 
 }  // namespace frictionlab::python

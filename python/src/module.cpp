@@ -8,13 +8,17 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "cancellable.hpp"
 #include "common.hpp"
+#include "frictionlab/cancellation.hpp"
 #include "frictionlab/error.hpp"
 #include "frictionlab/version.hpp"
 
 namespace frictionlab::python {
 
 namespace {
+
+unsigned long python_main_thread = 0;  // threading.main_thread().ident, set at import
 
 std::string type_name(const py::handle& x) { return py::cast<std::string>(py::str(py::type::of(x).attr("__name__"))); }
 
@@ -28,6 +32,12 @@ std::string shape_text(const py::array& a) {
 }
 
 }  // namespace
+
+void remember_python_main_thread() {
+  python_main_thread = py::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>();
+}
+
+bool on_python_main_thread() { return python_main_thread != 0 && PyThread_get_thread_ident() == python_main_thread; }
 
 py::array_t<double, py::array::c_style> check_array(const py::handle& x, const std::string& function,
                                                      const std::string& name, const ArraySpec& spec) {
@@ -169,6 +179,7 @@ PYBIND11_MODULE(_core, m) {
   namespace fp = frictionlab::python;
   m.doc() = "frictionlab: friction models, simulation and identification (SI units throughout).";
   m.attr("__version__") = frictionlab::kVersion;
+  fp::remember_python_main_thread();
 
   // Wrong-type arguments: a TypeError that is also a ValueError (code catching either works).
   static pybind11::handle argument_type_error_class;
@@ -197,6 +208,8 @@ PYBIND11_MODULE(_core, m) {
   pybind11::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const frictionlab::Cancelled&) {  // work whose token was cancelled (cancellable.hpp)
+      PyErr_SetNone(PyExc_KeyboardInterrupt);
     } catch (const fp::argument_type_error& e) {
       PyErr_SetString(argument_type_error_class.ptr(), e.what());
     } catch (const frictionlab::InputError& e) {

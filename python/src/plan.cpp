@@ -1,6 +1,7 @@
 // Experiment planning (analysis/plan/*.hpp): fl.plan's core, the JSON text and the profile samples.
 #include <pybind11/stl.h>
 
+#include "cancellable.hpp"
 #include "common.hpp"
 #include "frictionlab/analysis/plan/plan.hpp"
 #include "io/atomic_write.hpp"
@@ -28,10 +29,7 @@ void init_plan(py::module_& m) {
         if (!out_path.empty()) check_output_path(out_path, overwrite);
         const PlanRig rig = load_plan_rig(path_arg(prior, "plan", "prior"), path_arg(scenario, "plan", "scenario"));
         PlanResult r;
-        {
-          py::gil_scoped_release release;
-          r = plan_experiment(pm, rig, o);
-        }
+        r = run_cancellable([&] { return plan_experiment(pm, rig, o); });
         if (r.ok && !out_path.empty()) write_file_atomic(out_path, r.profile.to_csv(), {overwrite});
         std::vector<double> t, u;
         r.profile.samples(t, u);

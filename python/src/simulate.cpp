@@ -7,6 +7,7 @@
 #include <sstream>
 #include <vector>
 
+#include "cancellable.hpp"
 #include "common.hpp"
 #include "frictionlab/control/compensation_spec.hpp"
 #include "frictionlab/scenario/scenario.hpp"
@@ -254,8 +255,7 @@ dict(trajectory) gives the columns; also law_state, switches, stats, to_csv().)d
       });
 
   m.def("_simulate", [](const Scenario& s) {
-    py::gil_scoped_release release;
-    return simulate(s);
+    return run_cancellable([&] { return simulate(s); });
   }, py::arg("scenario"));
 }
 

@@ -1,4 +1,5 @@
 #include "fleet/map_run.hpp"
+#include "frictionlab/cancellation.hpp"
 #include "frictionlab/io/json_text.hpp"
 
 #include <cmath>
@@ -53,6 +54,7 @@ MapRun map_scenario(const std::string& scenario, const MapGrid& grid, const MapR
   scenarios.reserve(jobs.size());
   double rows = 0;
   for (std::size_t i : jobs) {
+    throw_if_cancelled();  // making 1e5 scenarios takes seconds
     scenarios.push_back(g.at(grid.point(i)));
     rows += output_rows(scenarios.back().options) + kWorkPerRun;
   }

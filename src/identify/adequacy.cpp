@@ -92,13 +92,41 @@ Adequacy assess_residuals(const std::vector<double>& velocity, const std::vector
 
   // Autocorrelation, and the effective sample size from its initial positive run (longer lags
   // than reported, so that a slowly decaying correlation is counted).
-  const double var = a.residual_std * a.residual_std * static_cast<double>(n - 1);
+  // Around the mean, or around each segment's own mean and within segments only (a segment's
+  // offset is the structure under test, not the noise's memory).
+  std::vector<double> centred(n);
+  std::vector<std::size_t> segment(n, 0);
+  if (options.segment_ends.empty()) {
+    for (std::size_t i = 0; i < n; ++i) centred[i] = residual[i] - mean;
+  } else {
+    std::size_t begin = 0, id = 0;
+    for (std::size_t end : options.segment_ends) {
+      end = std::min(end, n);
+      if (end <= begin) continue;
+      double m = 0;
+      for (std::size_t i = begin; i < end; ++i) m += residual[i];
+      m /= static_cast<double>(end - begin);
+      for (std::size_t i = begin; i < end; ++i) centred[i] = residual[i] - m, segment[i] = id;
+      begin = end;
+      ++id;
+    }
+    if (begin != n)
+      throw std::invalid_argument("assess_residuals: segment_ends end at sample " + std::to_string(begin) +
+                                  "; expected them to end at the residual's " + std::to_string(n) + " samples");
+  }
+  double var = a.residual_std * a.residual_std * static_cast<double>(n - 1);
+  if (!options.segment_ends.empty()) {
+    double within = 0;
+    for (double c : centred) within += c * c;
+    if (within > 0) var = within;
+  }
   const std::size_t long_lag = std::min<std::size_t>(n / 4, 500);
   double positive_sum = 0;
   bool positive_run = true;
   for (std::size_t k = 1; k <= std::max(long_lag, options.max_lag) && k < n; ++k) {
     double s = 0;
-    for (std::size_t i = k; i < n; ++i) s += (residual[i] - mean) * (residual[i - k] - mean);
+    for (std::size_t i = k; i < n; ++i)
+      if (segment[i] == segment[i - k]) s += centred[i] * centred[i - k];
     const double rho = s / var;
     if (k <= options.max_lag) a.autocorrelation.push_back(rho);
     if (positive_run && k <= long_lag) {
@@ -165,14 +193,12 @@ Adequacy assess_residuals(const std::vector<double>& velocity, const std::vector
     a.findings.push_back("friction at low speed is higher than the model: " + num(std::abs(b->mean)) + " " + force_unit +
                          " more at |v| about " + num(std::abs(b->centre)) + " " + velocity_unit + " (" +
                          num(std::abs(b->mean) / b->standard_error) +
-                         " standard errors); add the Stribeck term (idim: --terms inertia,viscous,coulomb,offset,stribeck)"
-                         " or identify from constant-speed runs (sweep)");
+                         " standard errors); " + options.advice.stribeck);
     explained = true;
   } else if (lower_pos && lower_neg) {
     a.findings.push_back("friction at low speed is lower than the model (" + num(std::abs(low_pos->mean)) + " " +
                          force_unit + " at |v| about " + num(low_pos->centre) + " " + velocity_unit +
-                         "): the faster samples pull the Coulomb level up; the friction-velocity curve is not the"
-                         " model's shape (sweep maps it point by point)");
+                         "): the faster samples pull the Coulomb level up; " + options.advice.shape);
     explained = true;
   }
   if (!pos.empty() && !neg.empty()) {
@@ -185,7 +211,7 @@ Adequacy assess_residuals(const std::vector<double>& velocity, const std::vector
     if (std::abs(d) > z * se && std::abs(d) > threshold) {
       a.findings.push_back("friction differs by direction: " + num(std::abs(d)) + " " + force_unit + " more when moving " +
                            (d > 0 ? "positive" : "negative") + " than the model has (" + num(std::abs(d) / se) +
-                           " standard errors); use direction-dependent terms (idim: --terms inertia,asymmetric)");
+                           " standard errors); " + options.advice.asymmetry);
       explained = true;
     }
   }
@@ -211,7 +237,7 @@ Adequacy assess_residuals(const std::vector<double>& velocity, const std::vector
   // data's: its correlation says nothing about the std a user reads.
   constexpr double kNegligible = 1e-3;
   const bool negligible = a.residual_std < kNegligible * options.force_scale;
-  if (!negligible && !a.autocorrelation.empty() && a.autocorrelation.front() > kCorrelated) {
+  if (options.advice.correlation && !negligible && !a.autocorrelation.empty() && a.autocorrelation.front() > kCorrelated) {
     a.findings.push_back("the residual is correlated from sample to sample (lag-1 autocorrelation " +
                          num(a.autocorrelation.front()) + "; " + std::to_string(n) + " samples count as about " +
                          num(a.effective_samples) + " independent ones): standard deviations that assume"
@@ -219,7 +245,7 @@ Adequacy assess_residuals(const std::vector<double>& velocity, const std::vector
                          num(std::sqrt(inflation)) + " times; idim's std accounts for the correlation");
   }
   constexpr double kStandstillShare = 0.2;  // beyond this share, stuck samples weigh on the Coulomb level
-  if (a.standstill_share > kStandstillShare) {
+  if (options.advice.standstill && a.standstill_share > kStandstillShare) {
     a.findings.push_back(num(100 * a.standstill_share) + " % of the samples are near standstill (|v| < " +
                          num(a.standstill_speed) + " " + velocity_unit +
                          "), where the Coulomb term's sign follows noise: they bias the Coulomb level; record"

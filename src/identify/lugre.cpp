@@ -1,4 +1,5 @@
 #include "frictionlab/identify/lugre.hpp"
+#include "identify/ceres_cancel.hpp"
 #include "identify/ceres_quiet.hpp"
 #include "frictionlab/budget.hpp"
 
@@ -488,6 +489,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
       const double s1 = std::min(2 * std::sqrt(s0 * M), s1_limit);
       const double dy[kNd] = {std::log(std::min(s0, s0_limit)), std::log(s1)};
       const double sa[kNs] = {st.sigma2, std::log(st.Fc), Fs - st.Fc, std::log(vs)};
+      throw_if_cancelled();  // about 50 simulations of the whole record
       double cost = 0;
       Eigen::VectorXd e;
       for (const Window& w : windows_for(vs)) {
@@ -594,6 +596,8 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   so.gradient_tolerance = 1e-14;
   so.logging_type = ceres::SILENT;
   so.num_threads = 2;  // windows are independent residual blocks
+  detail::CancelCallback cancel;
+  so.callbacks.push_back(&cancel);
   std::unique_ptr<Progress> progress;
   if (o.progress) {
     progress = std::make_unique<Progress>(o.progress, kResidualUnit, t_start);
@@ -620,11 +624,13 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
     if (staged) {
       problem.SetParameterBlockConstant(sta);
       ceres::Solve(so, &problem, &summary);
+      throw_if_cancelled();
       iterations += static_cast<int>(summary.iterations.size()) - 1;
       initial_cost = summary.initial_cost;
       problem.SetParameterBlockVariable(sta);
     }
     ceres::Solve(so, &problem, &summary);
+    throw_if_cancelled();
     if (!staged) initial_cost = summary.initial_cost;
     iterations += static_cast<int>(summary.iterations.size()) - 1;
     ++fits;

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "identify/ceres_cancel.hpp"
 #include "identify/ceres_quiet.hpp"
 #include "frictionlab/identify/least_squares.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
@@ -307,8 +308,11 @@ OneSided fit_one_sided(const Eigen::VectorXd& v, const Eigen::VectorXd& f, const
     sopts.gradient_tolerance = 1e-14;
     sopts.parameter_tolerance = 1e-12;
     sopts.logging_type = ceres::SILENT;
+    detail::CancelCallback cancel;
+    sopts.callbacks.push_back(&cancel);
     ceres::Solver::Summary summary;
     ceres::Solve(sopts, &problem, &summary);
+    throw_if_cancelled();
     cur.ssr = 2 * summary.final_cost;
     cur.iterations = static_cast<int>(summary.iterations.size());
     cur.converged = summary.termination_type == ceres::CONVERGENCE;

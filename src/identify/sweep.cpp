@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "frictionlab/identify/adequacy.hpp"
 #include "frictionlab/signal/segments.hpp"
 #include "method_support.hpp"
 
@@ -284,6 +285,64 @@ std::vector<SweepPoint> sweep_points(const SweepData& d, const SweepOptions& o) 
   return points;
 }
 
+namespace {
+
+// Adequacy of a sweep's law (identify/adequacy.hpp): every sample of the steady segments against
+// the fitted law at its own velocity. A law that lacks the Stribeck dip leaves the slow segments'
+// samples above it; one with the wrong shape leaves a pattern across the speeds. The law was
+// fitted to the segments' means, so its std do not come from these residuals: their correlation
+// is not a finding, nor is standstill (segments are in motion by construction).
+void add_sweep_adequacy(Result& r, const SweepData& d, const std::vector<SweepPoint>& points, const FrictionLaw& law,
+                        double mu_load, const SweepOptions& o) {
+  std::vector<double> velocity, residual;
+  std::vector<std::size_t> ends;
+  std::size_t per_direction[2] = {0, 0};
+  double ss = 0, slowest = std::numeric_limits<double>::infinity();
+  const double* t0 = d.time.data();
+  const double* t1 = t0 + d.time.size();
+  for (const auto& p : points) {
+    const auto end = static_cast<Eigen::Index>(std::upper_bound(t0, t1, p.t_end) - t0);
+    for (auto k = static_cast<Eigen::Index>(std::lower_bound(t0, t1, p.t_begin) - t0); k < end; ++k) {
+      const double v = d.velocity[k], sign = v > 0 ? 1.0 : -1.0;
+      const double load = d.load.size() > 0 ? mu_load * std::abs(d.load[k]) * sign : 0.0;
+      velocity.push_back(v);
+      residual.push_back(d.force[k] - law.sliding(v) - load);
+      ss += d.force[k] * d.force[k];
+    }
+    if (ends.empty() ? !residual.empty() : residual.size() > ends.back()) ends.push_back(residual.size());
+    ++per_direction[p.velocity > 0 ? 0 : 1];
+    slowest = std::min(slowest, std::abs(p.velocity));
+  }
+  constexpr std::size_t kMinSamples = 20;  // assess_residuals' least
+  if (residual.size() < kMinSamples) return;
+  AdequacyOptions ao;
+  ao.force_scale = std::sqrt(ss / static_cast<double>(residual.size()));  // the segments' force rms
+  ao.segment_ends = ends;
+  // About one velocity bin per segment (equal-count bins over segments of similar length), so
+  // the slowest bin is the slowest segment, where a missing Stribeck dip shows.
+  ao.velocity_bins = std::max(ao.velocity_bins, std::max(per_direction[0], per_direction[1]));
+  // Every segment is in motion: none of them counts as standstill.
+  double vmax = 0;
+  for (double v : velocity) vmax = std::max(vmax, std::abs(v));
+  ao.standstill_fraction = 0.5 * slowest / vmax;
+  const bool asymmetric = o.fit.model == StaticFitModel::coulomb_viscous_asymmetric ||
+                          o.fit.model == StaticFitModel::stribeck_asymmetric;
+  ao.advice.stribeck = asymmetric ? "fit the Stribeck law (sweep --model stribeck-asymmetric)"
+                                  : "fit the Stribeck law (sweep --model stribeck)";
+  ao.advice.shape = "the friction-velocity curve is not the law's shape: compare the laws (sweep --model) on "
+                    "held-out data, or look at the points in the figure";
+  ao.advice.asymmetry = "fit direction-dependent levels (sweep --model coulomb-viscous-asymmetric or "
+                        "stribeck-asymmetric)";
+  ao.advice.correlation = false;
+  ao.advice.standstill = false;
+  // Not against time: a sweep's speeds change with time, so a drift cannot be told from the
+  // friction-velocity curve.
+  add_adequacy(r, assess_residuals(velocity, {}, {}, residual, std::string(unit(Quantity::force, o.axis)),
+                                   std::string(unit(Quantity::velocity, o.axis)), ao));
+}
+
+}  // namespace
+
 Result identify_sweep(const SweepData& d, const SweepOptions& o) {
   const auto points = sweep_points(d, o);
   const std::string model = model_name(o.fit.model);
@@ -411,6 +470,7 @@ Result identify_sweep(const SweepData& d, const SweepOptions& o) {
     r.series["law_force"].push_back(fit.law.sliding(x) + mu_load * mean_load * (x > 0 ? 1.0 : -1.0));
   }
   r.law = fit.law.to_spec();
+  add_sweep_adequacy(r, d, points, fit.law, with_load ? mu_load : 0.0, o);
   if (with_load) {
     // The law at zero load with its load effect; a negative mu_load is not a law (levels that fall
     // with the load): reported, the law left without it.

@@ -1,6 +1,7 @@
 #include "io/sha256.hpp"
 #include "io/input_file.hpp"
 #include "frictionlab/budget.hpp"
+#include "frictionlab/cancellation.hpp"
 #include "frictionlab/error.hpp"
 
 #include <openssl/evp.h>
@@ -60,6 +61,7 @@ std::string sha256_file(const std::string& path) {
   double read = 0;
   std::vector<char> buf(1 << 16);
   while (in) {
+    throw_if_cancelled();
     in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
     const std::streamsize got = in.gcount();
     if (got > 0) s.update(buf.data(), static_cast<std::size_t>(got));

@@ -9,6 +9,8 @@
 #include <string>
 #include <thread>
 
+#include "frictionlab/cancellation.hpp"
+
 #include "frictionlab/simulate/simulate.hpp"
 
 namespace frictionlab {
@@ -27,12 +29,18 @@ std::vector<BatchResult> simulate_batch(const std::vector<Scenario>& scenarios, 
   std::atomic<std::size_t> next{0};
   std::atomic<std::size_t> finished{0};
 
+  // The caller's cancellation token (frictionlab/cancellation.hpp) is every worker's too; a
+  // cancelled run is not a failed run: the workers stop taking runs and the batch throws.
+  const CancelToken* token = current_cancel_token();
   auto worker = [&] {
-    for (std::size_t i = next.fetch_add(1); i < scenarios.size(); i = next.fetch_add(1)) {
+    const CancelScope scope(token);
+    for (std::size_t i = next.fetch_add(1); i < scenarios.size() && !cancel_requested(); i = next.fetch_add(1)) {
       BatchResult& r = results[i];
       try {
         r.trajectory = simulate(scenarios[i]);
         if (options.on_result) options.on_result(i, r);
+      } catch (const Cancelled&) {
+        break;
       } catch (const std::exception& e) {
         r.error = std::current_exception();
         r.message = e.what();
@@ -47,6 +55,7 @@ std::vector<BatchResult> simulate_batch(const std::vector<Scenario>& scenarios, 
 
   if (threads == 1) {
     worker();
+    throw_if_cancelled();
     return results;
   }
   std::vector<std::thread> pool;
@@ -54,6 +63,7 @@ std::vector<BatchResult> simulate_batch(const std::vector<Scenario>& scenarios, 
   for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();  // the calling thread works too
   for (auto& th : pool) th.join();
+  throw_if_cancelled();
   return results;
 }
 

@@ -1,3 +1,4 @@
+#include "frictionlab/cancellation.hpp"
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "frictionlab/simulate/output_size.hpp"
@@ -880,6 +881,7 @@ class Engine {
     double last_switch_time = -1.0;
     int switches_without_progress = 0;
     for (std::size_t k = 1; k < rows; ++k) {
+      if (k % 4096 == 0) throw_if_cancelled();  // rows read from an interpolant call no solver
       double tout = std::min(static_cast<double>(k) / rate, o_.duration);
       // Rows inside the step already taken come from its interpolant, without a CVode call.
       // Only without root functions (CVode checks roots up to each output time) and before
@@ -905,6 +907,7 @@ class Engine {
           CVodeSetStopTime(sd_.mem, tstop);
           stop_set_ = tstop;
         }
+        throw_if_cancelled();
         double tret = t;
         const int flag = CVode(sd_.mem, tout, sd_.y, &tret, CV_NORMAL);
         if (flag < 0 && callback_exception_) std::rethrow_exception(callback_exception_);
@@ -1072,6 +1075,7 @@ class Engine {
       // Advance to the row's step count, then record the state there.
       const long target = static_cast<long>(k) * per_row;
       for (; step < target;) {
+        if (step % 4096 == 0) throw_if_cancelled();
         const double t = static_cast<double>(step) * dt;
         eval_inputs(t);
         if (kinematic_) x[1] = u_[0].value;

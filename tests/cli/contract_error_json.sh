@@ -37,7 +37,7 @@ printf 'time,velocity,current\n0,1,0.1\n0.1,1,0.1\n0.2,1,0.1\n0.3,1,0.1\n0.4,abc
 error_json data.not_a_number "e['row'] == 6 and e['value'] == 'abc' and e['file'] == '$tmp/text.csv' and e['column'] == 'velocity'" \
   identify sweep "$tmp/text.csv" --kt 0.039 --json -
 error_json data.file_unreadable "e['file'] == '$tmp/none.csv'" identify sweep "$tmp/none.csv" --kt 0.039 --json -
-error_json data.file_type "e['value'] == '.txt'" identify sweep "$tmp/sweep.txt" --kt 0.039 --json -
+error_json data.file_type "e['value'] == '.log'" identify sweep "$tmp/sweep.log" --kt 0.039 --json -
 error_json option.out_of_range "e['option'] == '--resample' and e['value'] == '-1'" "${sweep[@]}" --resample=-1 --json -
 
 # Scenario: an unknown key, with the file and the dotted key.

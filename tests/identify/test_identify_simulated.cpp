@@ -90,6 +90,47 @@ TEST(IdentifySimulated, SweepRecoversVirgalaStribeckWithinTwoSigma) {
   }
 }
 
+// Adequacy of a sweep: the same noisy Stribeck sweep fitted with the Stribeck law leaves no
+// structure in its segments' samples; fitted with the Coulomb-viscous law it leaves the slow
+// segments above the law, and the warning names the dip and sweep's own remedy.
+TEST(IdentifySimulated, SweepNamesAMissingStribeckDipAndNothingWhenTheLawFits) {
+  const fl::Scenario sc = fl::load_scenario(example("virgala_motor_sweep.yaml"));
+  const fl::Trajectory tr = fl::simulate(sc);
+  constexpr double Km = 0.039;
+  const auto warned = [](const fl::Result& r, const std::string& text) {
+    for (const auto& w : r.diagnostics.warnings)
+      if (w.find(text) != std::string::npos) return true;
+    return false;
+  };
+  // Seeded noise draws: a white residual must pass every one (the checks' significance of 4
+  // standard errors makes a false finding rarer than 1 in 1000 per draw).
+  constexpr int kSeeds = 10;
+  for (int seed = 1; seed <= kSeeds; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(seed));
+    std::normal_distribution<double> current_noise(0.0, 2e-3), speed_noise(0.0, 0.05);  // A, rad/s
+    Eigen::VectorXd force = Km * vec(tr.current), speed = vec(tr.velocity);
+    for (Eigen::Index i = 0; i < force.size(); ++i) {
+      force[i] += Km * current_noise(rng);
+      speed[i] += speed_noise(rng);
+    }
+    fl::SweepOptions o;
+    o.relative_tolerance = 0.02;
+    o.velocity_tolerance = 0.3;
+    o.axis = fl::Axis::rotary;
+    const fl::Result right = fl::identify_sweep({vec(tr.time), force, speed}, o);
+    ASSERT_TRUE(right.ok()) << right.message;
+    EXPECT_EQ(right.diagnostics.groups.at("adequacy").at("findings"), 0.0) << "seed " << seed;
+    EXPECT_FALSE(right.diagnostics.lists.at("residual_by_velocity").empty());
+    o.fit.model = fl::StaticFitModel::coulomb_viscous;
+    const fl::Result wrong = fl::identify_sweep({vec(tr.time), force, speed}, o);
+    ASSERT_TRUE(wrong.ok()) << wrong.message;
+    EXPECT_TRUE(warned(wrong, "friction at low speed is higher than the model")) << "seed " << seed;
+    EXPECT_TRUE(warned(wrong, "N m more at |v| about")) << "units of the rotary axis";
+    EXPECT_TRUE(warned(wrong, "(sweep --model stribeck)"));
+    EXPECT_FALSE(warned(wrong, "idim")) << "a sweep's finding names sweep's remedy";
+  }
+}
+
 // The lecture's pendulum cases at several initial angles: T_slip and B within 2 %, and the
 // friction a case does not have reported as zero within its uncertainty.
 TEST(IdentifySimulated, DecayRecoversPendulumFrictionAtAnyAngleUpToOneRadian) {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "frictionlab/cancellation.hpp"
 #include "frictionlab/identify/lugre.hpp"
 #include "frictionlab/plants/axis.hpp"
 #include "frictionlab/simulate/simulate.hpp"
@@ -77,6 +78,25 @@ TEST(Lugre, StaticPartGivenStillRecoversTheDynamicOnes) {
   EXPECT_DOUBLE_EQ(r.value("Fc"), kTruth.Fc);
   EXPECT_DOUBLE_EQ(r.value("Fs"), kTruth.Fs);
   EXPECT_EQ(r.find("Fs")->std, 0.0);
+}
+
+// A token cancelled during the fit (here from its own progress callback, after the first
+// iteration) aborts the Ceres solve at its next iteration and the fit throws Cancelled instead of
+// returning the parameters reached so far.
+TEST(Lugre, CancellingDuringTheFitThrowsCancelled) {
+  LugreOptions o;
+  o.inertia = 1.0;
+  o.static_law = FrictionLaw(Stribeck{kTruth.Fc, kTruth.Fs, kTruth.vs, kTruth.delta, kTruth.sigma2});
+  CancelToken token;
+  int iterations_seen = 0;
+  o.progress = [&](int, double, double) {
+    ++iterations_seen;
+    token.cancel();
+  };
+  const CancelScope scope(&token);
+  EXPECT_THROW(identify_lugre(canudas_record(), o), Cancelled);
+  EXPECT_GE(iterations_seen, 1);
+  EXPECT_LE(iterations_seen, 2);  // the iteration that cancelled, at most one more
 }
 
 TEST(Lugre, NoMotionIsAnErrorWithAMessage) {

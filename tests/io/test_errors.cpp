@@ -119,11 +119,11 @@ TEST(Errors, CsvReaderCodesAndFields) {
 
 TEST(Errors, LoadAndMatCodes) {
   TempDir d;
-  const std::string txt = d.file("data.txt", "time\n0\n");
+  const std::string txt = d.file("data.log", "time\n0\n");
   auto e = input_error_of([&] { fl::load_dataset(txt); });
   ASSERT_TRUE(e);
   EXPECT_EQ(e->code(), "data.file_type");
-  EXPECT_EQ(e->fields().value, ".txt");
+  EXPECT_EQ(e->fields().value, ".log");
 
   e = input_error_of([&] { fl::load_dataset(d.file("none.mat")); });
   ASSERT_TRUE(e);

@@ -152,10 +152,21 @@ TEST(Load, ChoosesByExtension) {
   TempDir d;
   const auto p = d.file("UPPER.CSV", "t,x\n0,1\n1,2\n");
   EXPECT_EQ(fl::load_dataset(p).rows(), 2);
-  const auto q = d.file("data.txt", "t,x\n");
+  // .tsv and .txt are tables by their extension; another name is read with the format given.
+  EXPECT_EQ(fl::load_dataset(d.file("data.txt", "t x\n0 1\n1 2\n")).rows(), 2);
+  EXPECT_EQ(fl::load_dataset(d.file("data.tsv", "t\tx\n0\t1\n")).rows(), 1);
+  const auto q = d.file("robot.log", "t,x\n0,1\n1,2\n");
   const std::string msg = error_of([&] { fl::load_dataset(q); });
+  EXPECT_NE(msg.find("unknown data file type '.log'"), std::string::npos) << msg;
   EXPECT_NE(msg.find(".csv"), std::string::npos) << msg;
   EXPECT_NE(msg.find(".mat"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("--format csv"), std::string::npos) << msg;
+  EXPECT_EQ(fl::load_dataset(q, {}, fl::DataFormat::csv).rows(), 2);
+  EXPECT_NE(error_of([&] { fl::load_dataset(q, {}, fl::DataFormat::mat); }).find(q), std::string::npos);
+  EXPECT_EQ(fl::parse_data_format("csv", "--format"), fl::DataFormat::csv);
+  EXPECT_EQ(fl::parse_data_format("auto", "--format"), fl::DataFormat::by_extension);
+  EXPECT_NE(error_of([&] { fl::parse_data_format("xls", "--format"); }).find("--format 'xls': expected csv"),
+            std::string::npos);
 }
 
 TEST(Columns, MissingColumnListsTheAvailableOnes) {

@@ -31,13 +31,35 @@ def test_load_csv(tmp_path):
     assert fl.load(p2, delimiter=";", drop_invalid=True)["b"].tolist() == [2.0]
 
 
+def test_load_format_reads_a_table_of_any_name(tmp_path):
+    # A robot's .log is a text table by its content, not its name: format="csv" (the command
+    # line's --format csv) reads it as the same table; .tsv and .txt are tables by extension.
+    text = "time\tvelocity\n0\t1.5\n0.5\t-2e-3\n"
+    for name in ("robot.log", "robot.tsv", "robot.txt"):
+        (tmp_path / name).write_text(text)
+    want = fl.load(tmp_path / "robot.tsv")
+    for d in (fl.load(tmp_path / "robot.log", format="csv"), fl.load(tmp_path / "robot.txt")):
+        assert d.columns == want.columns == ["time", "velocity"]
+        np.testing.assert_array_equal(d["velocity"], want["velocity"])
+    with pytest.raises(fl.Error, match="robot.log: unknown data file type '.log'") as e:
+        fl.load(tmp_path / "robot.log")
+    assert e.value.code == "data.file_type"
+    with pytest.raises(fl.Error, match="format 'xls': expected csv") as e:
+        fl.load(tmp_path / "robot.log", format="xls")
+    assert e.value.code == "option.invalid" and e.value.option == "format"
+    with pytest.raises(ValueError, match="robot.tsv"):
+        fl.load(tmp_path / "robot.tsv", format="mat")
+    with pytest.raises(TypeError, match="format"):
+        fl.load(tmp_path / "robot.log", format=1)
+
+
 def test_load_errors_name_file_line_and_column(tmp_path):
     p = tmp_path / "bad.csv"
     p.write_text("time,force\n0,1\n0.1,abc\n")
     with pytest.raises(ValueError, match=r"bad.csv: line 3, column 2 'force': expected a number, got 'abc'"):
         fl.load(p)
-    with pytest.raises(ValueError, match=r"nope.txt.*\.csv"):
-        fl.load(tmp_path / "nope.txt")
+    with pytest.raises(ValueError, match=r"nope.log.*\.csv.*format=\"csv\""):
+        fl.load(tmp_path / "nope.log")
     with pytest.raises(ValueError, match="missing.mat"):
         fl.load(tmp_path / "missing.mat")
     with pytest.raises(ValueError, match="delimiter"):

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "frictionlab/cancellation.hpp"
 #include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/plants/spring_base.hpp"
 #include "frictionlab/simulate/batch.hpp"
@@ -95,4 +96,38 @@ TEST(Batch, ThreadCount) {
   EXPECT_EQ(fl::batch_threads(3, 0), 1);
   EXPECT_THROW(fl::batch_threads(-1, 10), std::invalid_argument);
   EXPECT_TRUE(fl::simulate_batch({}).empty());
+}
+
+// Cancellation (frictionlab/cancellation.hpp): a set token stops simulate before its first solver
+// step, and a batch before its remaining runs, on every worker; a cancelled batch throws rather
+// than returning runs marked failed.
+TEST(Batch, ACancelledTokenStopsSimulate) {
+  const auto scenarios = grid(1);
+  fl::CancelToken token;
+  token.cancel();
+  const fl::CancelScope scope(&token);
+  EXPECT_THROW(fl::simulate(scenarios[0]), fl::Cancelled);
+}
+
+TEST(Batch, CancellingStopsTheRemainingRunsOnEveryWorker) {
+  constexpr int kRuns = 40;
+  const auto scenarios = grid(kRuns);
+  fl::CancelToken token;
+  std::atomic<int> finished{0};
+  fl::BatchOptions o;
+  o.threads = 2;
+  o.progress = [&](std::size_t, std::size_t) {
+    if (++finished == 2) token.cancel();  // from a worker thread, as a host's Stop button would
+  };
+  const fl::CancelScope scope(&token);
+  EXPECT_THROW(fl::simulate_batch(scenarios, o), fl::Cancelled);
+  // Each worker finishes the run it is in (at most one per thread after the cancel), no more.
+  EXPECT_LE(finished.load(), 2 + o.threads);
+  // The same batch without a cancel runs all of them (the bound above is not the batch's size).
+  fl::CancelToken unused;
+  const fl::CancelScope fresh(&unused);
+  finished = 0;
+  o.progress = [&](std::size_t, std::size_t) { ++finished; };
+  EXPECT_NO_THROW(fl::simulate_batch(scenarios, o));
+  EXPECT_EQ(finished.load(), kRuns);
 }

@@ -17,6 +17,23 @@
 #include "frictionlab/export.hpp"
 namespace frictionlab FRICTIONLAB_API {
 
+/// What the findings advise, in the terms of the method whose residual is checked. The defaults
+/// are idim's (a trajectory fitted sample by sample).
+struct AdequacyAdvice {
+  /// Friction at low speed above the model.
+  std::string stribeck = "add the Stribeck term (idim: --terms inertia,viscous,coulomb,offset,stribeck) or identify "
+                         "from constant-speed runs (sweep)";
+  /// Friction at low speed below the model, both directions.
+  std::string shape = "the friction-velocity curve is not the model's shape (sweep maps it point by point)";
+  /// A friction level that differs by direction.
+  std::string asymmetry = "use direction-dependent terms (idim: --terms inertia,asymmetric)";
+  /// Report a residual correlated from sample to sample: true when the method's std_ols assumes
+  /// these residuals independent (idim); false when its std comes from elsewhere (sweep's points).
+  bool correlation = true;
+  /// Report a large share of samples near standstill (with idim's --exclude-below remedy).
+  bool standstill = true;
+};
+
 /// Settings of the residual checks.
 struct AdequacyOptions {
   /// Bins of |velocity| per direction, equal counts each. Default 6.
@@ -40,6 +57,13 @@ struct AdequacyOptions {
   /// Velocities with |v| below this fraction of the largest |v| count as near standstill, where
   /// Coulomb friction's sign is not known. Default 0.02.
   double standstill_fraction = 0.02;
+  /// The residual as consecutive segments (a sweep's steady runs): the end (exclusive) of each,
+  /// the last equal to the residual's length. The autocorrelation, and so the effective sample
+  /// size, is then taken within segments around each segment's mean, so that a segment's offset
+  /// from the model counts as structure, not as memory of the noise. Empty (default): one series.
+  std::vector<std::size_t> segment_ends{};
+  /// The remedies the findings name.
+  AdequacyAdvice advice{};
 };
 
 /// One bin of the residual against a signal.
@@ -73,7 +97,8 @@ struct Adequacy {
 /// \param residual  measured less modelled force (N or N m), the fit's samples.
 /// \param force_unit, velocity_unit  units for the findings' text ("N", "m/s").
 /// \param options  the checks' settings.
-/// \throws std::invalid_argument when the lengths differ or there are fewer than 20 samples.
+/// \throws std::invalid_argument when the lengths differ, there are fewer than 20 samples, or
+///         options.segment_ends do not end at the residual's length.
 Adequacy assess_residuals(const std::vector<double>& velocity, const std::vector<double>& position,
                           const std::vector<double>& time, const std::vector<double>& residual,
                           const std::string& force_unit, const std::string& velocity_unit,

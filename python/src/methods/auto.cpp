@@ -3,6 +3,7 @@
 // values of the method's option table, the second record as arrays.
 #include "frictionlab/identify/auto.hpp"
 
+#include "../cancellable.hpp"
 #include "method.hpp"
 
 namespace frictionlab::python {
@@ -21,8 +22,7 @@ void bind(py::module_& m) {
       o.heldout = trajectory_arrays("identify_auto: validate", get("time"), get("force"), get("position"), get("velocity"),
                                     py::none(), py::none(), h.contains("file") ? h["file"].cast<std::string>() : std::string(), "");
     }
-    py::gil_scoped_release release;
-    return identify_auto(d, o);
+    return run_cancellable([&] { return identify_auto(d, o); });
   });
 }
 

@@ -2,6 +2,7 @@
 // and _identify_breakaway (the keyword API is python/frictionlab/identify.py).
 #include "frictionlab/identify/breakaway.hpp"
 
+#include "../cancellable.hpp"
 #include "method.hpp"
 
 namespace frictionlab::python {
@@ -22,8 +23,7 @@ void bind(py::module_& m) {
     const auto [t, f, v] = time_force_velocity("identify_breakaway", time, force, velocity);
     BreakawayData d{t, f, v, {}};
     d.load = vector_arg(load, "identify_breakaway", "load", ArraySpec{.optional = true});
-    py::gil_scoped_release release;
-    return identify_breakaway(d, o);
+    return run_cancellable([&] { return identify_breakaway(d, o); });
   });
 }
 

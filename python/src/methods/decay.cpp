@@ -2,6 +2,7 @@
 // DecayOptions and _identify_decay (the keyword API is python/frictionlab/identify.py).
 #include "frictionlab/identify/decay.hpp"
 
+#include "../cancellable.hpp"
 #include "method.hpp"
 
 namespace frictionlab::python {
@@ -22,8 +23,7 @@ void bind(py::module_& m) {
   m.def("_identify_decay", [](py::object time, py::object position, const DecayOptions& o) {
     const DecayData d{vector_arg(time, "identify_decay", "time"), vector_arg(position, "identify_decay", "position")};
     same_length("identify_decay", {{"time", d.time.size()}, {"position", d.position.size()}});
-    py::gil_scoped_release release;
-    return identify_decay(d, o);
+    return run_cancellable([&] { return identify_decay(d, o); });
   });
 }
 

@@ -3,6 +3,7 @@
 // API is python/frictionlab/identify.py).
 #include "frictionlab/identify/idim.hpp"
 
+#include "../cancellable.hpp"
 #include "method.hpp"
 
 namespace frictionlab::python {
@@ -65,15 +66,13 @@ void bind(py::module_& m) {
     d.feedforward = vector_arg(feedforward, "identify_idim", "feedforward", optional);
     same_length("identify_idim", {{"time", d.time.size()}, {"reference", d.reference.size()},
                                   {"feedforward", d.feedforward.size()}});
-    py::gil_scoped_release release;
-    return identify_idim(d, o);
+    return run_cancellable([&] { return identify_idim(d, o); });
   });
   m.def("_cross_test", [](const Result& r, py::object time, py::object force, py::object position, py::object velocity,
                           py::object load, py::object temperature, const IdimOptions& o, const std::string& file,
                           const std::string& sha256) {
     const IdimData d = trajectory_arrays("cross_test", time, force, position, velocity, load, temperature, file, sha256);
-    py::gil_scoped_release release;
-    return cross_test(r, d, o);
+    return run_cancellable([&] { return cross_test(r, d, o); });
   });
   m.def("_idim_regression", [](py::object time, py::object force, py::object position, py::object velocity,
                                py::object load, py::object temperature, const IdimOptions& o) {

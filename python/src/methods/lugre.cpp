@@ -2,6 +2,7 @@
 // _identify_lugre (the keyword API is python/frictionlab/validate.py).
 #include "frictionlab/identify/lugre.hpp"
 
+#include "../cancellable.hpp"
 #include "method.hpp"
 
 namespace frictionlab::python {
@@ -18,8 +19,7 @@ void bind(py::module_& m) {
         LugreOptions o = make_lugre_options(values);
         if (!static_law.is_none()) o.static_law = law_arg(static_law);
         o.axis = parse_axis(axis);
-        py::gil_scoped_release release;  // the fit takes a while; let other Python threads run
-        return identify_lugre(d, o);
+        return run_cancellable([&] { return identify_lugre(d, o); });  // the fit takes a while
       },
       py::arg("time"), py::arg("force"), py::arg("position"), py::arg("values"), py::arg("static_law"), py::arg("axis"));
 }

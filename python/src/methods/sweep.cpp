@@ -3,6 +3,7 @@
 // python/frictionlab/identify.py; StaticFitOptions, the fit's options, is identify.cpp's).
 #include "frictionlab/identify/sweep.hpp"
 
+#include "../cancellable.hpp"
 #include "method.hpp"
 
 namespace frictionlab::python {
@@ -40,8 +41,7 @@ void bind(py::module_& m) {
     const auto [t, f, v] = time_force_velocity("identify_sweep", time, force, velocity);
     SweepData d{t, f, v, {}};
     d.load = vector_arg(load, "identify_sweep", "load", ArraySpec{.optional = true});
-    py::gil_scoped_release release;
-    return identify_sweep(d, o);
+    return run_cancellable([&] { return identify_sweep(d, o); });
   });
   m.def("_sweep_points", [](py::object time, py::object force, py::object velocity, const SweepOptions& o,
                             py::object load) {

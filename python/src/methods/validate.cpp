@@ -6,6 +6,7 @@
 #include "frictionlab/io/load.hpp"
 #include "frictionlab/scenario/scenario.hpp"
 
+#include "../cancellable.hpp"
 #include "method.hpp"
 
 namespace frictionlab::python {
@@ -32,7 +33,7 @@ void bind(py::module_& m) {
         const Scenario scenario = load_scenario(scenario_path, so);
         v.file = data->file;
         v.sha256 = data->sha256;
-        Result r = validate_model(model, scenario, v, {});
+        Result r = run_cancellable([&] { return validate_model(model, scenario, v, {}); });
         r.data_file = identified.data_file;
         r.data_sha256 = identified.data_sha256;
         return r;
@@ -74,7 +75,7 @@ void bind(py::module_& m) {
           v.sha256 = data->sha256;
         }
         const Scenario scenario = load_scenario(scenario_path, so);
-        ContourValidation cv = validate_contour(scenario, v, models, {});
+        ContourValidation cv = run_cancellable([&] { return validate_contour(scenario, v, models, {}); });
         auto opt = [](const std::optional<ContourResult>& c) { return c ? py::cast(*c) : py::none(); };
         return py::make_tuple(cv.result, opt(cv.measured), opt(cv.simulated));
       },

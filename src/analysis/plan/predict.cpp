@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "frictionlab/cancellation.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/identify/breakaway.hpp"
 #include "frictionlab/identify/lugre.hpp"
@@ -159,6 +160,7 @@ MonteCarloSpread monte_carlo_spread(PlanMethod method, const ExperimentProfile& 
   std::map<std::string, Collect> params, readoff;
   const bool fisher = method == PlanMethod::sweep || method == PlanMethod::idim;
   for (int k = 1; k <= runs; ++k) {
+    throw_if_cancelled();
     std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
                       static_cast<std::uint32_t>(k)};
     std::mt19937_64 rng(seq);
