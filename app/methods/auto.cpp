@@ -26,7 +26,7 @@ Result run(const MethodIO& io, const OptionValues& options) {
 
 Figure fit_figure(const Result& r) {
   Figure f;
-  f.title = title_for(r, "Chosen model (" + r.model + "): measured and reconstructed " + force_name(r.axis));
+  f.title = title_for(r, "Chosen model " + r.model + ": measured and modelled " + force_name(r.axis));
   const Axis axis = r.axis;
   const auto *t = find(r, "time"), *y = find(r, "force"), *m = find(r, "force_model");
   if (!t || !y || !m) return f;

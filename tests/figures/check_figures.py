@@ -10,9 +10,11 @@ matplotlib names by id; the checks here then fail naming the figure and the elem
     "(count)" (the explicit list UNITLESS),
   - a text is smaller than MIN_FONT_PX when the figure is shown 800 px wide (a report column, a
     laptop window's half),
-  - a label the script sets is missing from the rendered figure.
+  - a label the script sets is missing from the rendered figure,
+  - a text (a title, a label) runs past the figure's left or right edge, where it is clipped.
 
-A deliberately bad figure (a legend over the x label, a label without a unit) is checked first and
+A deliberately bad figure (a legend over the x label, a label without a unit, a title past the
+edge) is checked first and
 must fail, so the test can fail.
 
 Usage: check_figures.py FRICTIONLAB_EXE SOURCE_DIR [--python-path DIR] [--keep DIR]
@@ -44,7 +46,8 @@ BAD_SVG = """<svg width="600" height="300" viewBox="0 0 600 300" xmlns="http://w
 <g transform="translate(20,150) rotate(270)" text-anchor="middle"><text>friction</text></g>
 <g transform="translate(60,270)" text-anchor="end"><text>0.5</text></g>
 <g id="gnuplot_plot_1"><title>measured</title><g transform="translate(320,288)" text-anchor="start"><text>measured</text></g>
-<path d="M260,283 L310,283" stroke="black"/></g></g></svg>"""
+<path d="M260,283 L310,283" stroke="black"/></g>
+<g transform="translate(560,20)" text-anchor="start"><text>a title past the edge</text></g></g></svg>"""
 BAD_LABELS = ["velocity (m/s)", "friction"]
 
 PAGE_SCRIPT = r"""
@@ -67,7 +70,8 @@ for (const div of document.querySelectorAll('div.fig')) {
   }
   const ids = {};
   for (const e of svg.querySelectorAll('[id^="fl-"]')) ids[e.id] = rect(e);
-  out.push({name: div.dataset.name, width: box.width, texts: texts, ids: ids});
+  out.push({name: div.dataset.name, width: box.width, box: [box.left, box.top, box.right, box.bottom], texts: texts,
+            ids: ids});
 }
 document.getElementById('result').textContent = 'RESULT' + JSON.stringify(out) + 'END';
 """
@@ -151,6 +155,11 @@ def check(name, kind, labels, m):
             problems.append(f"{name}: axis label '{label}' carries no unit (write '(UNIT)'; unitless: "
                             + " or ".join(f"'{u}'" for u in UNITLESS) + ")")
     texts = m["texts"]
+    left, right = m["box"][0], m["box"][2]
+    for t in texts:
+        if t["r"][0] < left - TOUCH_PX or t["r"][2] > right + TOUCH_PX:
+            problems.append(f"{name}: text '{t['s'][:60]}' runs past the figure's edge (clipped)")
+            break
     for t in texts:
         if t["font"] < MIN_FONT_PX:
             problems.append(f"{name}: text '{t['s'][:40]}' is {t['font']:.1f} px at {SHOWN_WIDTH_PX} px wide "
@@ -220,7 +229,8 @@ def main():
         # The bad figure first: its overlap and its missing unit must be found.
         bad = check("bad", "gnuplot", BAD_LABELS, m["bad"])
         if not any("overlaps the axis label 'velocity (m/s)'" in p for p in bad) or \
-           not any("'friction' carries no unit" in p for p in bad):
+           not any("'friction' carries no unit" in p for p in bad) or \
+           not any("'a title past the edge' runs past the figure's edge" in p for p in bad):
             print("FAIL: the deliberately bad figure was not caught:\n  " + "\n  ".join(bad or ["(no problem found)"]))
             return 1
         problems = []

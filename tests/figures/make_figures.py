@@ -68,6 +68,10 @@ def _cli_jobs(src):
         (0, "identify-drift", "identify sweep --resample --axis rotary --model coulomb-viscous fleet/axis3_2026-11-0?.csv "
                               "--date-from name --table fleet.csv --drift drift.csv --drift-threshold 3 "
                               "--plot identify-drift.svg", ["identify-drift.svg"]),
+        (0, "identify-lugre", "identify lugre lugre.csv --force applied --inertia 1 --plot identify-lugre.svg",
+         ["identify-lugre.svg"]),
+        (0, "identify-auto", "identify auto servo.csv --names time,position,q_ref,v_est,current --kt 0.5 --resample "
+                             "--plot identify-auto.svg", ["identify-auto.svg"]),
         (1, "identify-breakaway", "identify breakaway trap.csv --kt 0.0141 --axis rotary --plot identify-breakaway.svg",
          ["identify-breakaway.svg"]),
         (1, "identify-sweep", "identify sweep sweep.csv --kt 0.039 --axis rotary --plot identify-sweep.svg", ["identify-sweep.svg"]),
@@ -81,6 +85,27 @@ def _cli_jobs(src):
     ]
 
 
+def _write_lugre_record(exe, out):
+    """lugre.csv: Canudas de Wit et al. 1995 Table I on a unit mass, a presliding force ramp to
+    0.95 Fs and back, then a force sine of amplitude 2 Fs (the record identify lugre's test uses)."""
+    import math
+
+    times, values = [0.0, 2.0, 4.0], [0.0, 1.425, 0.0]
+    for i in range(1, 301):
+        t = 4.0 + 0.02 * i
+        times.append(round(t, 6))
+        values.append(3.0 * math.sin(math.pi * (t - 4.0)))
+    scenario = out / "lugre.yaml"
+    scenario.write_text(
+        "description: Canudas de Wit 1995 Table I, presliding then sliding\n"
+        "plant:\n  type: axis\n  M: 1.0\n"
+        "friction:\n  law: lugre\n  sigma0: 1.0e5\n  sigma1: 316.22776601683796\n  sigma2: 0.4\n"
+        "  Fc: 1.0\n  Fs: 1.5\n  vs: 0.001\n"
+        "input:\n  type: table\n  times: [%s]\n  values: [%s]\n" % (", ".join(map(repr, times)), ", ".join(map(repr, values)))
+        + "duration: 10\noutput_rate: 1000\n")
+    _run([os.path.abspath(exe), "simulate", str(scenario), "-o", str(out / "lugre.csv"), "--overwrite"], out)
+
+
 JOBS = 3  # commands side by side: the slowest (the EMPS validation, a map) bound the time
 
 
@@ -92,6 +117,8 @@ def make_cli(exe, src, out):
     out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)
     _run([sys.executable, f"{src}/examples/fleet_logs.py", str(out / "fleet")], out)
+    _run([sys.executable, f"{src}/tests/rigs/servo_log.py", str(out / "servo.csv")], out)
+    _write_lugre_record(exe, out)
 
     def argv(args):
         words = [str(exe)]
