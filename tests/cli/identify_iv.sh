@@ -2,7 +2,10 @@
 # IDIM-IV on the command line (docs/identify.md): EMPS in its PD loop converges near IDIM-LS with
 # the IV diagnostics in the JSON; --iv without the controller or the reference, a reference column
 # the file lacks, controller options without --iv, and an iteration that does not converge are
-# exit status 2 with one line naming what to give.
+# exit status 2 with one line naming what to give. The controller from a scenario (--scenario) and
+# the gains named as the MAT file's scalars (--kp kp) give the result of the numbers typed; a name
+# the file lacks, a --controller against the scenario's, a rotary --axis against its linear plant
+# and a velocity loop are exit status 2 naming the file and key.
 source "$(dirname "$0")/lib.sh"
 emps="$src/data/emps/DATA_EMPS.mat"
 idim=(identify idim "$emps" --time t --position qm --input vir --gain gtau)

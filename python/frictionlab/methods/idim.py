@@ -59,7 +59,7 @@ def _idim_options(function, options, time=None, source=None):
     scenario = inputs.get("scenario")
     scenario = None if scenario is None else _core._idim_iv_scenario(scenario, axis)
     o = _core._make_idim_options(values, scenario)
-    if sources and values.flag("iv"):
+    if sources and o.iv_sources:  # filled when iv=True
         merged = dict(o.iv_sources)
         merged.update(sources)
         o.iv_sources = merged
