@@ -1,6 +1,9 @@
 // frictionlab identify idim: inverse dynamic model least squares on a trajectory (EMPS recipe):
 // options, run, figures (measured and reconstructed force, friction map, cross-test).
 #include <algorithm>
+#include <map>
+#include <optional>
+#include <variant>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -11,6 +14,7 @@
 #include "frictionlab/identify/idim.hpp"
 #include "frictionlab/io/column_expression.hpp"
 #include "frictionlab/io/columns.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 #include "method.hpp"
 
 namespace frictionlab::cli {
@@ -95,20 +99,63 @@ void add_condition_series(Result& r, const IdimData& data, const OptionValues& o
   }
 }
 
-// The option values with the EMPS controller's drive gain taken from --gain when not given
-// (--iv --controller emps-pd): the controller's volts become force through the same gain.
-OptionValues with_drive_gain(const OptionValues& options, const Dataset& d, const DataOptions& c) {
+// The controller's gains given as the names of scalars of the data file (--kp kp: a MAT file's
+// variable) replaced by their values; `sources` notes each one's name and file.
+OptionValues with_file_scalars(const OptionValues& options, const Dataset& d, std::map<std::string, std::string>& sources) {
   OptionValues v = options;
-  if (v.flag("iv") && v.text("controller") == "emps-pd" && !v.given("drive-gain") && !c.gain.empty())
+  for (const char* name : {"kp", "kd", "ki", "kv", "drive-gain", "control-limit"}) {
+    if (!v.given(name) || !std::isnan(v.number(name))) continue;
+    const std::string scalar = v.text(name), flag = std::string("--") + name;
+    const double value = resolve_constant(d, scalar, flag);  // unknown: names the file and lists its scalars
+    try {
+      v.set(name, value, flag);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(errc::option_out_of_range, d.where() + e.what() + " (the scalar '" + scalar + "' of the file)",
+                       ErrorFields{.file = d.file, .column = scalar, .option = flag, .value = format_number(value, 6)});
+    }
+    sources[name] = flag + " " + scalar + ": scalar of " + file_name(d.file);
+  }
+  return v;
+}
+
+// IDIM-IV's controller from --scenario, read as validate reads a scenario: its data file replaced
+// by the identification's, its friction law and inertia by placeholders (IDIM-IV simulates its
+// own estimate), so that only the controller and the plant's kind matter.
+IdimIvScenario iv_scenario(const std::string& path, const Dataset& d, Axis axis) {
+  ScenarioOptions so;
+  so.data = std::make_shared<const Dataset>(d);
+  so.law = FrictionLaw();
+  so.axis = AxisParams{};
+  return idim_iv_scenario(load_scenario(path, so), path, axis);
+}
+
+// The option values with the EMPS controller's drive gain taken from --gain when neither given
+// nor in the scenario (--iv --controller emps-pd): the controller's volts become force through
+// the same gain.
+OptionValues with_drive_gain(const OptionValues& options, const Dataset& d, const DataOptions& c,
+                             const IdimIvScenario* scenario, std::map<std::string, std::string>& sources) {
+  OptionValues v = options;
+  const bool emps = v.text("controller") == "emps-pd" ||
+                    (v.text("controller").empty() && scenario && std::holds_alternative<EmpsPdParams>(scenario->controller));
+  if (v.flag("iv") && emps && !v.given("drive-gain") && !scenario && !c.gain.empty()) {
     v.set("drive-gain", resolve_constant(d, c.gain, "gain"), "--gain");
+    sources["drive-gain"] = "--gain " + c.gain;
+  }
   return v;
 }
 
 Result run(const MethodIO& io, const OptionValues& given) {
   const Dataset d = load_data(io.data, io.columns);
-  const OptionValues options = with_drive_gain(given, d, io.columns);
-  IdimOptions o = make_idim_options(options);
-  o.axis = io.columns.parsed_axis();
+  const Axis axis = io.columns.parsed_axis();
+  std::map<std::string, std::string> sources;  // the controller's values not given as numbers
+  OptionValues options = with_file_scalars(given, d, sources);
+  std::optional<IdimIvScenario> scenario;
+  if (options.flag("iv") && options.given("scenario")) scenario = iv_scenario(options.text("scenario"), d, axis);
+  options = with_drive_gain(options, d, io.columns, scenario ? &*scenario : nullptr, sources);
+  IdimOptions o = make_idim_options(options, scenario ? &*scenario : nullptr);
+  if (o.iv.enabled)
+    for (const auto& [name, source] : sources) o.iv.sources[name] = source;
+  o.axis = axis;
   const IdimData data = idim_data(d, io.columns, options);
   Result r = identify_idim(data, o);
   add_condition_series(r, data, options);

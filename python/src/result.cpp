@@ -120,6 +120,9 @@ void init_result(py::module_& m) {
       .def_readonly("numbers", &Diagnostics::numbers, "Free-form figures by name ('dt' in s, 'max_speed', ...).")
       .def_readonly("groups", &Diagnostics::groups, "Named groups of figures, e.g. groups['readoff'] = {'Fs': ..., 'Fc': ...}.")
       .def_readonly("lists", &Diagnostics::lists, "Named lists of records, e.g. lists['points'] (sweep): one dict per segment.")
+      .def_readonly("texts", &Diagnostics::texts,
+                    "Named words, e.g. texts['estimator'] = 'idim-iv', texts['iv_source_kp'] (where IDIM-IV's kp came "
+                    "from).")
       .def("__repr__", [](const Diagnostics& d) {
         return "Diagnostics(condition_number=" + num(d.condition_number) + ", warnings=" + std::to_string(d.warnings.size()) +
                ", numbers=" + py::cast<std::string>(py::repr(py::cast(d.numbers))) + ")";

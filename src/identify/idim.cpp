@@ -631,8 +631,13 @@ MethodInfo detail::idim_method_info() {
                "and position or velocity)"},
       {.name = "iv", .type = OptionType::flag, .default_value = false,
        .help = "IDIM-IV for a record taken in a closed loop: instruments from the model's own closed loop, "
-               "simulated with the experiment's controller (--controller and its gains) and reference "
-               "(--reference); removes the bias the loop's reaction to disturbances gives least squares"},
+               "simulated with the experiment's controller (--controller and its gains, or --scenario) and "
+               "reference (--reference); removes the bias the loop's reaction to disturbances gives least squares"},
+      {.name = "scenario", .type = OptionType::file,
+       .help = "IDIM-IV: a scenario YAML of the experiment (examples/emps_closed_loop.yaml) whose controller section "
+               "gives the controller (type, gains, limit, delay; EMPS pulses); its plant must be an axis. Read as "
+               "validate reads it (its data file replaced by DATA, friction and M not used); the controller options "
+               "given override its values (Python: a path, read with its own data file, or a Scenario)"},
       {.name = "reference", .type = OptionType::column, .unit = "m", .rotary_unit = "rad",
        .help = "IDIM-IV: column of the closed loop's reference position (Python: an array of the data's length)"},
       {.name = "feedforward", .type = OptionType::column, .unit = "N", .rotary_unit = "N m",
@@ -644,21 +649,21 @@ MethodInfo detail::idim_method_info() {
                "EMPS benchmark)",
        .words = {"pid", "emps-pd"}},
       {.name = "kp", .type = OptionType::number, .unit = "N/m or 1/s", .rotary_unit = "N m/rad or 1/s",
-       .help = "IDIM-IV: position gain (pid: N/m or N m/rad; emps-pd: the position loop's 1/s)", .min = 0},
+       .help = "IDIM-IV: position gain (pid: N/m or N m/rad; emps-pd: the position loop's 1/s)", .min = 0, .scalar_name = true},
       {.name = "kd", .type = OptionType::number, .unit = "N s/m", .rotary_unit = "N m s/rad",
-       .help = "IDIM-IV, pid: velocity feedback gain on the measured velocity. Default 0", .min = 0},
+       .help = "IDIM-IV, pid: velocity feedback gain on the measured velocity. Default 0", .min = 0, .scalar_name = true},
       {.name = "ki", .type = OptionType::number, .unit = "N/(m s)", .rotary_unit = "N m/(rad s)",
-       .help = "IDIM-IV, pid: integral gain. Default 0", .min = 0},
+       .help = "IDIM-IV, pid: integral gain. Default 0", .min = 0, .scalar_name = true},
       {.name = "kv", .type = OptionType::number, .unit = "V s/m", .rotary_unit = "V s/rad",
-       .help = "IDIM-IV, emps-pd: velocity-loop gain (EMPS: kv of the data file, 243.45)", .min = 0},
+       .help = "IDIM-IV, emps-pd: velocity-loop gain (EMPS: kv of the data file, 243.45)", .min = 0, .scalar_name = true},
       {.name = "drive-gain", .type = OptionType::number, .unit = "N/V", .rotary_unit = "N m/V",
        .help = "IDIM-IV, emps-pd: force per volt of the controller's output (EMPS: gtau). Command line default: "
                "--gain",
-       .min = 0, .min_open = true},
+       .min = 0, .min_open = true, .scalar_name = true},
       {.name = "control-limit", .type = OptionType::number, .unit = "N or V", .rotary_unit = "N m or V",
        .help = "IDIM-IV: saturation of the controller's output (pid: N or N m, default none; emps-pd: V, default "
                "10, the EMPS drive's)",
-       .min = 0, .min_open = true},
+       .min = 0, .min_open = true, .scalar_name = true},
       {.name = "control-delay", .type = OptionType::integer, .unit = "samples",
        .help = "IDIM-IV: samples from computing the controller's output to applying it, 0 or 1 (default: pid 0, "
                "emps-pd 1)",
@@ -675,53 +680,96 @@ MethodInfo detail::idim_method_info() {
 #pragma GCC diagnostic pop
 
 namespace {
-// The controller of --iv from the table's values, its sample period left to the record
-// (IdimIvOptions::sample_at_record_rate). \throws InputError naming what is missing.
-Controller idim_iv_controller(const OptionValues& v) {
-  const std::string kind = v.text("controller");
+// The controller of --iv from the table's values over the scenario's controller (null: none), its
+// sample period left to the record (IdimIvOptions::sample_at_record_rate); `sources` gets where
+// each value came from. \throws InputError naming what is missing or contradicts the scenario.
+Controller idim_iv_controller(const OptionValues& v, const IdimIvScenario* scenario,
+                              std::map<std::string, std::string>& sources) {
   const auto missing = [](const std::string& what) {
     return InputError(errc::option_invalid,
                       "idim: --iv needs the experiment's controller: " + what +
-                          " (Python: iv=True, controller=..., kp=..., and kd or kv, with reference=array)",
+                          " (Python: iv=True, controller=..., kp=..., and kd or kv, with reference=array; or scenario=)",
                       ErrorFields{.option = "--iv"});
   };
+  // A gain still given by name was not resolved against a data file (a library caller's values).
+  for (const char* name : {"kp", "kd", "ki", "kv", "drive-gain", "control-limit"})
+    if (v.given(name) && std::isnan(v.number(name)))
+      throw InputError(errc::option_invalid,
+                       std::string("idim: --") + name + " '" + v.text(name) +
+                           "': a scalar's name needs the data file to read it from (the command line reads the DATA "
+                           "file's; Python: pass source=the Data from load())",
+                       ErrorFields{.option = std::string("--") + name, .value = v.text(name)});
+  const bool scenario_pid = scenario && std::holds_alternative<PidParams>(scenario->controller);
+  const std::string scenario_kind = !scenario ? "" : scenario_pid ? "pid" : "emps-pd";
+  const auto from_scenario = [&](const char* key) { return "scenario " + scenario->file + ": controller." + key; };
+  std::string kind = v.text("controller");
+  if (kind.empty()) {
+    kind = scenario_kind;
+    if (scenario) sources["controller"] = from_scenario("type");
+  } else {
+    if (scenario && kind != scenario_kind)
+      throw InputError(errc::option_conflict,
+                       "idim: --controller " + kind + " contradicts the scenario " + scenario->file +
+                           ": its controller.type is " + scenario_kind +
+                           "; leave --controller out to use the scenario's, or leave --scenario out",
+                       ErrorFields{.file = scenario->file, .key = "controller.type", .option = "--controller", .value = kind});
+    sources["controller"] = "--controller";
+  }
   if (kind.empty())
     throw missing("give --controller pid with --kp N/m and --kd N s/m (optional --ki, --control-limit, "
                   "--feedforward COLUMN), or --controller emps-pd with --kp 1/s, --kv V s/m and --drive-gain N/V "
-                  "(default --gain), and --reference COLUMN, the reference position");
-  if (kind == "pid") {
-    if (!v.given("kp")) throw missing("--controller pid needs --kp (N/m or N m/rad)");
-    PidParams p;
-    p.Kp = v.number("kp");
-    if (v.given("kd")) p.Kd = v.number("kd");
-    if (v.given("ki")) p.Ki = v.number("ki");
-    if (v.given("control-limit")) p.limit = v.number("control-limit");
-    p.delay = v.given("control-delay") ? static_cast<int>(v.integer("control-delay")) : 0;
-    p.Ts = 1.0;  // the record's step, set by identify_idim
-    for (const char* name : {"kv", "drive-gain"})
+                  "(default --gain), or --scenario FILE with its controller; and --reference COLUMN, the reference "
+                  "position");
+  // Each value: the option when given, else the scenario's, else the default.
+  const auto take = [&](const char* name, const char* key, double& field) {
+    if (v.given(name)) {
+      field = name == std::string("control-delay") ? static_cast<double>(v.integer(name)) : v.number(name);
+      sources[name] = std::string("--") + name;
+    } else {
+      sources[name] = scenario ? from_scenario(key) : "default";
+    }
+  };
+  const auto conflicts = [&](std::initializer_list<const char*> names, const char* other) {
+    for (const char* name : names)
       if (v.given(name))
-        throw InputError(errc::option_conflict, std::string("idim: --") + name + " belongs to --controller emps-pd, not pid",
+        throw InputError(errc::option_conflict, std::string("idim: --") + name + " belongs to --controller " + other + ", not " + kind,
                          ErrorFields{.option = std::string("--") + name});
+  };
+  if (kind == "pid") {
+    if (!v.given("kp") && !scenario) throw missing("--controller pid needs --kp (N/m or N m/rad)");
+    conflicts({"kv", "drive-gain"}, "emps-pd");
+    PidParams p = scenario ? std::get<PidParams>(scenario->controller) : PidParams{};
+    double delay = scenario ? p.delay : 0;
+    take("kp", "Kp", p.Kp);
+    take("kd", "Kd", p.Kd);
+    take("ki", "Ki", p.Ki);
+    take("control-limit", "limit", p.limit);
+    take("control-delay", "delay", delay);
+    if (scenario && !v.given("control-delay")) sources["control-delay"] = "default (a scenario's pid has none: 0)";
+    p.delay = static_cast<int>(delay);
+    if (!scenario) p.Ts = 1.0;  // the record's step, set by identify_idim
     return p;
   }
-  if (!v.given("kp") || !v.given("kv"))
+  if (!scenario && (!v.given("kp") || !v.given("kv")))
     throw missing("--controller emps-pd needs --kp (1/s) and --kv (V s/m or V s/rad)");
-  if (!v.given("drive-gain")) throw missing("--controller emps-pd needs --drive-gain (N/V or N m/V; the command line's default is --gain)");
-  for (const char* name : {"kd", "ki"})
-    if (v.given(name))
-      throw InputError(errc::option_conflict, std::string("idim: --") + name + " belongs to --controller pid, not emps-pd",
-                       ErrorFields{.option = std::string("--") + name});
-  EmpsPdParams p;
-  p.kp = v.number("kp");
-  p.kv = v.number("kv");
-  p.gtau = v.number("drive-gain");
-  if (v.given("control-limit")) p.limit = v.number("control-limit");
-  p.delay = v.given("control-delay") ? static_cast<int>(v.integer("control-delay")) : 1;
+  if (!scenario && !v.given("drive-gain"))
+    throw missing("--controller emps-pd needs --drive-gain (N/V or N m/V; the command line's default is --gain)");
+  conflicts({"kd", "ki"}, "pid");
+  EmpsPdParams p = scenario ? std::get<EmpsPdParams>(scenario->controller) : EmpsPdParams{};
+  double delay = p.delay;
+  take("kp", "kp", p.kp);
+  take("kv", "kv", p.kv);
+  take("drive-gain", "gtau", p.gtau);
+  take("control-limit", "limit", p.limit);
+  take("control-delay", "delay", delay);
+  p.delay = static_cast<int>(delay);
   return p;
 }
 }  // namespace
 
-IdimOptions make_idim_options(const OptionValues& v) {
+IdimOptions make_idim_options(const OptionValues& v) { return make_idim_options(v, nullptr); }
+
+IdimOptions make_idim_options(const OptionValues& v, const IdimIvScenario* scenario) {
   IdimOptions o;
   o.terms = v.list("terms");
   o.filter_order = static_cast<int>(v.integer("filter-order"));
@@ -751,9 +799,14 @@ IdimOptions make_idim_options(const OptionValues& v) {
   if (v.flag("iv")) {
     o.iv.enabled = true;
     o.iv.sample_at_record_rate = true;
-    o.iv.controller = idim_iv_controller(v);
+    o.iv.controller = idim_iv_controller(v, scenario, o.iv.sources);
   } else {
-    for (const char* name : {"controller", "kp", "kd", "ki", "kv", "drive-gain", "control-limit", "control-delay"}) {
+    if (scenario && !v.given("scenario"))
+      throw InputError(errc::option_conflict,
+                       "idim: scenario= describes the controller for IDIM-IV, but iv=True is not given",
+                       ErrorFields{.option = "scenario"});
+    for (const char* name :
+         {"controller", "scenario", "kp", "kd", "ki", "kv", "drive-gain", "control-limit", "control-delay"}) {
       if (!v.given(name)) continue;
       std::string keyword = name;
       std::replace(keyword.begin(), keyword.end(), '-', '_');

@@ -20,6 +20,7 @@
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/plants/axis.hpp"
 #include "frictionlab/simulate/closed_loop.hpp"
+#include "frictionlab/simulate/emps_pd_loop.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "idim_internal.hpp"
 
@@ -206,6 +207,27 @@ double min_canonical_correlation(const Mat& Z, const Mat& W) {
   return svd.singularValues().minCoeff();
 }
 
+// The controller the simulation ran, its values (SI, as the options give them) and where each
+// came from (IdimIvOptions::sources).
+void describe_controller(Result& r, const IdimOptions& o, double dt) {
+  const Controller c = controller_for(o.iv, dt);
+  auto& g = r.diagnostics.groups["iv_controller"];
+  if (const auto* pid = std::get_if<PidParams>(&c)) {
+    r.diagnostics.texts["iv_controller_type"] = "pid";
+    g = {{"kp", pid->Kp}, {"kd", pid->Kd}, {"ki", pid->Ki}, {"control_limit", pid->limit},
+         {"control_delay", static_cast<double>(pid->delay)}, {"sample_period", pid->Ts}};
+  } else if (const auto* emps = std::get_if<EmpsPdParams>(&c)) {
+    r.diagnostics.texts["iv_controller_type"] = "emps-pd";
+    g = {{"kp", emps->kp}, {"kv", emps->kv}, {"drive_gain", emps->gtau}, {"control_limit", emps->limit},
+         {"control_delay", static_cast<double>(emps->delay)}, {"sample_period", emps->dt}};
+  }
+  for (const auto& [name, source] : o.iv.sources) {
+    std::string key = name;
+    std::replace(key.begin(), key.end(), '-', '_');
+    r.diagnostics.texts["iv_source_" + key] = source;
+  }
+}
+
 Result failed(Result r, const std::string& message) {
   r.status = ResultStatus::error;
   r.message = message;
@@ -302,6 +324,7 @@ void run_idim_iv(Result& r, const IdimData& data, const IdimOptions& o, double d
     if (change <= o.iv.tolerance) break;
   }
   r.diagnostics.texts["estimator"] = "idim-iv";
+  describe_controller(r, o, dt);
   r.diagnostics.numbers["iv_iterations"] = iterations;
   r.diagnostics.numbers["iv_relative_change"] = change;
   if (!(change <= o.iv.tolerance)) {
@@ -346,3 +369,58 @@ void run_idim_iv(Result& r, const IdimData& data, const IdimOptions& o, double d
 }
 
 }  // namespace frictionlab::detail
+
+namespace frictionlab {
+
+IdimIvScenario idim_iv_scenario(const Scenario& scenario, const std::string& file, Axis axis) {
+  const auto refuse = [&](const std::string& key, const std::string& why, const std::string& value = "") {
+    return InputError(errc::scenario_value, file + ": " + key + ": " + why,
+                      ErrorFields{.file = file, .key = key, .option = "--scenario", .value = value});
+  };
+  const Plant* plant = scenario.plant.get();
+  if (!plant) throw refuse("plant", "missing; IDIM-IV takes the experiment's controller from the scenario");
+  if (plant->num_inputs() != 1)
+    throw refuse("plant.type",
+                 "the " + plant->type() + " has " + std::to_string(plant->num_inputs()) +
+                     " axes; IDIM-IV identifies one axis closed by the scenario's top-level controller (type axis)",
+                 plant->type());
+  const auto axis_name = [](Axis x) { return std::string(x == Axis::rotary ? "rotary (rad, N m)" : "linear (m, N)"); };
+  if (plant->motion_axis() != axis)
+    throw refuse("plant.type",
+                 "the " + plant->type() + " plant moves " + axis_name(plant->motion_axis()) + ", but the identification is " +
+                     axis_name(axis) + " (--axis); give the controller by options (--controller and its gains) instead",
+                 plant->type());
+  IdimIvScenario out;
+  out.file = file;
+  const Plant* inner = nullptr;
+  const Compensator* compensator = nullptr;
+  if (const auto* loop = dynamic_cast<const ClosedLoop*>(plant)) {
+    if (loop->controller().loop != ControlLoop::position)
+      throw refuse("controller.loop",
+                   "a velocity loop; IDIM-IV simulates a position loop (its reference is a position, --reference)",
+                   "velocity");
+    out.controller = loop->controller();
+    inner = &loop->inner();
+    compensator = loop->compensator();
+  } else if (const auto* emps = dynamic_cast<const EmpsPdLoop*>(plant)) {
+    out.controller = emps->params();
+    inner = &emps->inner();
+    compensator = emps->compensator();
+  } else {
+    throw refuse("controller",
+                 "missing; IDIM-IV takes the experiment's controller from it (type pid with Kp, Kd, Ki, limit; or type "
+                 "emps-pd with kp, kv, gtau, limit, delay)");
+  }
+  if (inner->type() != "axis")
+    throw refuse("plant.type",
+                 "'" + inner->type() + "': IDIM-IV simulates a rigid axis (M qdd = force - friction - offset); expected axis",
+                 inner->type());
+  if (compensator)
+    throw refuse("controller.compensation",
+                 "IDIM-IV does not simulate a compensator ('" + compensator->type() +
+                     "'); give the force the drive added as --feedforward COLUMN, or remove the block",
+                 compensator->type());
+  return out;
+}
+
+}  // namespace frictionlab

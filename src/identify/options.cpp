@@ -2,6 +2,7 @@
 #include "frictionlab/io/json_text.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -15,6 +16,13 @@ std::string number_text(double x) {
   char buf[64];
   const auto res = std::to_chars(buf, buf + sizeof buf, x);  // shortest text that reads back the same
   return std::string(buf, res.ptr);
+}
+
+// A variable's name as MATLAB and the CSV headers spell one: a letter or '_', then letters,
+// digits and '_' (so that "1e3x" or "-5" is a bad number, not a name).
+bool is_scalar_name(const std::string& s) {
+  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+  return std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
 std::string joined(const std::vector<std::string>& words, const char* last_sep) {
@@ -91,7 +99,8 @@ std::string OptionSpec::expected() const {
   const std::string range = r.empty() ? "" : " " + r;
   switch (type) {
     case OptionType::number:
-      return "a number" + range + (words.empty() ? "" : " or " + joined(words, " or "));
+      return "a number" + range + (words.empty() ? "" : " or " + joined(words, " or ")) +
+             (scalar_name ? " or the name of a scalar of the data file" : "");
     case OptionType::integer: return "an integer" + range;
     case OptionType::text: return words.empty() ? "a word" : joined(words, " or ");
     case OptionType::flag: return "true or false";
@@ -113,6 +122,7 @@ OptionValue check_option(const OptionSpec& spec, const OptionValue& value, const
       else if (const auto* i = std::get_if<long long>(&value)) x = static_cast<double>(*i);
       else if (const auto* s = std::get_if<std::string>(&value)) {
         if (std::find(spec.words.begin(), spec.words.end(), *s) != spec.words.end()) return *s;
+        if (spec.scalar_name && is_scalar_name(*s)) return *s;  // resolved against the data file by the method
         bad_value(spec, "'" + *s + "'", spelled);
       } else {
         type_error(std::holds_alternative<bool>(value) ? "a flag" : "a list");
@@ -165,8 +175,10 @@ OptionValue parse_option(const OptionSpec& spec, const std::string& text, const 
       if (std::find(spec.words.begin(), spec.words.end(), text) != spec.words.end()) return text;
       double x = 0;
       const auto res = std::from_chars(text.data(), text.data() + text.size(), x);
-      if (res.ec != std::errc() || res.ptr != text.data() + text.size() || text.empty())
+      if (res.ec != std::errc() || res.ptr != text.data() + text.size() || text.empty()) {
+        if (spec.scalar_name && is_scalar_name(text)) return text;
         bad_value(spec, "'" + text + "'", spelled);
+      }
       return check_option(spec, x, spelled);
     }
     case OptionType::integer: {

@@ -20,7 +20,7 @@ o = j["options"]
 assert list(o) == ["control-delay", "control-limit", "controller", "cutoff", "decimate", "delay", "delta",
                    "drive-gain", "exclude-below", "feedforward", "filter-order", "from", "iv", "iv-iterations",
                    "iv-tolerance", "kd", "ki", "kp", "kv", "load", "max-condition", "min-velocity", "padlen",
-                   "reference", "ripple-harmonics", "ripple-period", "skip", "skip-end", "temperature",
+                   "reference", "ripple-harmonics", "ripple-period", "scenario", "skip", "skip-end", "temperature",
                    "temperature-ref", "terms", "validate", "vs"], list(o)
 assert o["terms"] == {"value": ["inertia", "asymmetric", "stribeck"], "unit": "", "given": True}, o["terms"]
 assert o["delay"] == {"value": 1, "unit": "samples", "given": True}, o["delay"]

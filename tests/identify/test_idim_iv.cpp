@@ -1,21 +1,27 @@
 // IDIM-IV (identify/idim.hpp, IdimIvOptions) on the EMPS benchmark (data/emps: the record is
 // taken in the benchmark's PD position loop, control/emps_pd.hpp) and its refusals: no
 // controller, no reference, a reference of the wrong length, terms it cannot simulate, and an
-// iteration that does not converge.
+// iteration that does not converge. The controller from a scenario (idim_iv_scenario) with the
+// options over it, and the scenarios it cannot simulate.
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
+#include <variant>
 #include <vector>
 #include <string>
 
 #include "frictionlab/error.hpp"
 #include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/idim_record.hpp"
+#include "frictionlab/identify/method.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 #include "frictionlab/io/mat.hpp"
+#include "frictionlab/scenario/scenario.hpp"
+#include "../temp_dir.hpp"
 
 namespace fl = frictionlab;
 
@@ -198,4 +204,157 @@ TEST(IdimIv, TheIvSandwichWithTheRegressorsAsInstrumentsIsTheLeastSquaresOne) {
     EXPECT_NEAR(iv.parameters[i].std, ls.parameters[i].std, kRounding * ls.parameters[i].std) << names[i];
     EXPECT_NEAR(*iv.parameters[i].std_ols, *ls.parameters[i].std_ols, kRounding * *ls.parameters[i].std_ols) << names[i];
   }
+}
+
+// The controller from a scenario (identify idim --iv --scenario): the EMPS example's controller
+// section read by the scenario reader, its data file replaced by the record as validate does.
+namespace {
+
+fl::IdimIvScenario emps_scenario(fl::Axis axis = fl::Axis::linear) {
+  fl::ScenarioOptions so;
+  so.data = std::make_shared<const fl::Dataset>(fl::read_mat(std::string(FRICTIONLAB_DATA_DIR) + "/emps/DATA_EMPS.mat"));
+  so.law = fl::FrictionLaw();
+  so.axis = fl::AxisParams{};
+  const std::string path = std::string(FRICTIONLAB_SOURCE_DIR) + "/examples/emps_closed_loop.yaml";
+  return fl::idim_iv_scenario(fl::load_scenario(path, so), "emps_closed_loop.yaml", axis);
+}
+
+fl::OptionValues iv_values() {
+  fl::OptionValues v = fl::method_info(fl::MethodId::idim).values();
+  v.set("iv", true, "--iv");
+  return v;
+}
+
+// The InputError `f` throws (fails the test when it throws none).
+template <class F>
+fl::InputError input_error(F&& f) {
+  try {
+    f();
+  } catch (const fl::InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InputError";
+  return fl::InputError("none", "none");
+}
+
+}  // namespace
+
+TEST(IdimIvScenario, TheScenarioGivesTheControllerAndTheOptionsOverrideIt) {
+  const fl::IdimIvScenario s = emps_scenario();
+  const Emps e = load_emps();
+  const auto* c = std::get_if<fl::EmpsPdParams>(&s.controller);
+  ASSERT_NE(c, nullptr);
+  // The example names the file's scalars kp, kv, gtau: the very numbers load_emps reads.
+  EXPECT_EQ(c->kp, e.controller.kp);
+  EXPECT_EQ(c->kv, e.controller.kv);
+  EXPECT_EQ(c->gtau, e.controller.gtau);
+  EXPECT_EQ(c->limit, 10);
+  EXPECT_EQ(c->delay, 1);
+
+  fl::IdimOptions o = fl::make_idim_options(iv_values(), &s);
+  EXPECT_EQ(std::get<fl::EmpsPdParams>(*o.iv.controller).kv, e.controller.kv);
+  EXPECT_EQ(o.iv.sources.at("controller"), "scenario emps_closed_loop.yaml: controller.type");
+  EXPECT_EQ(o.iv.sources.at("kp"), "scenario emps_closed_loop.yaml: controller.kp");
+  EXPECT_EQ(o.iv.sources.at("drive-gain"), "scenario emps_closed_loop.yaml: controller.gtau");
+
+  fl::OptionValues v = iv_values();
+  v.set("kp", 100.0, "--kp");
+  v.set("control-delay", 0LL, "--control-delay");
+  o = fl::make_idim_options(v, &s);
+  const auto& over = std::get<fl::EmpsPdParams>(*o.iv.controller);
+  EXPECT_EQ(over.kp, 100.0);
+  EXPECT_EQ(over.delay, 0);
+  EXPECT_EQ(over.kv, e.controller.kv);  // not given: the scenario's
+  EXPECT_EQ(o.iv.sources.at("kp"), "--kp");
+  EXPECT_EQ(o.iv.sources.at("control-delay"), "--control-delay");
+  EXPECT_EQ(o.iv.sources.at("kv"), "scenario emps_closed_loop.yaml: controller.kv");
+}
+
+TEST(IdimIvScenario, TheIvResultWithTheScenarioIsTheOneWithTheNumbers) {
+  const Emps e = load_emps();
+  const fl::IdimIvScenario s = emps_scenario();
+  const fl::Result by_numbers = fl::identify_idim(e.data, iv_options(e));
+  const fl::Result by_scenario = fl::identify_idim(e.data, fl::make_idim_options(iv_values(), &s));
+  ASSERT_TRUE(by_numbers.ok()) << by_numbers.message;
+  ASSERT_TRUE(by_scenario.ok()) << by_scenario.message;
+  // The same controller, the same simulation: the same numbers to the bit.
+  for (const char* name : {"M", "Fv", "Fc", "offset"}) {
+    EXPECT_EQ(by_scenario.value(name), by_numbers.value(name)) << name;
+    EXPECT_EQ(by_scenario.find(name)->std, by_numbers.find(name)->std) << name;
+  }
+  EXPECT_EQ(by_scenario.diagnostics.texts.at("iv_controller_type"), "emps-pd");
+  EXPECT_EQ(by_scenario.diagnostics.texts.at("iv_source_kv"), "scenario emps_closed_loop.yaml: controller.kv");
+  EXPECT_EQ(by_scenario.diagnostics.groups.at("iv_controller").at("kv"), e.controller.kv);
+  EXPECT_EQ(by_scenario.diagnostics.groups.at("iv_controller").at("sample_period"), by_numbers.diagnostics.groups.at("iv_controller").at("sample_period"));
+}
+
+TEST(IdimIvScenario, ConflictsWithTheOptionsNameTheFileAndKey) {
+  const fl::IdimIvScenario s = emps_scenario();
+  fl::OptionValues v = iv_values();
+  v.set("controller", std::string("pid"), "--controller");
+  fl::InputError e = input_error([&] { (void)fl::make_idim_options(v, &s); });
+  EXPECT_EQ(e.code(), fl::errc::option_conflict);
+  EXPECT_EQ(e.fields().key, "controller.type");
+  EXPECT_EQ(e.fields().file, "emps_closed_loop.yaml");
+  EXPECT_NE(std::string(e.what()).find("contradicts the scenario emps_closed_loop.yaml"), std::string::npos) << e.what();
+  fl::OptionValues kd = iv_values();
+  kd.set("kd", 3.0, "--kd");
+  e = input_error([&] { (void)fl::make_idim_options(kd, &s); });
+  EXPECT_NE(std::string(e.what()).find("--kd belongs to --controller pid"), std::string::npos) << e.what();
+  // A scenario without --iv.
+  const fl::OptionValues no_iv = fl::method_info(fl::MethodId::idim).values();
+  e = input_error([&] { (void)fl::make_idim_options(no_iv, &s); });
+  EXPECT_NE(std::string(e.what()).find("iv=True is not given"), std::string::npos) << e.what();
+  // A rotary identification with the scenario's linear axis.
+  e = input_error([&] { (void)emps_scenario(fl::Axis::rotary); });
+  EXPECT_EQ(e.fields().key, "plant.type");
+  EXPECT_NE(std::string(e.what()).find("moves linear (m, N), but the identification is rotary"), std::string::npos) << e.what();
+}
+
+TEST(IdimIvScenario, ScenariosItCannotSimulateAreRefusedNamingTheKey) {
+  fl::testing::TempDir dir;
+  const std::string head = "plant: {type: axis, M: 2}\nfriction: {law: coulomb-viscous, Fc: 1, Fv: 2}\n"
+                           "input: {type: constant, value: 0}\nduration: 1\n";
+  const auto refused = [&](const std::string& name, const std::string& yaml, fl::Axis axis = fl::Axis::linear) {
+    const std::string path = dir.file(name, yaml);
+    return input_error([&] { (void)fl::idim_iv_scenario(fl::load_scenario(path), path, axis); });
+  };
+  fl::InputError e = refused("none.yaml", head);
+  EXPECT_EQ(e.fields().key, "controller");
+  EXPECT_NE(std::string(e.what()).find("none.yaml: controller: missing"), std::string::npos) << e.what();
+  e = refused("velocity.yaml", head + "controller: {loop: velocity, Kp: 10}\n");
+  EXPECT_EQ(e.fields().key, "controller.loop");
+  e = refused("compensated.yaml", head + "controller: {Kp: 1e4, Kd: 100, compensation: {type: feedforward}}\n");
+  EXPECT_EQ(e.fields().key, "controller.compensation");
+  EXPECT_NE(std::string(e.what()).find("--feedforward COLUMN"), std::string::npos) << e.what();
+  const std::string pendulum = "plant: {type: pendulum, m: 1, l: 0.5}\nfriction: {law: coulomb, Fc: 0.1}\n"
+                               "input: {type: constant, value: 0}\nduration: 1\ncontroller: {Kp: 10, Kd: 1}\n";
+  e = refused("pendulum.yaml", pendulum);
+  EXPECT_EQ(e.fields().key, "plant.type");
+  EXPECT_NE(std::string(e.what()).find("moves rotary"), std::string::npos) << e.what();
+  e = refused("pendulum_rotary.yaml", pendulum, fl::Axis::rotary);
+  EXPECT_EQ(e.fields().key, "plant.type");
+  EXPECT_NE(std::string(e.what()).find("expected axis"), std::string::npos) << e.what();
+  // A PID it can simulate: its gains, the position loop.
+  const std::string ok = dir.file("pid.yaml", head + "controller: {Kp: 4e4, Kd: 400, limit: 50}\n");
+  const fl::IdimIvScenario s = fl::idim_iv_scenario(fl::load_scenario(ok), ok, fl::Axis::linear);
+  const auto& pid = std::get<fl::PidParams>(s.controller);
+  EXPECT_EQ(pid.Kp, 4e4);
+  EXPECT_EQ(pid.Kd, 400);
+  EXPECT_EQ(pid.limit, 50);
+  fl::OptionValues v = iv_values();
+  v.set("kd", 300.0, "--kd");
+  const fl::IdimOptions o = fl::make_idim_options(v, &s);
+  EXPECT_EQ(std::get<fl::PidParams>(*o.iv.controller).Kd, 300);
+  EXPECT_EQ(std::get<fl::PidParams>(*o.iv.controller).Kp, 4e4);
+  EXPECT_EQ(o.iv.sources.at("kp"), "scenario " + ok + ": controller.Kp");
+}
+
+TEST(IdimIvScenario, AGainLeftAsAScalarNameIsRefusedWithoutTheFile) {
+  fl::OptionValues v = iv_values();
+  v.set("controller", std::string("emps-pd"), "--controller");
+  v.set("kp", std::string("kp"), "--kp");
+  const fl::InputError e = input_error([&] { (void)fl::make_idim_options(v); });
+  EXPECT_EQ(e.fields().option, "--kp");
+  EXPECT_NE(std::string(e.what()).find("needs the data file"), std::string::npos) << e.what();
 }

@@ -153,6 +153,22 @@ TEST(Options, ChecksNameTheOptionTheValueAndWhatWasExpected) {
   EXPECT_EQ(error_of([&] { make_sweep_options(v); }), "--segment '2.5-4': expected T_BEGIN:T_END in seconds, e.g. 2.5:4.0");
 }
 
+// IDIM-IV's gains take a number or the name of a scalar of the data file (kept as text for the
+// method to resolve); what is neither a number nor a name is still refused.
+TEST(Options, GainsTakeTheNameOfAScalarOfTheDataFile) {
+  const OptionSpec& kp = *method_info(MethodId::idim).option("kp");
+  EXPECT_EQ(std::get<std::string>(parse_option(kp, "Kp", "--kp")), "Kp");
+  EXPECT_EQ(std::get<std::string>(check_option(kp, std::string("gain_1"), "idim: kp")), "gain_1");
+  EXPECT_EQ(std::get<double>(parse_option(kp, "160.18", "--kp")), 160.18);
+  EXPECT_EQ(error_of([&] { parse_option(kp, "-5", "--kp"); }).rfind("--kp = -5 must be >= 0 (", 0), 0u);
+  EXPECT_EQ(error_of([&] { parse_option(kp, "1e3x", "--kp"); })
+                .rfind("--kp '1e3x': expected a number >= 0 or the name of a scalar of the data file (", 0),
+            0u);
+  // Not for options that take numbers only.
+  EXPECT_EQ(error_of([&] { parse_option(*method_info(MethodId::idim).option("cutoff"), "fc", "--cutoff"); }),
+            "--cutoff 'fc': expected a number > 0 (Hz)");
+}
+
 // The record of a result: every option of the table with its value, unit on the axis, and whether given.
 TEST(Options, RecordListsEveryOptionWithValueAndUnit) {
   const MethodInfo& sweep = method_info(MethodId::sweep);

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import frictionlab as fl
+from conftest import SOURCE_DIR
 
 # The Python module calls the same C++ code on the same doubles: only copies differ, so the
 # C++ test's figures hold to rounding. 1e-6 relative leaves room for a different BLAS.
@@ -347,3 +348,50 @@ def test_idim_iv_without_the_controller_names_what_to_give(emps):
     with pytest.raises(ValueError, match="reference"):
         fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"][:-1], controller="emps-pd", kp=160.18,
                          kv=243.45, drive_gain=35.15)
+
+
+def test_idim_iv_controller_from_a_scenario_and_from_the_file_scalars(emps):
+    """The controller of a scenario (a path, read with its own data file, or a Scenario) and the
+    gains named as the MAT file's scalars give the result of the numbers typed; keywords given
+    override the scenario's values, and the diagnostics say where each value came from."""
+    t, f, q = emps["t"], emps_force(emps), emps["qm"]
+    typed = fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"], controller="emps-pd",
+                             kp=float(emps["kp"]), kv=float(emps["kv"]), drive_gain=float(emps["gtau"]))
+    path = str(SOURCE_DIR / "examples" / "emps_closed_loop.yaml")
+    by_path = fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"], scenario=path)
+    by_object = fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"], scenario=fl.Scenario.load(path))
+    by_names = fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"], controller="emps-pd", kp="kp",
+                                kv="kv", drive_gain="gtau", source=emps)
+    for r in (typed, by_path, by_object, by_names):
+        assert r.ok, r.message
+    for r in (by_path, by_object, by_names):
+        for name in ("M", "Fv", "Fc", "offset"):
+            # The same controller and simulation: the same numbers to the bit.
+            assert r.parameters[name].value == typed.parameters[name].value, name
+    assert by_path.diagnostics.texts["iv_source_kv"] == f"scenario {path}: controller.kv"
+    assert by_object.diagnostics.texts["iv_source_kv"] == "scenario Scenario: controller.kv"
+    assert by_names.diagnostics.texts["iv_source_kp"] == "kp='kp': scalar of DATA_EMPS.mat"
+    assert by_names.diagnostics.groups["iv_controller"]["drive_gain"] == float(emps["gtau"])
+    over = fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"], scenario=path, kv=200.0,
+                            iv_iterations=40)
+    assert over.ok, over.message
+    assert over.diagnostics.groups["iv_controller"]["kv"] == 200.0
+    assert over.diagnostics.texts["iv_source_kv"] == "--kv"
+    assert over.diagnostics.texts["iv_source_kp"] == f"scenario {path}: controller.kp"
+
+
+def test_idim_iv_scenario_and_scalar_name_refusals(emps):
+    t, f, q = emps["t"], emps_force(emps), emps["qm"]
+    path = str(SOURCE_DIR / "examples" / "emps_closed_loop.yaml")
+    with pytest.raises(ValueError, match="contradicts the scenario .*controller.type is emps-pd"):
+        fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"], scenario=path, controller="pid", kp=1e4)
+    with pytest.raises(ValueError, match="plant.type: the axis plant moves linear"):
+        fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"], scenario=path, axis="rotary")
+    with pytest.raises(ValueError, match="iv=True is not given"):
+        fl.identify_idim(t, f, position=q, scenario=path)
+    with pytest.raises(ValueError, match="has no scalar 'Kp'.*scalars: gtau, kp, kv"):
+        fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"], controller="emps-pd", kp="Kp", kv="kv",
+                         drive_gain="gtau", source=emps)
+    with pytest.raises(ValueError, match="no source= gives one"):
+        fl.identify_idim(t, f, position=q, iv=True, reference=emps["qg"], controller="emps-pd", kp="kp", kv=243.45,
+                         drive_gain=35.15)

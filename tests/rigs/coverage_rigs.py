@@ -16,7 +16,16 @@ position of a 1 um encoder or a velocity with white noise.
   The closed loop's log also holds what IDIM-IV needs to simulate it: the reference position
   ("reference", m) and the drive's feedforward ("feedforward", N: the model-based feedforward plus
   KD times the reference velocity), so that the force is u = feedforward + KP (reference - q) -
-  KD v (v the velocity estimate), a PD on the position with Kp = KP, Kd = KD.
+  KD v, a PD on the position with Kp = KP, Kd = KD.
+  Timing (timing="centre", the default): at t_k the drive reads the encoder and the velocity, and
+  applies u_k at once, held until t_{k+1}: the sampled PID with no delay that IDIM-IV simulates
+  (--controller pid, control delay 0). The log's position is latched at the centre of the hold,
+  t_k + 1/(2 fs): the second difference that IDIM takes there weighs the held forces 1/8, 3/4,
+  1/8 around u_k, so the recorded force and the acceleration are not shifted against each other.
+  timing="end" is the earlier rig: the position recorded at the hold's end (t_{k+1}, half a sample
+  after the force's centre) and the velocity feedback from the encoder's backward difference; its
+  recorded force and acceleration are half a sample apart, which biases M by about -2 %
+  (docs/coverage.md).
 
 Noise: white, or AR(1) with a correlation time of 20 ms (whatever the rate: coefficient
 exp(-1/(fs 0.02))), standard deviation NOISE_STD either way.
@@ -108,10 +117,13 @@ def friction_scalar(kind, v):
     return FC_POS + FV_POS * v if v > 0 else -FC_NEG + FV_NEG * v
 
 
-def closed_loop(kind, t, q_ref, qd_ref, qdd_ref, disturbance):
+def closed_loop(kind, t, q_ref, qd_ref, qdd_ref, disturbance, timing="centre"):
     """The PD loop with feedforward (inverse dynamics of the reference, with the true friction's
     smooth part) at the log's sampling; returns position, velocity, recorded force and the
-    feedforward force (N: everything in the force that depends on the reference's derivatives)."""
+    feedforward force (N: everything in the force that depends on the reference's derivatives).
+    timing: "centre" or "end" (the module's docstring)."""
+    if timing not in ("centre", "end"):
+        raise ValueError(f"unknown timing {timing!r}")
     n = t.size
     dt = t[1] - t[0]
     sub = 4
@@ -126,9 +138,10 @@ def closed_loop(kind, t, q_ref, qd_ref, qdd_ref, disturbance):
         q_meas = round(q / ENCODER) * ENCODER
         v_est = (q_meas - q_prev) / dt
         q_prev = q_meas
-        u = ff[k] + KP * (q_ref[k] - q_meas) + KD * (qd_ref[k] - v_est)
+        v_fb = v if timing == "centre" else v_est
+        u = ff[k] + KP * (q_ref[k] - q_meas) + KD * (qd_ref[k] - v_fb)
         applied = u + disturbance[k] - (OFFSET if kind != "asymmetric" else 0.0)
-        for _ in range(sub):
+        for j in range(sub):
             if v == 0.0:
                 a = 0.0 if abs(applied) <= fstat else (applied - math.copysign(fstat, applied)) / M
             else:
@@ -138,13 +151,19 @@ def closed_loop(kind, t, q_ref, qd_ref, qdd_ref, disturbance):
                 v_new = 0.0
             q += h * 0.5 * (v + v_new)
             v = v_new
-        qs[k], vs[k], us[k] = q, v, u
+            if timing == "centre" and j + 1 == sub // 2:
+                qs[k], vs[k] = q, v  # latched at the centre of the hold
+        if timing == "end":
+            qs[k], vs[k] = q, v
+        us[k] = u
     return qs, vs, us, ff + KD * qd_ref
 
 
-def make_log(kind, noise_kind, sensor, fs, loop, seed, duration=DURATION, velocity_noise=VELOCITY_NOISE):
+def make_log(kind, noise_kind, sensor, fs, loop, seed, duration=DURATION, velocity_noise=VELOCITY_NOISE,
+             timing="centre"):
     """One log: dict(time, force, position or velocity) and the truth (truth(kind)); a velocity
-    sensor's white noise has the standard deviation `velocity_noise` (m/s)."""
+    sensor's white noise has the standard deviation `velocity_noise` (m/s); `timing`: the closed
+    loop's (closed_loop)."""
     rng = np.random.default_rng(seed)
     t = np.arange(int(round(duration * fs))) / fs
     q, qd, qdd = trajectory(t, rng)
@@ -154,7 +173,7 @@ def make_log(kind, noise_kind, sensor, fs, loop, seed, duration=DURATION, veloci
         force = M * qdd + friction(kind, qd) + offset + w
         pos, vel = q, qd
     elif loop == "closed":
-        pos, vel, force, feedforward = closed_loop(kind, t, q, qd, qdd, w)
+        pos, vel, force, feedforward = closed_loop(kind, t, q, qd, qdd, w, timing)
     else:
         raise ValueError(f"unknown loop {loop!r}")
     log = {"time": t, "force": force}

@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/simulate/closed_loop.hpp"
+#include "frictionlab/simulate/scenario.hpp"
 
 #include "frictionlab/export.hpp"
 namespace frictionlab FRICTIONLAB_API {
@@ -129,7 +131,33 @@ struct IdimIvOptions {
   /// Set the controller's sample period (PidParams::Ts, EmpsPdParams::dt) to the record's mean
   /// step: a drive that logs at its control rate (make_idim_options sets it). Default false.
   bool sample_at_record_rate = false;
+  /// Where each of the controller's values came from, by option name ("controller", "kp", "kd",
+  /// "ki", "kv", "drive-gain", "control-limit", "control-delay"): "--kp", "--kp Kp: scalar of
+  /// FILE", "scenario FILE: controller.Kp", "default" (make_idim_options and the command line
+  /// fill it). Reported as diagnostics.texts["iv_source_NAME"] (NAME with '-' as '_'). Empty: not
+  /// reported.
+  std::map<std::string, std::string> sources;
 };
+
+/// The experiment's controller as a scenario file gives it to IDIM-IV (`identify idim --iv
+/// --scenario FILE`; idim_iv_scenario): the scenario's own reader (scenario/scenario.hpp) reads
+/// it, make_idim_options puts the options given over it.
+struct IdimIvScenario {
+  Controller controller;  ///< the scenario's PID (position loop) or EMPS controller
+  std::string file;       ///< the scenario's file (or the name it goes by), for messages and sources
+};
+
+/// The controller of a scenario read by the scenario reader, checked for IDIM-IV, which simulates
+/// a rigid axis (M qdd = force - friction - offset) closed by a position-loop PID or the EMPS
+/// controller: the scenario's plant must be of type axis with a top-level controller, without a
+/// compensation block, and move on `axis` (an axis plant is linear: m, N). EMPS pulses are kept
+/// (the simulation adds them as the experiment did). The sample period is the record's when
+/// IdimIvOptions::sample_at_record_rate is set (the command line and Python set it).
+/// 	hrows InputError (scenario.value, naming `file` and the key: controller, controller.loop,
+///         controller.compensation, plant.type) for a scenario without a controller, a velocity
+///         loop, a compensation, a two-axis plant, a plant other than an axis, or one whose motion
+///         axis is not `axis`.
+IdimIvScenario idim_iv_scenario(const Scenario& scenario, const std::string& file, Axis axis);
 
 /// Options of identify_idim; defaults are the EMPS recipe.
 struct IdimOptions {
@@ -208,6 +236,14 @@ struct IdimOptions {
 /// chosen from the sample rate (auto_cutoff, auto_decimation, auto_skip). The second file of
 /// --validate and the axis are the caller's.
 IdimOptions make_idim_options(const OptionValues& values);
+/// The same, with IDIM-IV's controller from a scenario (idim_iv_scenario; null: none): its type,
+/// gains, limit and delay, each replaced by the option when one is given (--controller must then
+/// name the scenario's type). IdimIvOptions::sources says where each value came from.
+/// 	hrows InputError (option.conflict) for a --controller of another type than the scenario's
+///         (naming the file and controller.type), a gain of the other type's, a scenario without
+///         --iv; (option.invalid) for a gain that is still a scalar name (the command line resolves
+///         those against the data file first) and as make_idim_options.
+IdimOptions make_idim_options(const OptionValues& values, const IdimIvScenario* scenario);
 
 /// The regression the recipe builds: decimated regressor matrix, decimated force, and the terms.
 struct IdimRegression {
@@ -254,7 +290,10 @@ IdimRegression idim_regression(const IdimData& data, const IdimOptions& options,
 /// numbers "iv_iterations", "iv_relative_change" (the last), "iv_min_canonical_correlation" (the
 /// smallest canonical correlation between Z and W: the instruments' relevance, 1 = perfect),
 /// groups "iv_instrument_correlation" (per parameter, the correlation of its regressor column
-/// with its instrument) and "ls_estimate" (the least-squares values). Status error, naming the
+/// with its instrument), "ls_estimate" (the least-squares values) and "iv_controller" (the values
+/// the simulation ran: pid kp, kd, ki; emps-pd kp, kv, drive_gain; both control_limit,
+/// control_delay, sample_period s), texts "iv_controller_type" (pid or emps-pd) and
+/// "iv_source_NAME" (IdimIvOptions::sources: where each value came from). Status error, naming the
 /// cause and what to change, when the iteration does not converge in max_iterations, a model's
 /// simulation fails or diverges, or an estimate makes no model that can be simulated (M <= 0, a
 /// negative friction level).

@@ -51,6 +51,10 @@ struct OptionSpec {
   bool min_open = false, max_open = false;
   /// text: the values allowed (empty: any); number: words accepted instead of a number.
   std::vector<std::string> words;
+  /// number: the name of a scalar variable of the data file is accepted instead of a number (a MAT
+  /// file's gain "Kp"); it is kept as text, and the method resolves it against the file
+  /// (resolve_constant, io/columns.hpp) and checks the number it finds.
+  bool scalar_name = false;
   bool required = false;
   bool repeatable = false;  ///< list: the flag may be given several times, one item each
   /// What is expected, in words, when the generated phrase (expected()) does not say it well:

@@ -1,4 +1,6 @@
 """IDIM-LS from Python: identify_idim, its cross-test, regression and reconstruction."""
+import os
+
 import numpy as np
 
 from .. import _core
@@ -6,14 +8,61 @@ from .._args import _method_options, _source, _with_options_doc
 
 __all__ = ["identify_idim", "cross_test", "idim_regression", "idim_reconstruction"]
 
-def _idim_options(function, options, time=None):
+# IDIM-IV's gains that may name a scalar of the data file (kp="kp" on a MAT file's log).
+_SCALAR_GAINS = ("kp", "kd", "ki", "kv", "drive_gain", "control_limit")
+
+
+def _scalars_of(source):
+    """(file name, {name: value}) of the scalars of ``source``: a Data (load()) or a path."""
+    if source is None:
+        return "", None
+    if isinstance(source, (str, os.PathLike)):
+        from ..data import load
+        d = load(source)
+        return os.fspath(source), d.scalars
+    return getattr(source, "file", ""), getattr(source, "scalars", None)
+
+
+def _with_file_scalars(function, options, source):
+    """The options with each gain given as a scalar's name replaced by its value in ``source``, and
+    {option name: where it came from} for the IDIM-IV diagnostics. ValueError naming the file and
+    listing its scalars for a name it lacks."""
+    options, sources, scalars = dict(options), {}, None
+    for keyword in _SCALAR_GAINS:
+        name = options.get(keyword)
+        if not isinstance(name, str):
+            continue
+        if scalars is None:
+            file, scalars = _scalars_of(source)
+            if scalars is None:
+                raise ValueError(f"{function}: {keyword}='{name}' names a scalar of the data file, but no source= "
+                                 f"gives one (pass source=the Data from load(), or the file's path), or give a number")
+        if name not in scalars:
+            raise ValueError(f"{function}: {keyword}='{name}': {file or 'the data'} has no scalar '{name}'; expected a "
+                             f"number or the name of a scalar in the file; scalars: "
+                             f"{', '.join(sorted(scalars)) or 'none'}")
+        options[keyword] = float(scalars[name])
+        sources[keyword.replace("_", "-")] = f"{keyword}='{name}': scalar of {os.path.basename(file) or 'the data'}"
+    return options, sources
+
+
+def _idim_options(function, options, time=None, source=None):
     """(values, IdimOptions, inputs) from keyword options checked against idim's option table;
     ``axis`` among them picks the units. With ``time``, cutoff, decimate and skip not given are
-    taken from its sample rate (idim_rate_defaults), and marked so in the result."""
+    taken from its sample rate (idim_rate_defaults), and marked so in the result. Gains given as
+    a scalar's name are read from ``source`` (a Data or a path); ``scenario`` (a path or a
+    Scenario) gives IDIM-IV's controller under the options."""
     options = dict(options)
     axis = options.pop("axis", "linear")
+    options, sources = _with_file_scalars(function, options, source)
     values, inputs = _method_options("idim", function, options, stacklevel=4)
-    o = _core._make_idim_options(values)
+    scenario = inputs.get("scenario")
+    scenario = None if scenario is None else _core._idim_iv_scenario(scenario, axis)
+    o = _core._make_idim_options(values, scenario)
+    if sources and o.iv_sources:  # filled when iv=True
+        merged = dict(o.iv_sources)
+        merged.update(sources)
+        o.iv_sources = merged
     o.axis = axis
     given = {k: values.given(k) for k in ("cutoff", "skip", "decimate")}
     cutoff, skip, decimation, chosen = _rate_defaults(time, None if not given["cutoff"] else o.cutoff_hz,
@@ -63,14 +112,19 @@ def identify_idim(time, force, position=None, velocity=None, *, axis="linear", s
     and ``temperature`` (degC or K): arrays of length N for the terms "load" and "temperature".
     ``iv=True``: IDIM-IV for a record taken in a closed loop (docs/identify.md): give the
     controller (``controller="pid"`` with ``kp`` N/m, ``kd`` N s/m, optional ``ki``, or
-    ``controller="emps-pd"`` with ``kp`` 1/s, ``kv`` V s/m and ``drive_gain`` N/V) and
-    ``reference`` (array, m or rad), optionally ``feedforward`` (array, N or N m).
+    ``controller="emps-pd"`` with ``kp`` 1/s, ``kv`` V s/m and ``drive_gain`` N/V, or
+    ``scenario=`` a scenario file's path or a Scenario whose controller section gives them, the
+    keywords given overriding its values) and ``reference`` (array, m or rad), optionally
+    ``feedforward`` (array, N or N m). A gain may name a scalar of the data file (``kp="kp"``),
+    read from ``source`` (a Data from load(), or the file's path). The result's diagnostics
+    ``iv_controller`` and ``iv_source_*`` say which values the simulation used and where each
+    came from.
 
     Returns a Result; ``result.law`` is the identified friction law. The arrays and options
     are kept on the result (``result.inputs``, ``result.options``) for idim_reconstruction and
     frictionlab.plot.idim.
     """
-    values, opts, inputs = _idim_options("identify_idim", dict(options, axis=axis), time)
+    values, opts, inputs = _idim_options("identify_idim", dict(options, axis=axis), time, source)
     file, sha = _source(source)
     load, temperature = inputs.get("load"), inputs.get("temperature")
     r = _core._identify_idim(time, force, position, velocity, load, temperature, opts, file, sha,

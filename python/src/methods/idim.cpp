@@ -2,6 +2,7 @@
 // IdimOptions, idim_rate_defaults, _identify_idim, _cross_test and _idim_regression (the keyword
 // API is python/frictionlab/identify.py).
 #include "frictionlab/identify/idim.hpp"
+#include "frictionlab/scenario/scenario.hpp"
 
 #include "../cancellable.hpp"
 #include "method.hpp"
@@ -37,8 +38,31 @@ void bind(py::module_& m) {
                      "Reference temperature of the temperature term, degC or K (NaN: the mean of the used samples).")
       .def_readwrite("min_velocity", &IdimOptions::min_velocity, "No excitation at or below this max |qd|, m/s or rad/s (0).")
       .def_readwrite("max_condition", &IdimOptions::max_condition, "Largest condition number accepted (1e8).");
-  m.def("_make_idim_options", &make_idim_options, py::arg("values"),
-        "IdimOptions from the values of the method's option table (_option_values).");
+  idim_opts.def_property(
+      "iv_sources", [](const IdimOptions& o) { return o.iv.sources; },
+      [](IdimOptions& o, const std::map<std::string, std::string>& s) { o.iv.sources = s; },
+      "IDIM-IV: where each of the controller's values came from, by option name (reported as diagnostics "
+      "iv_source_NAME).");
+  py::class_<IdimIvScenario>(m, "_IdimIvScenario", "IDIM-IV's controller as a scenario gives it (idim_iv_scenario).")
+      .def_readonly("file", &IdimIvScenario::file);
+  m.def(
+      "_idim_iv_scenario",
+      [](const py::object& scenario, const std::string& axis) {
+        if (py::isinstance<Scenario>(scenario)) return idim_iv_scenario(scenario.cast<const Scenario&>(), "Scenario", parse_axis(axis));
+        const std::string path = path_arg(scenario, "identify_idim", "scenario");
+        // Read with its own data file; friction and inertia are not used (IDIM-IV simulates its estimate).
+        ScenarioOptions so;
+        so.law = FrictionLaw();
+        so.axis = AxisParams{};
+        return idim_iv_scenario(load_scenario(path, so), path, parse_axis(axis));
+      },
+      py::arg("scenario"), py::arg("axis"),
+      "IDIM-IV's controller from a scenario file path or a Scenario, checked (idim_iv_scenario).");
+  m.def("_make_idim_options",
+        [](const OptionValues& v, const IdimIvScenario* scenario) { return make_idim_options(v, scenario); },
+        py::arg("values"), py::arg("scenario") = nullptr,
+        "IdimOptions from the values of the method's option table (_option_values), with IDIM-IV's controller "
+        "from a scenario (_idim_iv_scenario) under them.");
   axis_property(idim_opts);
   m.def(
       "idim_rate_defaults",
