@@ -237,12 +237,12 @@ Adequacy assess_residuals(const std::vector<double>& velocity, const std::vector
   // data's: its correlation says nothing about the std a user reads.
   constexpr double kNegligible = 1e-3;
   const bool negligible = a.residual_std < kNegligible * options.force_scale;
-  if (options.advice.correlation && !negligible && !a.autocorrelation.empty() && a.autocorrelation.front() > kCorrelated) {
+  if (!options.advice.correlated_std.empty() && !negligible && !a.autocorrelation.empty() && a.autocorrelation.front() > kCorrelated) {
     a.findings.push_back("the residual is correlated from sample to sample (lag-1 autocorrelation " +
                          num(a.autocorrelation.front()) + "; " + std::to_string(n) + " samples count as about " +
-                         num(a.effective_samples) + " independent ones): standard deviations that assume"
-                         " independent residuals (idim's std_ols) are too small by about " +
-                         num(std::sqrt(inflation)) + " times; idim's std accounts for the correlation");
+                         num(a.effective_samples) + " independent ones): " + options.advice.correlated_std +
+                         " are too small by about " + num(std::sqrt(inflation)) + " times; " +
+                         options.advice.correlated_remedy);
   }
   constexpr double kStandstillShare = 0.2;  // beyond this share, stuck samples weigh on the Coulomb level
   if (options.advice.standstill && a.standstill_share > kStandstillShare) {

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "frictionlab/identify/adequacy.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 #include "method_support.hpp"
 #include "frictionlab/signal/differentiate.hpp"
@@ -61,6 +62,36 @@ std::vector<double> interval_loads(const Eigen::VectorXd& load, const std::vecto
 }
 
 // True when `loads` spread by more than kLeastLoadSpread of the largest; sets lo and hi.
+// Adequacy of the sliding fit (identify/adequacy.hpp): the sliding samples' residual against
+// velocity and time. A static-Coulomb-viscous law leaves a Stribeck dip above it at low speed;
+// the remedies are in breakaway's terms. Its std are those of least squares on these residuals,
+// so a correlated residual is reported.
+void add_breakaway_adequacy(Result& r, const BreakawayData& d, const std::vector<Eigen::Index>& rows,
+                            const Eigen::VectorXd& residual, Axis axis) {
+  constexpr std::size_t kMinSamples = 20;  // assess_residuals' least
+  if (rows.size() < kMinSamples) return;
+  std::vector<double> velocity, time, e;
+  double ss = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    velocity.push_back(d.velocity[rows[i]]);
+    time.push_back(d.time[rows[i]]);
+    e.push_back(residual[static_cast<Eigen::Index>(i)]);
+    ss += d.force[rows[i]] * d.force[rows[i]];
+  }
+  AdequacyOptions ao;
+  ao.force_scale = std::sqrt(ss / static_cast<double>(rows.size()));  // the sliding force's rms
+  ao.advice.stribeck = "the law has no Stribeck dip between Fs and Fc; map the friction-velocity curve from "
+                       "constant-speed runs (sweep) or fit it from a trajectory (idim with the stribeck term)";
+  ao.advice.shape = "the friction-velocity curve is not Coulomb plus viscous (sweep maps it point by point)";
+  ao.advice.asymmetry = "breakaway fits one level for both directions: use direction-dependent terms (idim: "
+                        "--terms inertia,asymmetric) or identify each direction's ramps on their own";
+  ao.advice.correlated_std = "breakaway's std of Fc, Fv and M (they assume independent samples)";
+  ao.advice.correlated_remedy = "read them as lower bounds";
+  ao.advice.standstill = false;  // the rows slide
+  add_adequacy(r, assess_residuals(velocity, {}, time, e, std::string(unit(Quantity::force, axis)),
+                                   std::string(unit(Quantity::velocity, axis)), ao));
+}
+
 bool load_spreads(const std::vector<double>& loads, double& lo, double& hi) {
   lo = std::numeric_limits<double>::infinity();
   hi = 0;
@@ -256,6 +287,7 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
   set_uncertainty_from_information(r, names, fit.information, fit.residual_variance);
   if (with_load) add("mu_load_static", mu_s, mu_s_std, Quantity::dimensionless);
   set_fit(r, y, X * fit.theta);
+  add_breakaway_adequacy(r, d, rows, y - X * fit.theta, o.axis);
   if (!std::isfinite(r.fit.relative_error_percent) || !std::isfinite(Fs))
     return fail(r, "the fit gave figures that are not finite numbers (force zero throughout?); the data cannot give an answer");
   r.diagnostics.condition_number = fit.condition_number;

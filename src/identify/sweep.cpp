@@ -333,7 +333,7 @@ void add_sweep_adequacy(Result& r, const SweepData& d, const std::vector<SweepPo
                     "held-out data, or look at the points in the figure";
   ao.advice.asymmetry = "fit direction-dependent levels (sweep --model coulomb-viscous-asymmetric or "
                         "stribeck-asymmetric)";
-  ao.advice.correlation = false;
+  ao.advice.correlated_std.clear();
   ao.advice.standstill = false;
   // Not against time: a sweep's speeds change with time, so a drift cannot be told from the
   // friction-velocity curve.

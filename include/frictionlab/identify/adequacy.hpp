@@ -27,10 +27,14 @@ struct AdequacyAdvice {
   std::string shape = "the friction-velocity curve is not the model's shape (sweep maps it point by point)";
   /// A friction level that differs by direction.
   std::string asymmetry = "use direction-dependent terms (idim: --terms inertia,asymmetric)";
-  /// Report a residual correlated from sample to sample: true when the method's std_ols assumes
-  /// these residuals independent (idim); false when its std comes from elsewhere (sweep's points).
-  bool correlation = true;
-  /// Report a large share of samples near standstill (with idim's --exclude-below remedy).
+  /// A residual correlated from sample to sample: the std that assume these residuals independent
+  /// (named in the finding, which says how many times too small they are) and what to do. Empty
+  /// `correlated_std`: not reported (a method whose std do not come from these residuals, such as
+  /// sweep's, fitted to its segments' means).
+  std::string correlated_std = "standard deviations that assume independent residuals (idim's std_ols)";
+  std::string correlated_remedy = "idim's std accounts for the correlation";
+  /// Report a large share of samples near standstill (with idim's --exclude-below remedy); false
+  /// for a method whose samples are in motion by construction.
   bool standstill = true;
 };
 
