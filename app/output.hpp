@@ -91,15 +91,15 @@ std::string commands_json(const CLI::App& app);
 
 /// The one rule for a run's outputs, applied before any work: every command hands it all its
 /// inputs (the files it reads, including those a scenario or a model names) and all its outputs.
+/// In this order (an output at an input is named as that, whatever else is wrong with it):
+///  - each output is compared with every input, then with every other output, by device and
+///    inode after resolving links (an output that does not exist yet: its directory's device and
+///    inode and its name; a report directory that is an input file too); a match is refused with
+///    or without `overwrite`, naming both (hard links count). Outputs written in place (a device,
+///    a FIFO: never replaced) are compared with the inputs only when they lead to a regular file;
 ///  - each output path must be able to take an output (check_output_path of io/atomic_write.hpp:
 ///    not a directory, block device or socket; its directory exists); "-" and "" pass;
-///  - each output is compared with every input and every other output by device and inode
-///    after resolving links (an output that does not exist yet: its directory's device and
-///    inode and its name); a match is refused with or without `overwrite`, naming both (hard
-///    links count). Outputs written in place (a character device, a FIFO: never replaced) are
-///    compared with the inputs only when they lead to a regular file (/dev/stdout > FILE);
-///  - an existing regular file, or a symbolic link (also a dangling one) at an output path, is
-///    replaced only with `overwrite`;
+///  - an existing regular file or symbolic link (a dangling one too) is replaced only with `overwrite`;
 ///  - the directory that will receive a new or replaced file must be writable;
 ///  - a figure's extension and its gnuplot, a report directory (check_plot, check_report_dir).
 /// \throws InputError (exit 2) with code output.is_input, output.duplicate, output.exists or
