@@ -129,7 +129,8 @@ Part read_part(const std::string& path) {
   nlohmann::ordered_json j;
   try {
     j = nlohmann::ordered_json::parse(text);
-  } catch (const nlohmann::ordered_json::parse_error& e) {
+  } catch (const nlohmann::ordered_json::exception& e) {
+    // parse_error, and out_of_range for a number beyond a double (1e400): both are not JSON we read.
     throw std::invalid_argument(path + ": not a part file (not JSON: " + e.what() + ")");
   }
   const std::string head = path + ": not a frictionlab part file";

@@ -150,6 +150,9 @@ for kind, parts in kinds.items():
         ("frictionlab_part", lambda j: j.__setitem__("frictionlab_part", 99), ["part format"]),
         ("frictionlab_part", lambda j: j.pop("frictionlab_part"), ["frictionlab_part"]),
         ("not an object", lambda j: Raw("[1, 2, 3]"), ["not a frictionlab part"]),
+        # A number beyond a double (once exit 1, "internal error: number overflow"; fuzz_merge).
+        ("a number", lambda j: Raw(json.dumps(j).replace('"total": ', '"x": 1e400, "total": ', 1)),
+         ["not a part file", "1e400"]),
         ("empty", lambda j: Raw(""), ["not a part file"]),
     ]
     if kind == "batch":
