@@ -19,7 +19,7 @@ export CCACHE_BASEDIR ?= $(CURDIR)
 FUZZ_BUILD        ?= build-fuzz
 FUZZ_SECONDS      ?= 600
 FUZZ_TEST_SECONDS ?= 15
-FUZZERS            = fuzz_csv fuzz_mat fuzz_scenario fuzz_law
+FUZZERS            = fuzz_csv fuzz_mat fuzz_scenario fuzz_law fuzz_merge
 
 .PHONY: all deps build test docs demo sanitize bench install-test coverage gallery clean fuzz-build fuzz fuzz-test fuzz-merge
 

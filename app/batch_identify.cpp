@@ -152,6 +152,7 @@ void add_batch_options(CLI::App* cmd, BatchOptions& o) {
                                 "its row's status and message; exit status 2 only when every file failed. With "
                                 "--shard: the part file, PART.json")
                     ->group(g);
+  output_option(o.table_opt);
   cmd->add_option("--jobs", o.jobs, "Files identified at once (threads)")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str()
@@ -169,11 +170,11 @@ void add_batch_options(CLI::App* cmd, BatchOptions& o) {
                   "axis3_20261102T0815.mat) or 'column:NAME' (POSIX time in s in the first sample of column NAME, or "
                   "scalar NAME of a MAT file)")
       ->group(g);
-  cmd->add_option("--drift", o.drift,
+  output_option(cmd->add_option("--drift", o.drift,
                   "With --date-from: write the drift table (each parameter by date, its change from the previous "
                   "log and whether it exceeds --drift-threshold combined std): CSV, or JSON by .json. With several "
                   "files, --plot FIG draws the drift figure (each parameter with its std against the date)")
-      ->group(g);
+      ->group(g));
   cmd->add_option("--drift-threshold", o.drift_threshold,
                   "Flag a change larger than this many combined std (1: about 32 % of pairs flag from noise "
                   "alone; 2 or 3 for a fleet)")
@@ -207,7 +208,9 @@ std::vector<BatchJob> batch_jobs(const std::vector<std::string>& data) {
 
 bool is_batch(const std::vector<std::string>& data, const BatchOptions& o) {
   std::error_code ec;
-  return data.size() != 1 || fs::is_directory(data.front(), ec) || !o.table.empty() || !o.shard.empty();
+  // --drift too: a drift table is a batch's output (of one log, one row), never ignored.
+  return data.size() != 1 || fs::is_directory(data.front(), ec) || !o.table.empty() || !o.shard.empty() ||
+         !o.drift.empty();
 }
 
 std::vector<BatchRow> run_batch(const std::vector<BatchJob>& jobs, int threads,
@@ -356,6 +359,17 @@ int run_identify_batch(const std::vector<std::string>& data, const BatchOptions&
                        const std::function<double(const std::string&, const std::string&)>& date_of_column,
                        const std::vector<RunFile>& inputs) {
   const std::vector<BatchJob> all = batch_jobs(data);  // first: a folder without data names itself
+  // The one rule for outputs, before the batch's own usage checks: an output at one of its logs
+  // is named as that, whichever option it is.
+  std::vector<RunFile> run_inputs = inputs;
+  for (const BatchJob& job : all) run_inputs.push_back({"DATA", job.file, RunFile::Kind::file});
+  check_run_files(run_inputs,
+                  {{"--table", o.table, RunFile::Kind::file},
+                   {"--drift", o.drift, RunFile::Kind::file},
+                   {"--plot", plot, RunFile::Kind::figure},
+                   {"--json", json, RunFile::Kind::file},
+                   {"--report", report, RunFile::Kind::report}},
+                  overwrite);
   if (!json.empty())
     throw std::invalid_argument("--json writes one file's result; with several files or a folder use --table OUT.json");
   if (!report.empty())
@@ -378,13 +392,6 @@ int run_identify_batch(const std::vector<std::string>& data, const BatchOptions&
   if (!dated && !o.drift.empty()) throw std::invalid_argument("--drift needs --date-from (the logs' dates)");
   if (!dated && !plot.empty())
     throw std::invalid_argument("--plot with several files draws the drift figure: it needs --date-from");
-  std::vector<RunFile> run_inputs = inputs;
-  for (const BatchJob& job : all) run_inputs.push_back({"DATA", job.file, RunFile::Kind::file});
-  check_run_files(run_inputs,
-                  {{"--table", o.table, RunFile::Kind::file},
-                   {"--drift", o.drift, RunFile::Kind::file},
-                   {"--plot", plot, RunFile::Kind::figure}},
-                  overwrite);
 
   std::vector<BatchJob> jobs;
   for (std::size_t i : shard_jobs(all.size(), shard)) jobs.push_back(all[i]);

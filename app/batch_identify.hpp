@@ -52,7 +52,7 @@ struct BatchJob {
 std::vector<BatchJob> batch_jobs(const std::vector<std::string>& data);
 
 /// True when the DATA arguments and options ask for a batch: more than one DATA, a folder,
-/// --table or --shard given. One file without --table is the single-file command, unchanged.
+/// --table, --shard or --drift given. One file without them is the single-file command, unchanged.
 bool is_batch(const std::vector<std::string>& data, const BatchOptions& o);
 
 /// One row: the job, the log's date (empty without --date-from) and the result (a Result with

@@ -317,7 +317,8 @@ Handler register_analyze(CLI::App& app) {
                   "envelope, stick-slip: linear (m, m/s, N) or rotary (rad, rad/s, N m): the units of the text")
       ->check(CLI::IsMember({"linear", "rotary"}))
       ->capture_default_str();
-  CLI::Option* json = cmd->add_option("--json", a->output.json, "write the result as JSON to FILE, or '-' for stdout");
+  CLI::Option* json =
+      output_option(cmd->add_option("--json", a->output.json, "write the result as JSON to FILE, or '-' for stdout"));
   add_plot_option(cmd, a->output.plot);
   cmd->add_flag("--overwrite", a->output.overwrite, "replace an existing --json or --plot file");
   add_read_options(cmd, a->read);

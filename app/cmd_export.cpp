@@ -211,9 +211,10 @@ Handler register_export(CLI::App& app) {
       "Example: frictionlab export model.json --mjcf axis.xml --json axis.json\n");
   cmd->add_option("model", a->model, "MODEL.json of `frictionlab identify ... --json`, or a law file (.json, .yaml)")
       ->required();
-  CLI::Option* c_option = cmd->add_option("--c", a->output, "write the C header to this file (- for stdout)");
-  CLI::Option* mjcf_option =
-      cmd->add_option("--mjcf", a->mjcf, "write the axis as a MuJoCo model (MJCF XML) to this file (- for stdout)");
+  CLI::Option* c_option =
+      output_option(cmd->add_option("--c", a->output, "write the C header to this file (- for stdout)"));
+  CLI::Option* mjcf_option = output_option(
+      cmd->add_option("--mjcf", a->mjcf, "write the axis as a MuJoCo model (MJCF XML) to this file (- for stdout)"));
   c_option->excludes(mjcf_option);
   mjcf_option->excludes(c_option);
   cmd->add_option("--compensation", a->compensation,
@@ -231,7 +232,8 @@ Handler register_export(CLI::App& app) {
                   "--mjcf: the part of the inertia the joint carries as MuJoCo's armature, e.g. a rotor's "
                   "(kg or kg m^2, >= 0 and < M; default 0)");
   cmd->add_option("--timestep", a->timestep, "--mjcf: MuJoCo's time step (s; default 0.002, MuJoCo's own)");
-  CLI::Option* json = cmd->add_option("--json", a->json, "--mjcf: write what was mapped and left out as JSON to FILE, or '-' for stdout");
+  CLI::Option* json = output_option(
+      cmd->add_option("--json", a->json, "--mjcf: write what was mapped and left out as JSON to FILE, or '-' for stdout"));
   cmd->add_flag("--overwrite", a->overwrite, "replace an existing output file");
   register_json_output(cmd, json, [] { return std::string("export"); });
   return [a]() -> int {

@@ -15,6 +15,7 @@ namespace {
 
 struct HelpArgs {
   bool markdown = false;
+  bool commands = false;
   std::string out;
   bool overwrite = false;
 };
@@ -41,15 +42,19 @@ Handler register_help(CLI::App& app) {
   auto* cmd = app.add_subcommand("help", "The options of every identification method, from their option tables "
                                          "(--markdown: the options reference as Markdown)");
   cmd->add_flag("--markdown", a->markdown, "Write the reference as Markdown (a heading and a table per method)");
-  cmd->add_option("-o,--output", a->out, "Write to FILE instead of stdout");
+  cmd->add_flag("--commands", a->commands,
+                "Write every command with its positional arguments and options as JSON instead, output options "
+                "marked (\"output\": file, figure or report)");
+  output_option(cmd->add_option("-o,--output", a->out, "Write to FILE instead of stdout"));
   cmd->add_flag("--overwrite", a->overwrite, "Replace an existing FILE");
-  return [a]() -> int {
-    const std::string text = a->markdown ? options_markdown() : options_text();
+  const CLI::App* root = &app;
+  return [a, root]() -> int {
+    const std::string text = a->commands ? commands_json(*root) + "\n" : a->markdown ? options_markdown() : options_text();
     if (a->out.empty()) {
       std::cout << text;
       return 0;
     }
-    check_output_file(a->out, a->overwrite, "--output");
+    check_run_files({}, {{"--output", a->out, RunFile::Kind::file}}, a->overwrite);
     AtomicWriteOptions w;
     w.overwrite = a->overwrite;
     write_file_atomic(a->out, text, w);

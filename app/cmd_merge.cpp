@@ -34,19 +34,21 @@ Handler register_merge(CLI::App& app) {
                "writes it; checks that the parts come from one run and that every shard is there once. --plot draws "
                "the whole run's figure as the unsharded run draws it.");
   cmd->add_option("parts", a->parts, "part files (any order), one per shard 1..N")->required();
-  cmd->add_option("-o,--output", a->out, "the whole output: OUT.csv (the table) or OUT.json (the JSON result or table)")
-      ->required();
-  cmd->add_option("--plot", a->plot,
+  output_option(
+      cmd->add_option("-o,--output", a->out, "the whole output: OUT.csv (the table) or OUT.json (the JSON result or table)")
+          ->required());
+  output_option(cmd->add_option("--plot", a->plot,
                   "also draw the whole run's figure (.svg, .png or .pdf; data and gnuplot script next to it), as the "
                   "unsharded run's --plot draws it: a map's parts, the map (1-D or 2-D, with the theory's boundary: "
                   "the scenario file is read again, see --scenario); identify parts with dates (--date-from), the drift "
-                  "figure. Other parts have no figure (exit 2)");
+                  "figure. Other parts have no figure (exit 2)"),
+                RunFile::Kind::figure);
   cmd->add_option("--scenario", a->scenario,
                   "map parts with --plot: the map's scenario file, when it is not at the path the parts recorded (a "
                   "cluster's /data/map.yaml); it must be the same file (its SHA-256 is checked)");
-  cmd->add_option("--drift", a->drift,
-                  "identify parts with dates: also write the drift table (CSV, or JSON by .json), as identify "
-                  "--drift does");
+  output_option(cmd->add_option("--drift", a->drift,
+                                "identify parts with dates: also write the drift table (CSV, or JSON by .json), as "
+                                "identify --drift does"));
   a->threshold_opt = cmd->add_option("--drift-threshold", a->drift_threshold,
                                      "identify parts: flag a drift change larger than this many combined std (as "
                                      "identify --drift-threshold)")
@@ -54,9 +56,6 @@ Handler register_merge(CLI::App& app) {
                          ->capture_default_str();
   cmd->add_flag("--overwrite", a->overwrite, "replace existing outputs");
   return [a]() -> int {
-    const std::string ext = std::filesystem::path(a->out).extension().string();
-    if (ext != ".csv" && ext != ".json")
-      throw std::invalid_argument("-o " + a->out + ": expected a .csv or .json file");
     std::vector<RunFile> inputs;
     for (const auto& part : a->parts) inputs.push_back({"PART", part, RunFile::Kind::file});
     if (!a->scenario.empty()) inputs.push_back({"--scenario", a->scenario, RunFile::Kind::file});
@@ -65,6 +64,10 @@ Handler register_merge(CLI::App& app) {
                      {"--drift", a->drift, RunFile::Kind::file},
                      {"--plot", a->plot, RunFile::Kind::figure}},
                     a->overwrite);
+    // After the rule for outputs: an -o at one of the parts is named as that, whatever its name.
+    const std::string ext = std::filesystem::path(a->out).extension().string();
+    if (ext != ".csv" && ext != ".json")
+      throw std::invalid_argument("-o " + a->out + ": expected a .csv or .json file");
 
     std::vector<Part> parts;
     for (const auto& p : a->parts) parts.push_back(read_part(p));

@@ -148,10 +148,11 @@ Handler register_plan(CLI::App& app) {
                   "The rig: a scenario YAML with an axis or dc-motor plant (and controller); its friction and input "
                   "are replaced by the prior's law and the plan's profile")
       ->required();
-  cmd->add_option("-o,--output", a->profile, "PROFILE.csv: the profile for the rig's controller (time_s and the command "
-                                             "with its unit)")
-      ->required();
-  CLI::Option* json = cmd->add_option("--json", a->json, "Write the plan and prediction as JSON to FILE, or '-' for stdout");
+  output_option(cmd->add_option("-o,--output", a->profile,
+                                "PROFILE.csv: the profile for the rig's controller (time_s and the command with its unit)")
+                    ->required());
+  CLI::Option* json = output_option(
+      cmd->add_option("--json", a->json, "Write the plan and prediction as JSON to FILE, or '-' for stdout"));
   cmd->add_option("--noise", a->noise, "Sensor noise, KEY=STD,... (see below)");
   cmd->add_option("--limits", a->limits, "Rig limits, KEY=VALUE,... (see below)");
   cmd->add_option("--runs", a->runs, "Monte Carlo runs (>= 2); default 40 (lugre 8)");

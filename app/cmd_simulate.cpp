@@ -84,10 +84,10 @@ Handler register_simulate(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand("simulate", "Simulate a scenario file (plant, friction law, input) to CSV.");
   cmd->add_option("scenario", args->scenario, "scenario YAML file (see examples/*.yaml)")->required();
-  cmd->add_option("-o,--output", args->output,
-                  "write the trajectory as CSV (columns time, position, velocity, friction, applied, current, "
-                  "voltage, reference, stuck; a plant with several axes: time, then x.position, x.velocity, ... "
-                  "x.drive for each axis); without it a summary is printed");
+  output_option(cmd->add_option("-o,--output", args->output,
+                                "write the trajectory as CSV (columns time, position, velocity, friction, applied, "
+                                "current, voltage, reference, stuck; a plant with several axes: time, then x.position, "
+                                "x.velocity, ... x.drive for each axis); without it a summary is printed"));
   add_plot_option(cmd, args->plot);
   cmd->add_flag("--overwrite", args->overwrite, "replace an existing output file");
   return [args]() -> int {
@@ -99,7 +99,16 @@ Handler register_simulate(CLI::App& app) {
     const std::vector<RunFile> outputs{{"-o", args->output, RunFile::Kind::file},
                                        {"--plot", args->plot, RunFile::Kind::figure}};
     std::vector<RunFile> inputs{{"scenario", args->scenario, RunFile::Kind::file}};
-    check_run_files(inputs, outputs, true);
+    try {
+      check_run_files(inputs, outputs, true);
+    } catch (const std::invalid_argument&) {
+      // An output at a file the scenario names is said to be that, whatever else is wrong with it
+      // (a --plot at the scenario's data file): the same check with those files throws it first.
+      std::vector<RunFile> all = inputs;
+      for (auto& f : scenario_inputs(args->scenario)) all.push_back(std::move(f));
+      check_run_files(all, outputs, true);
+      throw;
+    }
     progress_start("frictionlab simulate");
     std::vector<std::string> named;
     ScenarioOptions options;

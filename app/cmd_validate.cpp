@@ -230,7 +230,16 @@ int run(ValidateArgs& a) {
   const auto named = axis_models(a.model);
   std::vector<RunFile> inputs = command_inputs(a.output.command);
   for (const auto& [axis, file] : named) inputs.push_back({"MODEL " + axis, file, RunFile::Kind::file});
-  check_outputs(a.output, inputs);
+  try {
+    check_outputs(a.output, inputs);
+  } catch (const std::invalid_argument&) {
+    // An output at a file the scenario names is said to be that, whatever else is wrong with it
+    // (a --plot at the scenario's data file): the same check with those files throws it first.
+    std::vector<RunFile> all = inputs;
+    for (auto& f : scenario_inputs(a.scenario)) all.push_back(std::move(f));
+    check_outputs(a.output, all);
+    throw;
+  }
   ScenarioOptions so;
   std::map<std::string, IdentifiedModel> models;
   ModelFile mf;

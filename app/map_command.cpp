@@ -272,9 +272,9 @@ void add_map_options(CLI::App* cmd, MapArgs& a) {
                   "default: the first (the one contact of a 1-DOF plant). Its name is the table's contact column "
                   "and the JSON's result.contact")
       ->group("Map (analyze map SCENARIO.yaml)");
-  cmd->add_option("-o,--output", a.out,
-                  "map: the table, one row per grid point (.csv or .json), or with --shard the part file")
-      ->group("Map (analyze map SCENARIO.yaml)");
+  output_option(cmd->add_option("-o,--output", a.out,
+                                "map: the table, one row per grid point (.csv or .json), or with --shard the part file")
+                    ->group("Map (analyze map SCENARIO.yaml)"));
   cmd->add_option("--transient", a.transient,
                   "map: time discarded from the start of each run before classifying (s; default: half of the run)")
       ->check(CLI::NonNegativeNumber)

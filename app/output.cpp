@@ -216,25 +216,28 @@ void progress_stop() { Progress::instance().stop(); }
 
 void add_output_options(CLI::App* cmd, OutputOptions& o) {
   o.command = cmd;
-  CLI::Option* json =
-      cmd->add_option("--json", o.json, "Write the result as JSON to FILE, or to stdout with '-'")->group("Output");
-  cmd->add_option("--plot", o.plot,
-                  "Draw the result's figure to FILE (.svg, .png or .pdf, by gnuplot); FILE.dat (data) and FILE.gp "
-                  "(script) are written next to it for restyling")
-      ->group("Output");
-  cmd->add_option("--report", o.report,
-                  "Write a self-contained DIR/report.html (data, options, parameters with std and units, fit, "
-                  "diagnostics, warnings, figures)")
-      ->group("Output");
+  CLI::Option* json = output_option(
+      cmd->add_option("--json", o.json, "Write the result as JSON to FILE, or to stdout with '-'")->group("Output"));
+  output_option(cmd->add_option("--plot", o.plot,
+                                "Draw the result's figure to FILE (.svg, .png or .pdf, by gnuplot); FILE.dat (data) and "
+                                "FILE.gp (script) are written next to it for restyling")
+                    ->group("Output"),
+                RunFile::Kind::figure);
+  output_option(cmd->add_option("--report", o.report,
+                                "Write a self-contained DIR/report.html (data, options, parameters with std and units, "
+                                "fit, diagnostics, warnings, figures)")
+                    ->group("Output"),
+                RunFile::Kind::report);
   cmd->add_flag("--overwrite", o.overwrite, "Replace existing output files and report files")->group("Output");
   const std::string name = cmd->get_name();
   register_json_output(cmd, json, [name] { return name; });
 }
 
 void add_plot_option(CLI::App* cmd, std::string& plot) {
-  cmd->add_option("--plot", plot,
-                  "Draw the figure to FILE (.svg, .png or .pdf, by gnuplot); FILE.dat (data) and FILE.gp (script) are "
-                  "written next to it for restyling");
+  output_option(cmd->add_option("--plot", plot,
+                                "Draw the figure to FILE (.svg, .png or .pdf, by gnuplot); FILE.dat (data) and FILE.gp "
+                                "(script) are written next to it for restyling"),
+                RunFile::Kind::figure);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -451,11 +454,9 @@ void check_kind(const RunFile& out) {
 }  // namespace
 
 void check_run_files(const std::vector<RunFile>& inputs, const std::vector<RunFile>& outputs, bool overwrite) {
-  // 1. Each output can take an output at all (not a directory, its directory exists, ...).
   std::vector<RunFile> given;
   for (const RunFile& o : outputs)
     if (!o.path.empty() && o.path != "-") given.push_back(o);
-  for (const RunFile& o : given) check_kind(o);
 
   // The files the outputs write.
   std::vector<OutFile> files;
@@ -481,7 +482,22 @@ void check_run_files(const std::vector<RunFile>& inputs, const std::vector<RunFi
     }
   }
 
-  // 2. No output is one of the run's inputs (with or without overwrite).
+  // 1. No output is one of the run's inputs (with or without overwrite), checked first: whatever
+  //    else is wrong with such an output (a --plot at DATA.csv, a --report at a file), this is
+  //    what the user needs to hear. A report directory that is an input file is refused too.
+  for (const RunFile& o : given) {
+    if (o.kind != RunFile::Kind::report) continue;
+    const std::optional<FileId> dir = existing_id(o.path);
+    for (const RunFile& in : inputs) {
+      const std::optional<FileId> id = existing_id(in.path);
+      if (!dir || !id || !(*id == *dir)) continue;
+      refuse(errc::output_is_input,
+             o.option + " " + o.path + " is the input " + in.path + " (" + in.option +
+                 "): an output never replaces an input of its run, with or without --overwrite; write it to "
+                 "another directory",
+             o.option, o.path, in.option, in.path);
+    }
+  }
   for (const OutFile& f : files) {
     if (!f.id || (f.in_place && !f.id->regular)) continue;
     for (const RunFile& in : inputs) {
@@ -494,6 +510,9 @@ void check_run_files(const std::vector<RunFile>& inputs, const std::vector<RunFi
              f.option, f.path, in.option, in.path);
     }
   }
+
+  // 2. Each output can take an output at all (not a directory, its directory exists, ...).
+  for (const RunFile& o : given) check_kind(o);
 
   // 3. No two outputs are one file (devices and FIFOs are written through: several may share one).
   for (std::size_t i = 0; i < files.size(); ++i) {
@@ -565,13 +584,71 @@ std::vector<RunFile> scenario_inputs(const std::string& scenario) {
   return out;
 }
 
-std::vector<RunFile> command_inputs(const CLI::App* cmd, const std::vector<std::string>& outputs) {
+namespace {
+
+std::vector<std::pair<const CLI::Option*, RunFile::Kind>>& output_options() {
+  static std::vector<std::pair<const CLI::Option*, RunFile::Kind>> options;
+  return options;
+}
+
+const char* kind_name(RunFile::Kind k) {
+  switch (k) {
+    case RunFile::Kind::figure: return "figure";
+    case RunFile::Kind::report: return "report";
+    case RunFile::Kind::file: break;
+  }
+  return "file";
+}
+
+void list_commands(const CLI::App& app, const std::string& path, nlohmann::json& out) {
+  const auto subs = app.get_subcommands([](const CLI::App*) { return true; });
+  if (!subs.empty()) {
+    for (const CLI::App* sub : subs) list_commands(*sub, path.empty() ? sub->get_name() : path + " " + sub->get_name(), out);
+    return;
+  }
+  nlohmann::json positionals = nlohmann::json::array(), options = nlohmann::json::array();
+  for (const CLI::App* a = &app; a; a = a->get_parent()) {
+    for (const CLI::Option* opt : a->get_options()) {
+      if (opt->get_positional()) {
+        if (a == &app) positionals.push_back(opt->get_name(true, false));
+        continue;
+      }
+      if (opt->get_lnames().empty() && opt->get_snames().empty()) continue;
+      nlohmann::json o = {{"name", opt->get_lnames().empty() ? "-" + opt->get_snames().front()
+                                                              : "--" + opt->get_lnames().front()}};
+      if (!opt->get_snames().empty()) o["short"] = "-" + opt->get_snames().front();
+      if (const RunFile::Kind* k = output_kind(opt)) o["output"] = kind_name(*k);
+      if (opt->get_type_size() == 0) o["flag"] = true;
+      options.push_back(std::move(o));
+    }
+  }
+  out.push_back({{"command", path}, {"positionals", positionals}, {"options", options}});
+}
+
+}  // namespace
+
+CLI::Option* output_option(CLI::Option* opt, RunFile::Kind kind) {
+  output_options().emplace_back(opt, kind);
+  return opt;
+}
+
+const RunFile::Kind* output_kind(const CLI::Option* opt) {
+  for (const auto& [o, k] : output_options())
+    if (o == opt) return &k;
+  return nullptr;
+}
+
+std::string commands_json(const CLI::App& app) {
+  nlohmann::json commands = nlohmann::json::array();
+  list_commands(app, "", commands);
+  return json_text(nlohmann::json{{"schema", 1}, {"commands", commands}});
+}
+
+std::vector<RunFile> command_inputs(const CLI::App* cmd) {
   std::vector<RunFile> out;
   for (const CLI::App* app = cmd; app; app = app->get_parent()) {
     for (const CLI::Option* opt : app->get_options()) {
-      bool is_output = false;
-      for (const auto& name : outputs) is_output = is_output || opt->check_name(name);
-      if (is_output || opt->count() == 0) continue;
+      if (output_kind(opt) || opt->count() == 0) continue;
       const std::string role = opt->get_positional() ? opt->get_name(true, false) : opt->get_name(false, true);
       for (const std::string& v : opt->results()) {
         if (v.empty() || v == "-") continue;

@@ -74,17 +74,32 @@ struct RunFile {
   Kind kind = Kind::file;
 };
 
+/// Declares `opt` an output option of its subcommand, of `kind` (every option that names a file the
+/// run writes is declared through this: one list). command_inputs leaves output options out of the
+/// inputs, and `frictionlab help --commands` lists them, so a property test reaches every output of
+/// every command (tests/cli/outputs_never_inputs.py). Returns `opt`.
+CLI::Option* output_option(CLI::Option* opt, RunFile::Kind kind = RunFile::Kind::file);
+
+/// The kind of output `opt` was declared with by output_option, or nothing for an input or setting.
+const RunFile::Kind* output_kind(const CLI::Option* opt);
+
+/// Every subcommand of `app` that runs (the leaves: `simulate`, `identify sweep`, ...) with its
+/// positional arguments and options, as JSON: {"schema": 1, "commands": [{"command": "identify
+/// sweep", "positionals": ["DATA"], "options": [{"name": "--json", "output": "file"}, {"name":
+/// "--kt"}, ...]}]}; "output" (file, figure or report) marks output options (output_option).
+std::string commands_json(const CLI::App& app);
+
 /// The one rule for a run's outputs, applied before any work: every command hands it all its
 /// inputs (the files it reads, including those a scenario or a model names) and all its outputs.
+/// In this order (an output at an input is named as that, whatever else is wrong with it):
+///  - each output is compared with every input, then with every other output, by device and
+///    inode after resolving links (an output that does not exist yet: its directory's device and
+///    inode and its name; a report directory that is an input file too); a match is refused with
+///    or without `overwrite`, naming both (hard links count). Outputs written in place (a device,
+///    a FIFO: never replaced) are compared with the inputs only when they lead to a regular file;
 ///  - each output path must be able to take an output (check_output_path of io/atomic_write.hpp:
 ///    not a directory, block device or socket; its directory exists); "-" and "" pass;
-///  - each output is compared with every input and every other output by device and inode
-///    after resolving links (an output that does not exist yet: its directory's device and
-///    inode and its name); a match is refused with or without `overwrite`, naming both (hard
-///    links count). Outputs written in place (a character device, a FIFO: never replaced) are
-///    compared with the inputs only when they lead to a regular file (/dev/stdout > FILE);
-///  - an existing regular file, or a symbolic link (also a dangling one) at an output path, is
-///    replaced only with `overwrite`;
+///  - an existing regular file or symbolic link (a dangling one too) is replaced only with `overwrite`;
 ///  - the directory that will receive a new or replaced file must be writable;
 ///  - a figure's extension and its gnuplot, a report directory (check_plot, check_report_dir).
 /// \throws InputError (exit 2) with code output.is_input, output.duplicate, output.exists or
@@ -98,9 +113,9 @@ void check_run_files(const std::vector<RunFile>& inputs, const std::vector<RunFi
 std::vector<RunFile> scenario_inputs(const std::string& scenario);
 
 /// The inputs a parsed subcommand names: its positional arguments and every option value that
-/// is an existing file (a folder's files are the batch's own inputs), except the options in `outputs` (their
-/// long names, "--json"). A method's own input files (--validate, --static) are found this way.
-std::vector<RunFile> command_inputs(const CLI::App* cmd, const std::vector<std::string>& outputs = {"--json", "--plot", "--report", "--table", "--drift", "-o", "--output", "--c", "--mjcf"});
+/// is an existing file (a folder's files are the batch's own inputs), except the output options
+/// (output_option). A method's own input files (--validate, --static) are found this way.
+std::vector<RunFile> command_inputs(const CLI::App* cmd);
 
 /// Adds --plot FILE to `cmd` (simulate, analyze: they have their own other output options).
 void add_plot_option(CLI::App* cmd, std::string& plot);

@@ -129,7 +129,8 @@ Part read_part(const std::string& path) {
   nlohmann::ordered_json j;
   try {
     j = nlohmann::ordered_json::parse(text);
-  } catch (const nlohmann::ordered_json::parse_error& e) {
+  } catch (const nlohmann::ordered_json::exception& e) {
+    // parse_error, and out_of_range for a number beyond a double (1e400): both are not JSON we read.
     throw std::invalid_argument(path + ": not a part file (not JSON: " + e.what() + ")");
   }
   const std::string head = path + ": not a frictionlab part file";
@@ -204,7 +205,9 @@ Part merge_parts(const std::vector<Part>& parts, const std::vector<std::string>&
   if (names.size() != parts.size()) throw std::invalid_argument("merge: one name per part is needed");
   const Part& first = parts.front();
   const std::string& first_name = names.front();
-  std::vector<std::string> seen(first.shard.count);  // part name of each shard, by K-1
+  // Part name of each shard given, by K. A map, not a vector of the shard count: a part that says
+  // "1/999999999" must be refused as incomplete, not allocate a slot for every shard.
+  std::map<std::size_t, std::string> seen;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const Part& p = parts[i];
     const auto foreign = [&](const std::string& what) {
@@ -221,7 +224,7 @@ Part merge_parts(const std::vector<Part>& parts, const std::vector<std::string>&
       foreign("columns");
     if (p.envelope != first.envelope || p.rows_at != first.rows_at || p.columns_at != first.columns_at)
       foreign("header (envelope)");
-    std::string& slot = seen[p.shard.index - 1];
+    std::string& slot = seen[p.shard.index];
     if (!slot.empty())
       throw std::invalid_argument(names[i] + ": duplicated part: shard " + p.shard.text() + " is also " + slot);
     slot = names[i];
@@ -231,10 +234,12 @@ Part merge_parts(const std::vector<Part>& parts, const std::vector<std::string>&
                                   " rows, not its " + std::to_string(want.size()) +
                                   " jobs in order (a truncated or edited part)");
   }
-  for (std::size_t k = 0; k < seen.size(); ++k)
-    if (seen[k].empty())
-      throw std::invalid_argument("merge: missing part: shard " + std::to_string(k + 1) + "/" +
-                                  std::to_string(seen.size()) + " was not given");
+  // Shards are 1..count and each was given once: the first K not among them is missing (at most
+  // parts.size() + 1 steps).
+  for (std::size_t k = 1; k <= first.shard.count; ++k)
+    if (!seen.count(k))
+      throw std::invalid_argument("merge: missing part: shard " + std::to_string(k) + "/" +
+                                  std::to_string(first.shard.count) + " was not given");
   Part out = first;
   out.shard = ShardSpec{};
   out.table.index.clear();

@@ -155,6 +155,12 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
   const auto add = [&](const std::string& name, double v, double s, Quantity q) { add_parameter(r, name, v, s, q, o.axis); };
 
   const double vmax = d.velocity.cwiseAbs().maxCoeff();
+  // A velocity that overflowed (positions near 1e308 differentiated) would make a threshold of inf.
+  if (!std::isfinite(vmax))
+    return fail(r, "the velocity exceeds the largest double (about 1.8e308 " +
+                       std::string(unit(Quantity::velocity, o.axis)) +
+                       ") at some sample; expected the velocity of a measured motion (check the position or velocity "
+                       "column's unit, --scale)");
   const double threshold = std::isfinite(o.velocity_threshold) ? o.velocity_threshold : 0.01 * vmax;
   if (!(vmax > threshold) || vmax == 0.0)
     return fail(r, "no motion detected: |velocity| never exceeded " + format_number(threshold) + " " +

@@ -340,6 +340,12 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
                        "); the record must contain presliding and sliding");
   // Sliding samples: |v| above 1 % of the largest speed, two samples away from any slower sample
   // (a reversal's kink spoils the differences there).
+  // Positions near the range of a double (1e308) overflow in their differences: the velocity,
+  // and every threshold made of it, would be inf ("|velocity| > inf").
+  if (!std::isfinite(range) || !std::isfinite(vmax))
+    return fail(r, "the positions are too far apart to differentiate: their range or the velocity between two "
+                   "samples exceeds the largest double (about 1.8e308 " + punit + " or " + vunit +
+                   "); expected positions of a measured motion (check the position column's unit, --scale)");
   const double threshold = 0.01 * vmax;
   std::vector<Eigen::Index> sliding;
   constexpr Eigen::Index kEdge = 2;

@@ -335,7 +335,27 @@ std::vector<Parameter> FrictionLaw::parameters() const {
 }
 
 void FrictionLaw::validate() const {
-  std::visit([](const auto& law) { law.validate(); }, law_);
+  std::visit(
+      [](const auto& law) {
+        law.validate();
+        // A bristle law (lugre, dahl, elastoplastic) relaxes at the rate sigma0 |v| / Fc toward a
+        // deflection Fc / sigma0: with sigma0 / Fc beyond 1e150 (1/m or 1/rad) the deflection is
+        // below 1e-150 and the rate overflows a double at a finite speed (a LuGre law with sigma0
+        // 1e308 gave -inf friction at 10 m/s). Real contacts are 1e2 to 1e9 per unit of Fc.
+        if constexpr (requires { law.sigma0; law.Fc; }) {
+          constexpr double kMaxStiffnessRatio = 1e150;
+          const double ratio = law.sigma0 / law.Fc;
+          if (!(ratio <= kMaxStiffnessRatio))
+            throw std::invalid_argument(
+                std::string(std::decay_t<decltype(law)>::kName) + ": sigma0 = " + format_number(law.sigma0) +
+                " (N/m or N m/rad) is too stiff for Fc = " + format_number(law.Fc) +
+                " (N or N m): sigma0 / Fc = " + format_number(ratio) +
+                " exceeds 1e+150 (1/m or 1/rad), where the bristle deflection Fc / sigma0 and the rate sigma0 |v| / Fc "
+                "leave the range of a double; expected the stiffness of a real contact (e.g. sigma0 = 1e5 N/m for Fc = "
+                "1 N)");
+        }
+      },
+      law_);
 }
 
 double FrictionLaw::sliding(double v) const {

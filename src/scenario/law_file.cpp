@@ -301,6 +301,7 @@ FrictionLaw load_law(const std::string& path) {
     throw InputError(errc::scenario_format, path + ": not valid YAML (" + e.what() + ")",
                      {.file = path, .row = static_cast<std::size_t>(e.mark.line + 1)});
   }
+  detail::check_quotes_closed(node, text, path);
   detail::check_unique_keys(node, path);
   if (node.IsMap() && node["friction"]) return law_from_yaml(node["friction"], path + ": friction");
   return law_from_yaml(node, path);

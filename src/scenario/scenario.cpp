@@ -1079,6 +1079,7 @@ Scenario load_scenario(const std::string& path, const ScenarioOptions& options) 
                          std::to_string(e.mark.column + 1) + ": " + e.msg,
                      {.file = path, .row = static_cast<std::size_t>(e.mark.line + 1)});
   }
+  detail::check_quotes_closed(root, text, path);
   if (!root || root.IsNull()) throw InputError(errc::scenario_format, path + ": empty scenario file", {.file = path});
   ScenarioOptions o = options;
   if (o.base_dir.empty()) o.base_dir = std::filesystem::path(path).parent_path().string();

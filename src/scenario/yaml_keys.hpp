@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -94,6 +95,58 @@ inline void check_unique_keys(const YAML::Node& node, const std::string& where, 
 inline void check_unique_keys(const YAML::Node& node, const std::string& where) {
   double nodes = 0;
   check_unique_keys(node, where, nodes, 0);
+}
+
+/// Refuses a quoted value whose closing quote is missing. yaml-cpp reads an unterminated quote
+/// to the end of the file as one value (the rest of the file swallowed, then "missing 'plant'"):
+/// every quoted scalar of the parsed `node` is scanned again in `text` from its opening quote, by
+/// YAML's own rules (\ escapes in "...", '' in '...'), and one that reaches the end of the text
+/// is an InputError scenario.format "FILE: line L, column C: unterminated quote: ...".
+inline void check_quotes_closed(const YAML::Node& node, const std::string& text, const std::string& file,
+                                std::set<int>& seen) {
+  if (!node.IsDefined()) return;
+  // Each node of the text once: an alias is the node it names, so a small file of aliases (an
+  // alias bomb) is walked in the time of its text, not of its expansion.
+  if (!node.Mark().is_null() && !seen.insert(node.Mark().pos).second) return;
+  if (node.IsScalar()) {
+    if (node.Tag() != "!") return;  // a plain scalar: no quotes
+    const YAML::Mark m = node.Mark();
+    if (m.is_null() || m.pos < 0 || static_cast<std::size_t>(m.pos) >= text.size()) return;
+    const std::size_t open = static_cast<std::size_t>(m.pos);
+    const char q = text[open];
+    if (q != '"' && q != '\'') return;
+    for (std::size_t i = open + 1; i < text.size(); ++i) {
+      if (q == '"' && text[i] == '\\') {
+        ++i;
+        continue;
+      }
+      if (text[i] != q) continue;
+      if (q == '\'' && i + 1 < text.size() && text[i + 1] == '\'') {
+        ++i;
+        continue;
+      }
+      return;  // closed
+    }
+    throw InputError(errc::scenario_format,
+                     file + ": line " + std::to_string(m.line + 1) + ", column " + std::to_string(m.column + 1) +
+                         ": unterminated quote: the value opened by " + (q == '"' ? "\"" : "'") +
+                         " here has no closing " + (q == '"' ? "\"" : "'") + " before the end of the file",
+                     {.file = file, .row = static_cast<std::size_t>(m.line + 1)});
+  }
+  if (node.IsSequence() || node.IsMap())
+    for (const auto& item : node) {
+      if (node.IsMap()) {
+        check_quotes_closed(item.first, text, file, seen);
+        check_quotes_closed(item.second, text, file, seen);
+      } else {
+        check_quotes_closed(item, text, file, seen);
+      }
+    }
+}
+
+inline void check_quotes_closed(const YAML::Node& node, const std::string& text, const std::string& file) {
+  std::set<int> seen;
+  check_quotes_closed(node, text, file, seen);
 }
 
 /// "WHERE: line L, column C: MESSAGE" for an exception yaml-cpp raised while a node was read

@@ -45,6 +45,16 @@ def test_errors_are_value_errors_with_the_library_message():
         fl.FrictionLaw({"law": "coulomb", "Fc": 1}).step(np.zeros(3), 1e-3)
 
 
+def test_a_bristle_law_too_stiff_for_a_double_is_refused():
+    # sigma0 1e308 once gave -inf friction at 10 m/s: sigma0 / Fc beyond 1e150 is refused naming sigma0.
+    with pytest.raises(ValueError, match=r"lugre: sigma0 = 1e\+308 \(N/m or N m/rad\) is too stiff for Fc = 1"):
+        fl.FrictionLaw({"law": "lugre", "sigma0": 1e308, "sigma1": 316.2, "sigma2": 0.4, "Fc": 1, "Fs": 1.5,
+                        "vs": 0.001})
+    law = fl.FrictionLaw({"law": "lugre", "sigma0": 1e9, "sigma1": 316.2, "sigma2": 0.4, "Fc": 1, "Fs": 1.5,
+                          "vs": 0.001})
+    assert math.isfinite(law.sliding(10.0))
+
+
 def test_repr_and_round_trip():
     law = fl.FrictionLaw({"law": "coulomb-viscous", "Fc": 2.0, "Fv": 0.5})
     assert repr(law) == "FrictionLaw('coulomb-viscous', Fc=2, Fv=0.5)"
