@@ -191,7 +191,7 @@ PlanResult plan_experiment(PlanMethod method, const PlanRig& rig, const PlanOpti
         break;
       }
 
-  if (!clean.temperature.empty()) {
+  if (!clean.temperature.empty() && method == PlanMethod::warm_up) {
     const auto [lo, hi] = std::minmax_element(clean.temperature.begin(), clean.temperature.end());
     out.simulated.push_back({"temperature_rise", *hi - *lo, "K", "temperature range of the run on the prior"});
   }
