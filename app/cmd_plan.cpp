@@ -20,8 +20,8 @@ struct PlanArgs {
   std::vector<std::string> noise, limits;
   int runs = 0;
   std::uint64_t seed = 1;
-  double margin = 0, lag_fraction = 0.01, rate = 0;
-  int speeds = 15;
+  double margin = 0, lag_fraction = 0.01, rate = 0, load = 0, warm_up = 0;
+  int speeds = 15, ripple_periods = 4;
   bool overwrite = false;
 };
 
@@ -79,6 +79,9 @@ int run(const PlanArgs& a) {
   o.design.lag_fraction = a.lag_fraction;
   o.design.speeds = a.speeds;
   o.design.sample_rate = a.rate;
+  o.design.load = a.load;
+  o.design.warm_up = a.warm_up;
+  o.design.ripple_periods = a.ripple_periods;
   o.runs = a.runs;
   o.seed = a.seed;
   if (a.runs == 1 || a.runs < 0) throw std::invalid_argument("--runs " + std::to_string(a.runs) + ": expected >= 2 Monte Carlo runs");
@@ -130,6 +133,15 @@ Handler register_plan(CLI::App& app) {
       "  idim       trapezoidal velocity moves out and back at 1, 1/2, 1/4 of the top speed, under a position\n"
       "             loop (controller: {loop: position, ...}).  Columns time_s,position_m (or _rad)\n"
       "  lugre      presliding sine (0.8 Fs) then sliding sine (2 Fs) of force or current; a LuGre prior.\n"
+      "  load-steps idim's moves at loads 0, --load / 2 and --load (the rig applies them: a third column,\n"
+      "             load_N or load_N_m), for mu_load (idim's load term); a position loop.\n"
+      "  warm-up    moves out and back at the top speed and half of it for --warm-up s (default 2 time constants\n"
+      "             of the scenario's environment: {thermal: ...}) while the contact heats, for Fv_per_K (idim's\n"
+      "             temperature term, the rig logging the temperature); a position loop.\n"
+      "  ripple-scan slow moves over --ripple-periods of the prior's ripple_period, the top harmonic at 1/20\n"
+      "             of idim's low-pass, at that speed and half of it, for the ripple's harmonics; a position loop.\n"
+      "  The effects' plans warn when the design cannot separate the effect from the other terms (e.g. a\n"
+      "  temperature that follows the speed schedule).\n"
       "--noise KEY=STD,... (repeatable): position (m or rad), velocity (m/s or rad/s), current (A: the force is\n"
       "  Kt times the measured current), force (N or N m: an axis's measured drive force), encoder (m or rad\n"
       "  per step: quantisation of the position).  Default: no noise.\n"
@@ -139,7 +151,7 @@ Handler register_plan(CLI::App& app) {
       "A parameter the plan cannot determine (e.g. vs when no speed lies below it) has std null and a warning.\n"
       "Example: frictionlab plan breakaway --prior examples/plan/craig_motor_prior.json \\\n"
       "           --scenario examples/craig_motor_trapezoid.yaml --noise current=2e-4,velocity=0.5 -o ramp.csv");
-  cmd->add_option("METHOD", a->method, "breakaway, sweep, idim or lugre")->required();
+  cmd->add_option("METHOD", a->method, "breakaway, sweep, idim, lugre, load-steps, warm-up or ripple-scan")->required();
   cmd->add_option("--prior", a->prior,
                   "Prior model: MODEL.json written by frictionlab identify ... --json (its law; parameters.M replaces "
                   "an axis plant's inertia), or a law file")
@@ -162,6 +174,10 @@ Handler register_plan(CLI::App& app) {
                   "breakaway: the ramp's lag bias rate x M / Fv as a fraction of Fc (sets the ramp rate)")
       ->capture_default_str();
   cmd->add_option("--speeds", a->speeds, "sweep: set points per direction")->capture_default_str();
+  cmd->add_option("--load", a->load, "load-steps: the largest load the rig applies, N or N m (> 0)");
+  cmd->add_option("--warm-up", a->warm_up, "warm-up: length of the run, s (default: 2 thermal time constants)");
+  cmd->add_option("--ripple-periods", a->ripple_periods, "ripple-scan: ripple periods each move covers (>= 2)")
+      ->capture_default_str();
   cmd->add_option("--rate", a->rate, "Sample rate of the profile and of the simulated measurement, Hz (default: the "
                                      "scenario's output_rate)");
   cmd->add_flag("--overwrite", a->overwrite, "Replace an existing -o or --json file");

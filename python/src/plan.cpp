@@ -14,7 +14,8 @@ void init_plan(py::module_& m) {
       "_plan",
       [](const std::string& method, const py::handle& prior, const py::handle& scenario,
          const std::vector<std::string>& noise, const std::vector<std::string>& limits, int runs, std::uint64_t seed,
-         double margin, double lag_fraction, int speeds, double rate, const py::handle& output, bool overwrite) {
+         double margin, double lag_fraction, int speeds, double rate, double load, double warm_up, int ripple_periods,
+         const py::handle& output, bool overwrite) {
         const PlanMethod pm = parse_plan_method(method);
         PlanOptions o;
         o.noise = parse_sensor_noise(noise, "plan: noise");
@@ -23,6 +24,9 @@ void init_plan(py::module_& m) {
         o.design.lag_fraction = lag_fraction;
         o.design.speeds = speeds;
         o.design.sample_rate = rate;
+        o.design.load = load;
+        o.design.warm_up = warm_up;
+        o.design.ripple_periods = ripple_periods;
         o.runs = runs;
         o.seed = seed;
         const std::string out_path = output.is_none() ? std::string() : path_arg(output, "plan", "output");
@@ -33,12 +37,19 @@ void init_plan(py::module_& m) {
         if (r.ok && !out_path.empty()) write_file_atomic(out_path, r.profile.to_csv(), {overwrite});
         std::vector<double> t, u;
         r.profile.samples(t, u);
-        return py::make_tuple(plan_to_json(r, o, out_path, -1), to_array(t), to_array(u));
+        py::object load_samples = py::none();
+        if (r.profile.load) {
+          std::vector<double> l(t.size());
+          for (std::size_t k = 0; k < t.size(); ++k) l[k] = r.profile.load->at(t[k]).value;
+          load_samples = to_array(l);
+        }
+        return py::make_tuple(plan_to_json(r, o, out_path, -1), to_array(t), to_array(u), load_samples);
       },
       py::arg("method"), py::arg("prior"), py::arg("scenario"), py::arg("noise"), py::arg("limits"), py::arg("runs"),
-      py::arg("seed"), py::arg("margin"), py::arg("lag_fraction"), py::arg("speeds"), py::arg("rate"), py::arg("output"),
+      py::arg("seed"), py::arg("margin"), py::arg("lag_fraction"), py::arg("speeds"), py::arg("rate"), py::arg("load"),
+      py::arg("warm_up"), py::arg("ripple_periods"), py::arg("output"),
       py::arg("overwrite"),
-      "Core of frictionlab.plan: returns (JSON text, profile time s, profile command).");
+      "Core of frictionlab.plan: returns (JSON text, profile time s, profile command, profile load N or N m or None).");
 }
 
 }  // namespace frictionlab::python

@@ -39,7 +39,9 @@ FeedbackCompensation::FeedbackCompensation(FrictionLaw law, FeedbackParams p)
 
 bool FeedbackCompensation::jacobian(const CompensatorInput& in, std::span<const double> z, std::span<double> doutput,
                                     std::span<double> dderiv) const {
-  if (law_.is_dynamic()) return false;
+  // A law whose levels move with the load or temperature: no analytic form (the load may follow the
+  // plant's state through the loop), difference quotients instead.
+  if (law_.is_dynamic() || law_.effects().moves_levels()) return false;
   const double region = detail::band_region_held(z[0], in.velocity, band_);
   const std::optional<double> slope = region == 0.0 ? std::optional<double>(0.0) : sliding_slope(law_, in.velocity);
   if (!slope) return false;

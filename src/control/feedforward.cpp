@@ -12,12 +12,17 @@ FeedforwardCompensation::FeedforwardCompensation(FrictionLaw law, FeedforwardPar
   at_minus_ = law_.sliding(-p.band);
 }
 
-double FeedforwardCompensation::inside(double vr) const {
-  return at_minus_ + (at_plus_ - at_minus_) * (vr + p_.band) / (2.0 * p_.band);
+double FeedforwardCompensation::inside(double vr, const Conditions& c) const {
+  // The band's ends move with the conditions; without load or temperature terms they are fixed.
+  const bool moves = law_.effects().moves_levels();
+  const double plus = moves ? law_.sliding(p_.band, c) : at_plus_;
+  const double minus = moves ? law_.sliding(-p_.band, c) : at_minus_;
+  return minus + (plus - minus) * (vr + p_.band) / (2.0 * p_.band);
 }
 
 bool FeedforwardCompensation::jacobian(const CompensatorInput&, std::span<const double>, std::span<double> doutput,
                                        std::span<double> dderiv) const {
+  if (law_.effects().moves_levels()) return false;
   std::fill(doutput.begin(), doutput.end(), 0.0);
   std::fill(dderiv.begin(), dderiv.end(), 0.0);
   return true;

@@ -16,6 +16,13 @@ const LuGre& require_lugre(const FrictionLaw& law) {
   if (lugre == nullptr)
     throw std::invalid_argument("lugre-observer: law = " + law.name() +
                                 " must be lugre (the observer runs a copy of the LuGre bristle state)");
+  // The observer's copy of the bristles runs on the law's own levels; moving them with a load or
+  // temperature would change its bristle state's meaning between samples, which it does not model.
+  if (law.effects().moves_levels())
+    throw std::invalid_argument("lugre-observer: law = " + law.name() + " carries " +
+                                (law.effects().load ? "a load term (mu_load)" : "a temperature term (Fv_per_K, Fc_per_K)") +
+                                ", which the observer does not follow (its bristle copy runs on fixed levels); use "
+                                "feedforward or feedback compensation, which take the load and temperature");
   return *lugre;
 }
 

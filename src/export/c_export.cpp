@@ -229,9 +229,55 @@ std::string breakaway(const Law&, const std::string& side) {
   else return "@_Fs" + side;  // static-coulomb-viscous, karnopp, stribeck
 }
 
+// The sliding force of one side with its levels moved by dFc, dFs, dFv (models/law_effects.hpp:
+// at_conditions moves Fc, Fs and Fv or sigma2 by these, then the law's own formula runs): the
+// formula of static_sliding with the moved levels, `@_sliding_at%(v, dFc, dFs, dFv)`.
+template <class Law>
+void static_sliding_at(Writer& w, const Law& law, const std::string& side) {
+  std::string head = "static inline REAL @_sliding_at%(REAL v, REAL dFc, REAL dFs, REAL dFv) {\n";
+  std::string unused = "  (void)dFc; (void)dFs; (void)dFv;\n";
+  if constexpr (std::is_same_v<Law, Coulomb>) {
+    w.code(head + unused + "  return (@_Fc% + dFc) * @_sign(v);\n}\n", side);
+  } else if constexpr (std::is_same_v<Law, Viscous>) {
+    w.code(head + unused + "  return (@_Fv% + dFv) * v;\n}\n", side);
+  } else if constexpr (std::is_same_v<Law, CoulombViscous> || std::is_same_v<Law, StaticCoulombViscous> ||
+                       std::is_same_v<Law, Karnopp>) {
+    w.code(head + unused + "  return (@_Fc% + dFc) * @_sign(v) + (@_Fv% + dFv) * v;\n}\n", side);
+  } else if constexpr (std::is_same_v<Law, Stribeck>) {
+    w.code(head + R"(  const REAL Fc = @_Fc% + dFc, Fs = @_Fs% + dFs, Fv = @_Fv% + dFv;
+  return @_sign(v) * (Fc + (Fs - Fc) * @_decay%(v)) + Fv * v;
+}
+)",
+           side);
+  } else if constexpr (std::is_same_v<Law, Smooth>) {
+    w.code(head + R"(  const REAL Fc = @_Fc% + dFc, Fs = @_Fs% + dFs, Fv = @_Fv% + dFv;
+  const REAL x = v / @_vt%;
+)" + (law.shape == SmoothShape::atan ? std::string("  const REAL s = @_two_over_pi * $atan(x);\n")
+                                     : std::string(R"(  const REAL a = 2.0_r * $fabs(x);
+  const REAL m = $expm1(a < 40.0_r ? -a : -40.0_r);
+  const REAL s = @_sign(x) * (-m / (2.0_r + m));
+)")) + R"(  const REAL level = Fs == Fc ? Fc : Fc + (Fs - Fc) * @_decay%(v);
+  return s * level + Fv * v;
+}
+)",
+           side);
+  } else {
+    (void)law;
+  }
+}
+
+// The breakaway level of one side with its levels moved, as a C expression of dFc and dFs.
+template <class Law>
+std::string breakaway_at(const Law& law, const std::string& side) {
+  const std::string b = breakaway(law, side);
+  if (b == "@_Fc" + side) return "(@_Fc" + side + " + dFc)";
+  if (b == "@_Fs" + side) return "(@_Fs" + side + " + dFs)";
+  return b;
+}
+
 // Static laws: constants, @_friction(v) and @_friction_stuck(v, applied).
 template <class Law>
-void static_law(Writer& w, const Law& law) {
+void static_law(Writer& w, const Law& law, bool moves_levels) {
   std::string hi, lo;
   if constexpr (std::is_same_v<Law, Table>) {
     detail::TableSide pos, neg;  // the points and slopes the Table interpolates (models/table_knots.hpp)
@@ -255,12 +301,30 @@ static inline REAL @_friction(REAL v) { return v >= 0.0_r ? @_sliding_pos(v) : @
 )");
     hi = breakaway(law.pos, "_pos");
     lo = breakaway(law.neg, "_neg");
+    if (moves_levels) {
+      static_sliding_at(w, law.pos, "_pos");
+      static_sliding_at(w, law.neg, "_neg");
+      w.code("static inline REAL @_friction_moved(REAL v, REAL dFc, REAL dFs, REAL dFv) {\n"
+             "  return v >= 0.0_r ? @_sliding_at_pos(v, dFc, dFs, dFv) : @_sliding_at_neg(v, dFc, dFs, dFv);\n}\n");
+      w.code("static inline REAL @_breakaway_moved_pos(REAL dFc, REAL dFs) { (void)dFc; (void)dFs; return " +
+             breakaway_at(law.pos, "_pos") + "; }\n");
+      w.code("static inline REAL @_breakaway_moved_neg(REAL dFc, REAL dFs) { (void)dFc; (void)dFs; return " +
+             breakaway_at(law.neg, "_neg") + "; }\n");
+    }
   } else {
     static_side(w, law, "");
     w.code(R"(/* Friction force (N or N m) at velocity v (m/s or rad/s); 0 at v = 0. */
 static inline REAL @_friction(REAL v) { return @_sliding(v); }
 )");
     hi = lo = breakaway(law, "");
+    if (moves_levels) {
+      static_sliding_at(w, law, "");
+      w.code("static inline REAL @_friction_moved(REAL v, REAL dFc, REAL dFs, REAL dFv) {\n"
+             "  return @_sliding_at(v, dFc, dFs, dFv);\n}\n");
+      const std::string b = breakaway_at(law, "");
+      w.code("static inline REAL @_breakaway_moved_pos(REAL dFc, REAL dFs) { (void)dFc; (void)dFs; return " + b + "; }\n");
+      w.code("static inline REAL @_breakaway_moved_neg(REAL dFc, REAL dFs) { (void)dFc; (void)dFs; return " + b + "; }\n");
+    }
   }
   w.code("/* Breakaway levels (N or N m): the largest force a stuck contact holds pushed in + and in -. */\n"
          "static inline REAL @_breakaway_pos(void) { return " + hi + "; }\n"
@@ -503,7 +567,12 @@ static inline REAL @_friction(REAL v) {
 
 // --- compensations (control/*.cpp, their update()) ---
 
-void feedforward(Writer& w, const FrictionLaw& law, const FeedforwardParams& p) {
+struct ConditionArgs;
+void feedforward_at(Writer& w, const ConditionArgs& a);
+void feedback_at(Writer& w, const ConditionArgs& a);
+bool moves(const ConditionArgs& a);
+
+void feedforward(Writer& w, const FrictionLaw& law, const FeedforwardParams& p, const ConditionArgs& a) {
   const FeedforwardCompensation check(law, p);  // validates the band
   w.line("\n/* Feedforward compensation (control/feedforward.hpp): the law at the reference velocity. */");
   w.constant("ff_band", p.band, "half-width of the smoothing band, m/s (rad/s)");
@@ -515,10 +584,10 @@ static inline REAL @_feedforward(REAL vr) {
   if (vr > @_ff_band || vr < -@_ff_band) return @_friction(vr);
   return @_ff_at_minus + (@_ff_at_plus - @_ff_at_minus) * (vr + @_ff_band) / (2.0_r * @_ff_band);
 }
-)");
+)");  if (moves(a)) feedforward_at(w, a);
 }
 
-void feedback(Writer& w, const FrictionLaw& law, const FeedbackParams& p) {
+void feedback(Writer& w, const FrictionLaw& law, const FeedbackParams& p, const ConditionArgs& a) {
   const FeedbackCompensation check(law, p);
   w.line("\n/* Feedback compensation (control/feedback.hpp): the law at the measured velocity. */");
   w.constant("fb_dead_band", p.dead_band, "half-width of the dead band, m/s (rad/s)");
@@ -528,7 +597,7 @@ static inline REAL @_feedback(REAL v) {
   if (v > @_fb_dead_band || v < -@_fb_dead_band) return @_friction(v);
   return 0.0_r;
 }
-)");
+)");  if (moves(a)) feedback_at(w, a);
 }
 
 void lugre_observer(Writer& w, const FrictionLaw& law, const LuGreObserverParams& p) {
@@ -584,7 +653,7 @@ std::string upper(std::string s);
 
 // The position ripple (models/position_ripple.hpp: PositionRipple::force, the same operations in
 // the same order) and the friction with it at a position: PREFIX_ripple(q), PREFIX_friction_at(v, q).
-void ripple(Writer& w, const PositionRipple& r, bool dynamic) {
+void ripple(Writer& w, const PositionRipple& r, bool with_friction_at) {
   const std::size_t K = r.harmonics();
   std::vector<double> a(r.a), b(r.b);
   a.resize(K, 0.0);
@@ -610,11 +679,96 @@ static inline REAL @_ripple(REAL q) {
   return r;
 }
 )");
-  if (!dynamic)
+  if (with_friction_at)
     w.code(R"(
 /* The sliding friction at velocity v and position q: friction(v) + r(q), N or N m. */
 static inline REAL @_friction_at(REAL v, REAL q) { return @_friction(v) + @_ripple(q); }
 )");
+}
+
+// The load and temperature terms of a static law (models/law_effects.hpp: at_conditions), the
+// friction and breakaway levels at given conditions. The arguments of the public functions are
+// the terms the law has: (v[, q][, load][, T]).
+struct ConditionArgs {
+  bool ripple = false, load = false, temperature = false;
+  std::string decl() const {  // ", REAL load, REAL T" for the terms present
+    return std::string(load ? ", REAL load" : "") + (temperature ? ", REAL T" : "");
+  }
+  std::string pass() const {  // the arguments of @_level_shifts
+    return std::string(load ? "load" : "0.0_r") + ", " + (temperature ? "T" : "0.0_r");
+  }
+};
+
+void conditions(Writer& w, const LawEffects& e, const ConditionArgs& a) {
+  std::string units;
+  if (e.load) {
+    w.line("\n/* Load term: Fc + mu_load_coulomb |load|, Fs + mu_load_static |load|; `load` in N (N m on a rotary axis). */");
+    w.constant("mu_load_static", e.load->mu_static, "dimensionless: N of friction per N of load");
+    w.constant("mu_load_coulomb", e.load->mu_coulomb, "dimensionless: N of friction per N of load");
+  }
+  if (const auto& t = e.temperature) {
+    w.line("\n/* Temperature term: Fc, Fs + Fc_per_K (T - T_ref), Fv + Fv_per_K (T - T_ref); `T` in degC or K, the scale\n"
+           "   of T_ref. The library refuses a temperature outside [T_min, T_max]; the header clamps T to it. */");
+    w.constant("T_ref", t->T_ref, "degC or K: the law's own Fc, Fv hold here");
+    w.constant("Fc_per_K", t->Fc_per_K, "N/K (N m/K)");
+    w.constant("Fv_per_K", t->Fv_per_K, "N s/(m K) (N m s/(rad K))");
+    if (t->T_min) w.constant("T_min", *t->T_min, "degC or K");
+    if (t->T_max) w.constant("T_max", *t->T_max, "degC or K");
+  }
+  std::string body = "static inline void @_level_shifts(REAL load, REAL T, REAL *dFc, REAL *dFs, REAL *dFv) {\n"
+                     "  (void)load; (void)T;\n  *dFc = 0.0_r; *dFs = 0.0_r; *dFv = 0.0_r;\n";
+  if (e.load)
+    body += "  *dFc += @_mu_load_coulomb * $fabs(load);\n  *dFs += @_mu_load_static * $fabs(load);\n";
+  if (const auto& t = e.temperature) {
+    if (t->T_min) body += "  if (T < @_T_min) T = @_T_min;\n";
+    if (t->T_max) body += "  if (T > @_T_max) T = @_T_max;\n";
+    body += "  *dFc += @_Fc_per_K * (T - @_T_ref);\n  *dFs += @_Fc_per_K * (T - @_T_ref);\n"
+            "  *dFv += @_Fv_per_K * (T - @_T_ref);\n";
+  }
+  body += "}\n";
+  w.code("/* The moves of the levels Fc, Fs and Fv (N, N, N s/m; N m, N m, N m s/rad) at load and temperature T. */\n" + body);
+  const std::string args = std::string(a.ripple ? ", q (m or rad)" : "") + (a.load ? ", load (N or N m)" : "") +
+                           (a.temperature ? ", T (degC or K)" : "");
+  w.code("\n/* The sliding friction (N or N m) at velocity v (m/s or rad/s)" + args +
+         ": the law with its levels moved" + (a.ripple ? ", plus the ripple r(q)" : "") + ". */\n" +
+         "static inline REAL @_friction_at(REAL v" + (a.ripple ? ", REAL q" : "") + a.decl() + ") {\n" +
+         "  REAL dFc, dFs, dFv;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n" +
+         "  return @_friction_moved(v, dFc, dFs, dFv)" + (a.ripple ? " + @_ripple(q)" : "") + ";\n}\n");
+  if (a.load || a.temperature) {
+    const std::string decl = a.decl().substr(2);  // without the leading ", "
+    for (const char* dir : {"pos", "neg"})
+      w.code(std::string("/* Breakaway level pushed in ") + (dir[0] == 'p' ? "+" : "-") + " (N or N m) at" +
+             (a.load ? " load (N or N m)" : "") + (a.load && a.temperature ? "," : "") + (a.temperature ? " T (degC or K)" : "") +
+             " */\nstatic inline REAL @_breakaway_" + dir + "_at(" + decl + ") {\n" +
+             "  REAL dFc, dFs, dFv;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n  (void)dFv;\n" +
+             "  return @_breakaway_moved_" + dir + "(dFc, dFs);\n}\n");
+  }
+}
+
+bool moves(const ConditionArgs& a) { return a.load || a.temperature; }
+
+// The compensations at the measured (or estimated) load and temperature (control/feedforward.cpp,
+// feedback.cpp with CompensatorInput::load, ::temperature): the band's ends move with the levels.
+void feedforward_at(Writer& w, const ConditionArgs& a) {
+  w.code("/* The feedforward at load" + std::string(a.load ? " `load` (N or N m, measured or estimated)" : " 0") +
+         (a.temperature ? " and temperature `T` (degC or K, measured; pass T_ref when none is measured)" : "") +
+         ": the law with its levels moved. */\n"
+         "static inline REAL @_feedforward_at(REAL vr" + a.decl() + ") {\n"
+         "  REAL dFc, dFs, dFv, plus, minus;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n"
+         "  if (vr > @_ff_band || vr < -@_ff_band) return @_friction_moved(vr, dFc, dFs, dFv);\n"
+         "  plus = @_friction_moved(@_ff_band, dFc, dFs, dFv);\n"
+         "  minus = @_friction_moved(-@_ff_band, dFc, dFs, dFv);\n"
+         "  return minus + (plus - minus) * (vr + @_ff_band) / (2.0_r * @_ff_band);\n}\n");
+}
+
+void feedback_at(Writer& w, const ConditionArgs& a) {
+  w.code("/* The feedback at load" + std::string(a.load ? " `load` (N or N m, measured or estimated)" : " 0") +
+         (a.temperature ? " and temperature `T` (degC or K, measured; pass T_ref when none is measured)" : "") +
+         ": the law with its levels moved. */\n"
+         "static inline REAL @_feedback_at(REAL v" + a.decl() + ") {\n"
+         "  REAL dFc, dFs, dFv;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n"
+         "  if (v > @_fb_dead_band || v < -@_fb_dead_band) return @_friction_moved(v, dFc, dFs, dFv);\n"
+         "  return 0.0_r;\n}\n");
 }
 
 void check_prefix(const std::string& prefix) {
@@ -635,14 +789,16 @@ std::string upper(std::string s) {
 
 std::string c_header(const FrictionLaw& law, const CExportOptions& options) {
   check_prefix(options.prefix);
-  // The C form has the velocity law and a position ripple: a law whose levels move with load or
-  // temperature is refused rather than exported without them.
-  if (law.effects().moves_levels())
+  // The C form moves a static law's levels with load and temperature (PREFIX_friction_at); a
+  // dynamic law's state update in the header runs on fixed levels, so its terms are refused.
+  const LawEffects& effects = law.effects();
+  if (effects.moves_levels() && law.is_dynamic())
     throw InputError(errc::law_parameter,
-                     "export: law '" + law.name() +
-                         "' carries load or temperature effects, which the C header does not model yet (a position "
-                         "ripple it does); export the law without them",
-                     {.key = law.effects().load ? "mu_load" : "T_ref"});
+                     "export: law '" + law.name() + "' is dynamic and carries " +
+                         (effects.load ? "a load term (mu_load)" : "a temperature term (Fv_per_K, Fc_per_K)") +
+                         ": the header's state update runs on fixed levels and does not move them with the load or "
+                         "temperature; export the law without them, or a static law (stribeck, ...) with them",
+                     {.key = effects.load ? "mu_load" : "T_ref"});
   const std::optional<PositionRipple> ripple_effect = law.effects().ripple;
   if (ripple_effect && options.compensation.index() != 0)
     throw InputError(errc::law_parameter,
@@ -684,16 +840,19 @@ std::string c_header(const FrictionLaw& law, const CExportOptions& options) {
         } else if constexpr (std::is_same_v<Law, Gms>) {
           gms_law(w, l);
         } else {
-          static_law(w, l);
+          static_law(w, l, effects.moves_levels());
         }
       },
       law.variant());
-  if (ripple_effect) ripple(w, *ripple_effect, law.is_dynamic());
+  const ConditionArgs cargs{.ripple = ripple_effect.has_value(), .load = effects.load.has_value(),
+                            .temperature = effects.temperature.has_value()};
+  if (ripple_effect) ripple(w, *ripple_effect, !law.is_dynamic() && !effects.moves_levels());
+  if (effects.moves_levels()) conditions(w, effects, cargs);
   std::visit(
       [&](const auto& p) {
         using P = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<P, FeedforwardParams>) feedforward(w, law, p);
-        else if constexpr (std::is_same_v<P, FeedbackParams>) feedback(w, law, p);
+        if constexpr (std::is_same_v<P, FeedforwardParams>) feedforward(w, law, p, cargs);
+        else if constexpr (std::is_same_v<P, FeedbackParams>) feedback(w, law, p, cargs);
         else if constexpr (std::is_same_v<P, LuGreObserverParams>) lugre_observer(w, law, p);
         else if constexpr (std::is_same_v<P, DisturbanceObserverParams>) disturbance_observer(w, p);
       },

@@ -945,6 +945,13 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
                            " contacts; an environment serves a one-contact plant",
                        detail::key_fields(es.path()));
     sc.options.environments = {read_environment(es, src)};
+    // A compensator of a law with load or temperature terms sees the same load (a signal: measured;
+    // a gravity load: the plant's known load function, estimated from its state) and a fixed
+    // temperature; a thermal state it does not see (the law's T_ref).
+    if (const auto* loop = dynamic_cast<const ClosedLoop*>(sc.plant.get()); loop && loop->compensator()) {
+      const ContactEnvironment& e = sc.options.environments[0];
+      sc.plant = loop->with_conditions(CompensationConditions{.load = e.load, .temperature = e.temperature});
+    }
     // The temperatures the run starts at must lie in the law's range (it would stop at t = 0).
     const ContactEnvironment& env = sc.options.environments[0];
     const std::optional<double> T0 = env.temperature ? env.temperature

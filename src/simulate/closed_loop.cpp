@@ -20,11 +20,19 @@ std::span<const double> ClosedLoop::own_states(std::span<const double> x) const 
   return x.subspan(static_cast<std::size_t>(n_inner_ + n_pid_), static_cast<std::size_t>(n_comp_));
 }
 
+std::shared_ptr<const ClosedLoop> ClosedLoop::with_conditions(CompensationConditions c) const {
+  auto out = std::make_shared<ClosedLoop>(*this);
+  out->conditions_ = std::move(c);
+  return out;
+}
+
 CompensatorInput ClosedLoop::measured(double t, std::span<const double> x, const InputValue& r) const {
   CompensatorInput in;
   in.t = t;
   in.position = x[0];
   in.velocity = x[1];
+  in.load = conditions_.load.at(t, x.first(static_cast<std::size_t>(n_inner_)));
+  in.temperature = conditions_.temperature;
   if (pid_.params().loop == ControlLoop::position) {
     in.reference = r.value;
     in.reference_rate = r.rate;

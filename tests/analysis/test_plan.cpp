@@ -356,3 +356,149 @@ TEST(PlanLugre, PreslidingAndSlidingWithinTheTravel) {
   EXPECT_THAT(error_of([&] { design_experiment(PlanMethod::lugre, rig, parse_plan_limits({"force=1.5"}), {}); }),
               HasSubstr("--limits force = 1.5 N is below"));
 }
+
+// ---- the effects' designs: load steps, warm-up, ripple scan (issue: load, temperature, position) ----
+namespace {
+
+// The EMPS-like axis with `e` on its prior law (and so on the simulated rig).
+PlanRig effects_rig(const LawEffects& e) {
+  PlanRig rig = emps_axis();
+  rig.law = rig.law.with_effects(e);
+  rig.scenario.law = rig.law;
+  return rig;
+}
+
+LawEffects load_effect() {
+  LawEffects e;
+  e.load = LoadDependence{0.1, 0.1};  // 20 N more Coulomb friction at the largest load, 200 N
+  return e;
+}
+
+LawEffects temperature_effect() {
+  LawEffects e;
+  TemperatureDependence t;
+  t.T_ref = 20.0;
+  t.Fv_per_K = -2.0;  // N s/m/K: 1 % of Fv per kelvin, as grease thinning
+  e.temperature = t;
+  return e;
+}
+
+// A thermal model that heats the EMPS axis by about 10 K in the run (about 6 W dissipated).
+PlanRig warm_rig(double tau) {
+  PlanRig rig = effects_rig(temperature_effect());
+  ContactEnvironment env;
+  ThermalModel th;
+  th.T_ambient = 20.0;
+  th.tau = tau;
+  th.R = 2.0;
+  env.thermal = th;
+  rig.scenario.options.environments = {env};
+  return rig;
+}
+
+LawEffects ripple_effect() {
+  LawEffects e;
+  e.ripple = PositionRipple{0.02, {2.0}, {-1.0}};  // N: cogging of a 20 mm pitch
+  return e;
+}
+
+// Force noise alone (as PlanIdim.APrioriStdAgreesWithTheSpreadUnderForceNoise): the idim model is
+// linear in its parameters, so both predictions (Monte Carlo and a priori) must agree with the
+// spread of identifications on an independent rig within kAgreement.
+PlanOptions effects_options(int runs) {
+  PlanOptions o;
+  o.noise = parse_sensor_noise({"force=2"});
+  o.limits = parse_plan_limits({"travel=0.2,force=1500"});
+  o.runs = runs;
+  return o;
+}
+
+void expect_effect_determined(const PlanResult& r, const MonteCarloSpread& check, const std::string& name) {
+  const auto& p = r.prediction.parameter(name);
+  EXPECT_FALSE(p.undetermined) << name;
+  const double actual = check.parameter(name).std_monte_carlo;
+  std::cout << "  " << name << ": prior " << p.prior << ", mean " << p.mean << ", predicted std " << p.std_monte_carlo
+            << " (a priori " << p.std_a_priori << "), check spread " << actual << "\n";
+  EXPECT_LT(p.std_a_priori / actual, kAgreement) << name;
+  EXPECT_GT(p.std_a_priori / actual, 1 / kAgreement) << name;
+  // The effect is seen, not lost in the noise: its std is well below its prior value.
+  EXPECT_LT(p.std_monte_carlo, 0.2 * std::abs(p.prior)) << name;
+}
+
+}  // namespace
+
+TEST(PlanEffects, LoadStepsSeparateMuLoadAndThePredictionAgreesOnASimulatedRig) {
+  const PlanRig rig = effects_rig(load_effect());
+  PlanOptions o = effects_options(40);
+  o.design.load = 200;  // N
+  const PlanResult r = plan_experiment(PlanMethod::load_steps, rig, o);
+  ASSERT_TRUE(r.ok) << r.message;
+  EXPECT_EQ(r.profile.column_names(), (std::vector<std::string>{"time_s", "position_m", "load_N"}));
+  EXPECT_THAT(r.profile.to_csv(), HasSubstr(",200\n"));
+  for (const auto& w : r.warnings) EXPECT_THAT(w, ::testing::Not(HasSubstr("confounded"))) << w;
+  const MonteCarloSpread check = check_spread(PlanMethod::load_steps, r, rig, o.noise, 40);
+  expect_agreement(r, check, Fisher::conservative);
+  expect_a_priori_agreement(r, check);
+  expect_effect_determined(r, check, "mu_load");
+  EXPECT_THAT(error_of([&] { design_experiment(PlanMethod::load_steps, rig, o.limits, o.noise, {}); }),
+              HasSubstr("--load: a load-steps plan needs the largest load"));
+}
+
+TEST(PlanEffects, WarmUpSeparatesFvPerKAndThePredictionAgreesOnASimulatedRig) {
+  const PlanRig rig = warm_rig(20.0);  // s: the run lasts 2 tau = 40 s
+  const PlanOptions o = effects_options(40);
+  const PlanResult r = plan_experiment(PlanMethod::warm_up, rig, o);
+  ASSERT_TRUE(r.ok) << r.message;
+  double rise = 0;
+  for (const auto& f : r.simulated)
+    if (f.name == "temperature_rise") rise = f.value;
+  EXPECT_GT(rise, 5.0);  // K: the contact does warm up
+  for (const auto& f : r.simulated) std::cout << "  " << f.name << " " << f.value << " " << f.unit << "\n";
+  for (const auto& w : r.warnings) EXPECT_THAT(w, ::testing::Not(HasSubstr("confounded"))) << w;
+  const MonteCarloSpread check = check_spread(PlanMethod::warm_up, r, rig, o.noise, 40);
+  expect_agreement(r, check, Fisher::conservative);
+  expect_a_priori_agreement(r, check);
+  expect_effect_determined(r, check, "Fv_per_K");
+  EXPECT_THAT(error_of([&] { design_experiment(PlanMethod::warm_up, emps_axis(), o.limits, o.noise, {}); }),
+              HasSubstr("a warm-up plan needs the contact's thermal model"));
+}
+
+// A contact whose temperature follows the dissipated power at once (tau = 50 ms) is hot at the
+// fast moves and cool at the slow ones: qd (T - T_ref) is then a function of the speed, which
+// sign(qd) and qd span at two speeds. The plan says it cannot separate Fv_per_K.
+TEST(PlanEffects, TemperatureThatFollowsTheSpeedIsWarnedAsConfounded) {
+  const PlanRig rig = warm_rig(0.05);
+  PlanOptions o = effects_options(4);
+  o.design.warm_up = 6;  // s
+  const PlanResult r = plan_experiment(PlanMethod::warm_up, rig, o);
+  bool warned = false;
+  for (const auto& w : r.warnings)
+    if (w.find("Fv_per_K is confounded with the speed") != std::string::npos &&
+        w.find("temperature follows the speed schedule") != std::string::npos)
+      warned = true;
+  for (const auto& f : r.simulated) std::cout << "  " << f.name << " " << f.value << " " << f.unit << "\n";
+  EXPECT_TRUE(warned) << ::testing::PrintToString(r.warnings);
+}
+
+TEST(PlanEffects, RippleScanResolvesTheHarmonicsAndThePredictionAgreesOnASimulatedRig) {
+  const PlanRig rig = effects_rig(ripple_effect());
+  const PlanOptions o = effects_options(40);
+  const PlanResult r = plan_experiment(PlanMethod::ripple_scan, rig, o);
+  ASSERT_TRUE(r.ok) << r.message;
+  EXPECT_NEAR(r.profile.figure("distance"), 4 * 0.02, 4 * 0.02 * kExact);
+  for (const auto& f : r.simulated) std::cout << "  " << f.name << " " << f.value << " " << f.unit << "\n";
+  for (const auto& f : r.profile.figures) std::cout << "  " << f.name << " " << f.value << " " << f.unit << "\n";
+  for (const auto& w : r.warnings) std::cout << "  warning: " << w << "\n";
+  for (const auto& w : r.warnings) EXPECT_THAT(w, ::testing::Not(HasSubstr("confounded"))) << w;
+  const MonteCarloSpread check = check_spread(PlanMethod::ripple_scan, r, rig, o.noise, 40);
+  expect_agreement(r, check, Fisher::conservative);
+  expect_a_priori_agreement(r, check);
+  expect_effect_determined(r, check, "ripple_sin_1");
+  expect_effect_determined(r, check, "ripple_cos_1");
+  EXPECT_THAT(error_of([&] { design_experiment(PlanMethod::ripple_scan, emps_axis(), o.limits, o.noise, {}); }),
+              HasSubstr("has no ripple"));
+  EXPECT_THAT(error_of([&] {
+                design_experiment(PlanMethod::ripple_scan, rig, parse_plan_limits({"travel=0.05"}), o.noise, {});
+              }),
+              HasSubstr("--limits travel = 0.05 m is shorter than 4 ripple periods"));
+}

@@ -70,7 +70,11 @@ code=$?
 set -e
 [ "$code" -eq 2 ] || fail "error JSON run: exit $code"
 /usr/bin/python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); assert j["status"]=="error" and "--limits current" in j["message"]' "$tmp/err.json"
-"$exe" plan --help | grep -q "breakaway  trapezoid of current" || fail "--help lacks the methods"
+# The help into a file first: grep -q stops reading at its match, and the help's writer would then
+# fail on the closed pipe (pipefail).
+"$exe" plan --help > "$tmp/help.txt"
+grep -q "breakaway  trapezoid of current" "$tmp/help.txt" || fail "--help lacks the methods"
+grep -q "ripple-scan slow moves" "$tmp/help.txt" || fail "--help lacks the effects' designs"
 # Without --noise the predicted std are round-off (about 1e-19): a warning says so, in the text
 # and the JSON; with --noise there is no such warning.
 "$exe" plan sweep --prior "$src/examples/plan/virgala_motor_prior.json" --scenario "$src/examples/virgala_motor_sweep.yaml" \

@@ -248,3 +248,42 @@ TEST(ClosedLoopCompensation, EngineLocatesTheCompensatorsSwitch) {
 
 }  // namespace
 }  // namespace frictionlab
+
+namespace frictionlab {
+namespace {
+
+// A loop given the compensation's conditions hands its compensator the load (here a function of
+// the plant's state, as a known gravity load is estimated) and the measured temperature; without
+// them the compensator sees load 0 and T_ref.
+TEST(ClosedLoopCompensation, CompensatorSeesTheLoopsLoadAndTemperature) {
+  LawEffects e;
+  e.load = LoadDependence{0.1, 0.1};
+  TemperatureDependence t;
+  t.T_ref = 20.0;
+  t.Fv_per_K = -0.01;
+  e.temperature = t;
+  const FrictionLaw law = FrictionLaw(CoulombViscous{1.0, 0.4}).with_effects(e);
+  const auto ff = std::make_shared<const FeedforwardCompensation>(law, FeedforwardParams{.band = 1e-3});
+  ControllerParams pd;
+  pd.Kp = 100.0;
+  pd.Kd = 20.0;
+  const ClosedLoop plain(unit_mass(), pd, ff);
+  CompensationConditions cc;
+  cc.load.of_state = [](double, std::span<const double> x) { return 50.0 * std::cos(x[0]); };  // N, of the plant's position
+  cc.temperature = 35.0;
+  const auto loop = plain.with_conditions(cc);
+  std::vector<double> x(static_cast<std::size_t>(loop->num_states()), 0.0);
+  x[0] = 0.3;  // m
+  InputValue r;
+  r.value = 0.3;
+  r.rate = 0.2;  // m/s: outside the band
+  Conditions c;
+  c.load = 50.0 * std::cos(0.3);
+  c.temperature = 35.0;
+  EXPECT_NEAR(loop->compensation(0.0, x, r), law.sliding(0.2, c), 1e-12);
+  EXPECT_NEAR(plain.compensation(0.0, x, r), law.sliding(0.2), 1e-12);
+  EXPECT_GT(loop->compensation(0.0, x, r) - plain.compensation(0.0, x, r), 4.0);  // 0.1 x 47.8 N
+}
+
+}  // namespace
+}  // namespace frictionlab

@@ -175,3 +175,52 @@ TEST(Feedforward, RejectsABadBand) {
 
 }  // namespace
 }  // namespace frictionlab
+
+namespace frictionlab {
+namespace {
+
+// A Stribeck law with a load term (two coefficients) and a temperature term.
+FrictionLaw loaded_stribeck() {
+  LawEffects e;
+  e.load = LoadDependence{0.08, 0.05};
+  TemperatureDependence t;
+  t.T_ref = 25.0;
+  t.Fc_per_K = -0.005;
+  t.Fv_per_K = -0.004;
+  e.temperature = t;
+  return FrictionLaw(Stribeck{1.0, 1.5, 0.01, 2.0, 0.4}).with_effects(e);
+}
+
+// The compensation at the input's load and temperature: the law with its levels moved, outside
+// the band and at the band's moved ends; no temperature is T_ref; the Jacobian has no analytic form.
+TEST(Feedforward, TakesTheInputsLoadAndTemperature) {
+  const FrictionLaw law = loaded_stribeck();
+  const double b = 1e-3;
+  const FeedforwardCompensation ff(law, {.band = b});
+  Conditions c;
+  c.load = -30.0;  // N: its magnitude counts
+  c.temperature = 40.0;
+  for (double vr : {-0.5, -0.02, 0.003, 0.5}) {
+    CompensatorInput in;
+    in.reference_rate = vr;
+    in.load = c.load;
+    in.temperature = c.temperature;
+    std::vector<double> z(1);
+    ff.initial_states(in, z);
+    EXPECT_NEAR(ff.output(in, z), law.sliding(vr, c), kRelTol * std::abs(law.sliding(vr, c))) << "vr " << vr;
+    EXPECT_GT(std::abs(ff.output(in, z) - law.sliding(vr)), 1.0) << "the load moves the force, vr " << vr;
+    EXPECT_NEAR(ff.update(in, z, 1e-3), law.sliding(vr, c), kRelTol * std::abs(law.sliding(vr, c)));
+    in.temperature.reset();  // none measured: the law at T_ref, the load still counts
+    Conditions at_ref = c;
+    at_ref.temperature.reset();
+    EXPECT_NEAR(ff.output(in, z), law.sliding(vr, at_ref), kRelTol * std::abs(law.sliding(vr, at_ref)));
+  }
+  // Inside the band: the straight line between the moved ends.
+  EXPECT_NEAR(ff.force(0.5 * b, c), law.sliding(-b, c) + (law.sliding(b, c) - law.sliding(-b, c)) * 0.75, 1e-12);
+  std::vector<double> dout(4), dder(4);
+  CompensatorInput in;
+  EXPECT_FALSE(ff.jacobian(in, std::vector<double>{1.0}, dout, dder));
+}
+
+}  // namespace
+}  // namespace frictionlab

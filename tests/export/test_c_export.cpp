@@ -489,16 +489,157 @@ TEST_P(RippleExport, RippleAndFrictionAtMatchLibrary) {
 
 INSTANTIATE_TEST_SUITE_P(BothPrecisions, RippleExport, ::testing::Bool());
 
-TEST(CExportErrors, LoadAndTemperatureEffectsAndRippleWithCompensationAreRefusedNamingTheKey) {
+// Load and temperature terms: the header's PREFIX_friction_at(v[, q][, load][, T]), its
+// breakaway levels at the conditions and the feedforward and feedback at a measured load and
+// temperature, against the library's sliding(v, c) + ripple(q), breakaway_positive(c) and
+// FeedforwardCompensation / FeedbackCompensation::force(v, c), both precisions, to expect_close's
+// tolerances (kRelTol, kFloatTol: the same formulas in the same order as the plain laws').
+class EffectsExport : public ::testing::TestWithParam<bool> {};
+
+LawEffects load_and_temperature(bool two_load_coefficients) {
+  LawEffects e;
+  e.load = LoadDependence{two_load_coefficients ? 0.08 : 0.05, 0.05};
+  TemperatureDependence t;
+  t.T_ref = 30.0;
+  t.Fc_per_K = -0.004;
+  t.Fv_per_K = -0.006;
+  t.T_min = 10.0;
+  t.T_max = 60.0;
+  e.temperature = t;
+  return e;
+}
+
+struct EffectsGrid {
+  std::vector<double> v, q, load, T;
+};
+
+EffectsGrid effects_grid() {
+  EffectsGrid g;
+  for (int i = 0; i < 37; ++i) {
+    g.v.push_back((i % 2 ? -1.0 : 1.0) * std::pow(10.0, -5.0 + 5.5 * i / 36.0));  // m/s, both signs
+    g.q.push_back(-0.05 + 0.0027 * i);                                           // m, across five periods
+    g.load.push_back(-40.0 + 2.3 * i);                                           // N, both signs
+    g.T.push_back(12.0 + 1.3 * i);                                               // degC, in [T_min, T_max]
+  }
+  return g;
+}
+
+std::string grid_arrays(const EffectsGrid& g, const std::string& type) {
+  return c_array(type.c_str(), "vg", g.v) + c_array(type.c_str(), "qg", g.q) + c_array(type.c_str(), "lg", g.load) +
+         c_array(type.c_str(), "tg", g.T);
+}
+
+Conditions at(const EffectsGrid& g, std::size_t i, bool single) {
+  Conditions c;
+  c.load = as_real(g.load[i], single);
+  c.temperature = as_real(g.T[i], single);
+  c.position = as_real(g.q[i], single);
+  return c;
+}
+
+TEST_P(EffectsExport, FrictionAtAndBreakawayAtMatchLibraryWithLoadTemperatureAndRipple) {
+  const bool single = GetParam();
+  LawEffects e = load_and_temperature(true);
+  e.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}};
+  const FrictionLaw law = FrictionLaw(Stribeck{1.0, 1.5, 0.001, 1.0, 0.4}).with_effects(e);
+  const EffectsGrid g = effects_grid();
+  TempDir dir;
+  CExportOptions o;
+  o.single_precision = single;
+  const std::string type = single ? "float" : "double";
+  const std::string header = c_header(law, o);
+  EXPECT_THAT(header, ::testing::HasSubstr("friction_friction_at(" + type + " v, " + type + " q, " + type + " load, " +
+                                           type + " T)"));
+  EXPECT_THAT(header, ::testing::HasSubstr("`load` in N (N m on a rotary axis)"));
+  const std::vector<double> out = compile_and_run(
+      dir, header,
+      grid_arrays(g, type) +
+          "int main(void) {\n  unsigned i;\n"
+          "  for (i = 0; i < sizeof vg / sizeof vg[0]; ++i) printf(\"%.17g\\n\", (double)friction_friction_at(vg[i], qg[i], lg[i], tg[i]));\n"
+          "  for (i = 0; i < sizeof vg / sizeof vg[0]; ++i) printf(\"%.17g\\n\", (double)friction_breakaway_pos_at(lg[i], tg[i]));\n"
+          "  for (i = 0; i < sizeof vg / sizeof vg[0]; ++i) printf(\"%.17g\\n\", (double)friction_breakaway_neg_at(lg[i], tg[i]));\n"
+          "  return 0;\n}\n");
+  std::vector<double> lib;
+  for (std::size_t i = 0; i < g.v.size(); ++i)
+    lib.push_back(law.sliding(as_real(g.v[i], single), at(g, i, single)) + law.ripple(as_real(g.q[i], single)));
+  for (std::size_t i = 0; i < g.v.size(); ++i) lib.push_back(law.breakaway_positive(at(g, i, single)));
+  for (std::size_t i = 0; i < g.v.size(); ++i) lib.push_back(law.breakaway_negative(at(g, i, single)));
+  expect_close(out, lib, single, "stribeck with load, temperature and ripple");
+  // The load and temperature do move the force (a test that would pass with the terms ignored is none).
+  EXPECT_GT(std::abs(law.sliding(0.1, at(g, 0, false)) - law.sliding(0.1)), 1.0);
+}
+
+TEST_P(EffectsExport, ArgumentsFollowTheTermsAndCompensationsTakeLoadAndTemperature) {
+  const bool single = GetParam();
+  const std::string type = single ? "float" : "double";
+  const EffectsGrid g = effects_grid();
+  // Load only, asymmetric Stribeck: friction_at(v, load), feedforward_at(vr, load).
+  {
+    LawEffects e;
+    e.load = LoadDependence{0.07, 0.05};
+    const FrictionLaw law = FrictionLaw(Asymmetric<Stribeck>{Stribeck{1.0, 1.5, 0.001, 1.0, 0.4},
+                                                             Stribeck{0.8, 1.1, 0.002, 2.0, 0.5}})
+                                .with_effects(e);
+    CExportOptions o;
+    o.single_precision = single;
+    o.compensation = FeedforwardParams{2e-3};
+    TempDir dir;
+    const std::vector<double> out = compile_and_run(
+        dir, c_header(law, o),
+        grid_arrays(g, type) +
+            "int main(void) {\n  unsigned i;\n  (void)qg; (void)tg;\n"
+            "  for (i = 0; i < sizeof vg / sizeof vg[0]; ++i) printf(\"%.17g\\n\", (double)friction_friction_at(vg[i], lg[i]));\n"
+            "  for (i = 0; i < sizeof vg / sizeof vg[0]; ++i) printf(\"%.17g\\n\", (double)friction_feedforward_at(vg[i] * 1e-2, lg[i]));\n"
+            "  return 0;\n}\n");
+    const FeedforwardCompensation ff(law, FeedforwardParams{2e-3});
+    std::vector<double> lib;
+    for (std::size_t i = 0; i < g.v.size(); ++i) lib.push_back(law.sliding(as_real(g.v[i], single), at(g, i, single)));
+    for (std::size_t i = 0; i < g.v.size(); ++i)
+      lib.push_back(ff.force(as_real(as_real(g.v[i], single) * 1e-2, single), at(g, i, single)));
+    expect_close(out, lib, single, "asymmetric stribeck with load, feedforward");
+  }
+  // Temperature only, coulomb-viscous with feedback: friction_at(v, T), feedback_at(v, T).
+  {
+    LawEffects e = load_and_temperature(false);
+    e.load.reset();
+    const FrictionLaw law = FrictionLaw(CoulombViscous{1.0, 0.4}).with_effects(e);
+    CExportOptions o;
+    o.single_precision = single;
+    o.compensation = FeedbackParams{1e-3};
+    TempDir dir;
+    const std::string header = c_header(law, o);
+    EXPECT_THAT(header, ::testing::HasSubstr("friction_friction_at(" + type + " v, " + type + " T)"));
+    const std::vector<double> out = compile_and_run(
+        dir, header,
+        grid_arrays(g, type) +
+            "int main(void) {\n  unsigned i;\n  (void)qg; (void)lg;\n"
+            "  for (i = 0; i < sizeof vg / sizeof vg[0]; ++i) printf(\"%.17g\\n\", (double)friction_friction_at(vg[i], tg[i]));\n"
+            "  for (i = 0; i < sizeof vg / sizeof vg[0]; ++i) printf(\"%.17g\\n\", (double)friction_feedback_at(vg[i], tg[i]));\n"
+            "  return 0;\n}\n");
+    const FeedbackCompensation fb(law, FeedbackParams{1e-3});
+    std::vector<double> lib;
+    for (std::size_t i = 0; i < g.v.size(); ++i) lib.push_back(law.sliding(as_real(g.v[i], single), at(g, i, single)));
+    for (std::size_t i = 0; i < g.v.size(); ++i) lib.push_back(fb.force(as_real(g.v[i], single), at(g, i, single)));
+    expect_close(out, lib, single, "coulomb-viscous with temperature, feedback");
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(BothPrecisions, EffectsExport, ::testing::Bool());
+
+TEST(CExportErrors, DynamicLawWithLoadAndRippleWithCompensationAreRefusedSayingWhy) {
   using testing::error_of;
   LawEffects load;
   load.load = LoadDependence{0.05, 0.05};
-  EXPECT_THAT(error_of([&] { c_header(FrictionLaw(Stribeck{}).with_effects(load)); }),
-              ::testing::HasSubstr("carries load or temperature effects, which the C header does not model yet"));
+  EXPECT_THAT(error_of([&] { c_header(FrictionLaw(LuGre{}).with_effects(load)); }),
+              ::testing::HasSubstr("the header's state update runs on fixed levels"));
+  EXPECT_THAT(error_of([&] { c_header(FrictionLaw(LuGre{}).with_effects(load)); }), ::testing::HasSubstr("mu_load"));
   CExportOptions o;
   o.compensation = FeedforwardParams{};
   EXPECT_THAT(error_of([&] { c_header(rippled_stribeck(), o); }),
               ::testing::HasSubstr("carries a position ripple, which the compensations do not take yet"));
+  o.compensation = LuGreObserverParams{};
+  EXPECT_THAT(error_of([&] { c_header(FrictionLaw(LuGre{}).with_effects(load), o); }),
+              ::testing::HasSubstr("mu_load"));
 }
 
 }  // namespace

@@ -94,10 +94,15 @@ def test_scenario_with_a_falling_load_and_a_thermal_model(tmp_path):
     assert T[-1] > 20.5  # sliding friction heats it
 
 
-def test_c_export_refuses_a_law_with_effects_instead_of_dropping_them():
+def test_c_export_carries_load_terms_and_refuses_a_dynamic_law_with_them():
+    # A static law's load term becomes an argument of PREFIX_friction_at (N or N m).
+    text = fl.export_c({**STRIBECK, "mu_load": 0.05})
+    assert "friction_friction_at(double v, double load)" in text and "`load` in N" in text
+    # A dynamic law's state update runs on fixed levels: refused saying why, not dropped.
     with pytest.raises(fl.Error) as info:
-        fl.export_c({**STRIBECK, "mu_load": 0.05})
-    assert info.value.code == "law.parameter" and "effects" in str(info.value)
+        fl.export_c({"law": "lugre", "sigma0": 1e5, "sigma1": 316.2, "sigma2": 0.4, "Fc": 1, "Fs": 1.5, "vs": 0.001,
+                     "mu_load": 0.05})
+    assert info.value.code == "law.parameter" and "fixed levels" in str(info.value)
     assert fl.export_c(STRIBECK).startswith("/* Friction law 'stribeck'")  # the plain law still exports
 
 

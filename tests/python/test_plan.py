@@ -50,3 +50,19 @@ def test_plan_bad_input(source_dir):
         fl.plan("breakaway", prior, motor, noise=[1, 2], runs=2)
     with pytest.raises(ValueError, match="expected one of breakaway, sweep, idim, lugre"):
         fl.plan("ramp", prior, motor)
+
+
+def test_load_steps_plan_returns_the_load_column(source_dir, tmp_path):
+    out = tmp_path / "load_steps.csv"
+    r = fl.plan("load-steps", source_dir / "examples/plan/emps_effects_prior.json",
+                source_dir / "examples/plan/axis_position_loop.yaml",
+                limits={"travel": 0.2, "force": 1500}, noise={"force": 2}, load=200, runs=2, output=out)
+    prof = r["profile"]
+    assert prof["columns"] == ["time_s", "position_m", "load_N"]
+    assert prof["load"].shape == prof["time"].shape
+    assert sorted(set(prof["load"].tolist())) == [0.0, 100.0, 200.0]
+    assert out.read_text().splitlines()[0] == "time_s,position_m,load_N"
+    assert 0 < r["prediction"]["parameters"]["mu_load"]["std_a_priori"] < 0.01
+    with pytest.raises(ValueError, match="--load: a load-steps plan needs the largest load"):
+        fl.plan("load-steps", source_dir / "examples/plan/emps_effects_prior.json",
+                source_dir / "examples/plan/axis_position_loop.yaml", runs=2)

@@ -13,6 +13,7 @@
 #include "frictionlab/error.hpp"
 #include "frictionlab/scenario/law_file.hpp"
 #include "frictionlab/scenario/scenario.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 
 using namespace frictionlab;
@@ -117,4 +118,32 @@ TEST(EffectsScenario, LawFilesCarryTheEffectsBothWays) {
   const FrictionLaw back = law_from_json(law_to_json(law), "law.json");
   EXPECT_EQ(back.to_spec().scalars, law.to_spec().scalars);
   EXPECT_EQ(back.to_spec().arrays, law.to_spec().arrays);
+}
+
+// A controller's feedforward compensation of a law with a load term sees the environment's load:
+// a gravity load estimated from the plant's state, and the fixed temperature.
+TEST(EffectsScenario, CompensationSeesTheEnvironmentsLoadAndTemperature) {
+  const Scenario sc = parse(R"(
+plant: {type: axis, M: 1.0}
+friction: {law: coulomb-viscous, Fc: 1, Fv: 0.4, mu_load: 0.1, T_ref: 20, Fv_per_K: -0.01}
+controller: {loop: position, Kp: 100, Kd: 20, compensation: {type: feedforward, band: 0.001}}
+environment:
+  load: {type: gravity, m: 5, l: 1, g: 9.81, phase: 0}
+  temperature: 35
+input: {type: ramp, rate: 0.2}
+duration: 0.1
+)");
+  const auto* loop = dynamic_cast<const ClosedLoop*>(sc.plant.get());
+  ASSERT_NE(loop, nullptr);
+  ASSERT_TRUE(loop->conditions().load.given());
+  EXPECT_EQ(loop->conditions().temperature, 35.0);
+  std::vector<double> x(static_cast<std::size_t>(loop->num_states()), 0.0);
+  x[0] = 0.3;  // m
+  InputValue r;
+  r.value = 0.3;
+  r.rate = 0.2;
+  Conditions c;
+  c.load = 5 * 9.81 * std::cos(0.3);
+  c.temperature = 35.0;
+  EXPECT_NEAR(loop->compensation(0.0, x, r), sc.law.sliding(0.2, c), 1e-12);
 }

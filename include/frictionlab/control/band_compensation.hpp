@@ -18,6 +18,9 @@ namespace frictionlab FRICTIONLAB_API {
 /// goes to the side ds/dt points to where the derived class knows it, else crosses the edge. A
 /// stored region more than 1 % of b off s (a run whose start did not see s) gives way to the region
 /// of s itself, so the output is right before the first event. update() takes the region from s.
+/// A law with load or temperature terms is evaluated at the input's load and temperature
+/// (CompensatorInput::load, ::temperature; no temperature = the law's T_ref), both inside and
+/// outside the band; a position ripple is not part of the output (the law's velocity part only).
 class BandCompensation : public Compensator {
  public:
   int num_states() const override { return 1; }
@@ -28,8 +31,11 @@ class BandCompensation : public Compensator {
   void on_event(const CompensatorInput& in, std::span<double> z, int k) const override;
   double update(const CompensatorInput& in, std::span<double> z, double dt) const override;
 
-  /// The compensation force (N or N m) at velocity s (m/s or rad/s), the region taken from s.
-  double force(double s) const;
+  /// The compensation force (N or N m) at velocity s (m/s or rad/s), the region taken from s, at
+  /// conditions `c` (load N or N m, temperature degC or K; the position is not used).
+  /// \throws InputError (law.parameter) when the temperature lies outside the law's [T_min, T_max]
+  ///         or makes a coefficient negative.
+  double force(double s, const Conditions& c = {}) const;
   const FrictionLaw& law() const { return law_; }
 
  protected:
@@ -39,14 +45,24 @@ class BandCompensation : public Compensator {
   virtual double speed(const CompensatorInput& in) const = 0;
   /// The sign of ds/dt where known, else 0.
   virtual double speed_direction(const CompensatorInput&) const { return 0.0; }
-  /// The output inside the band (N or N m).
-  virtual double inside(double s) const = 0;
+  /// The output inside the band (N or N m) at conditions c.
+  virtual double inside(double s, const Conditions& c) const = 0;
+  /// The conditions of `in` (its load and temperature).
+  static Conditions conditions(const CompensatorInput& in) {
+    Conditions c;
+    c.load = in.load;
+    c.temperature = in.temperature;
+    c.position = in.position;
+    return c;
+  }
 
   FrictionLaw law_;
   double band_;  ///< b (m/s or rad/s)
 
  private:
-  double force_in(double region, double s) const { return region == 0.0 ? inside(s) : law_.sliding(s); }
+  double force_in(double region, double s, const Conditions& c) const {
+    return region == 0.0 ? inside(s, c) : law_.sliding(s, c);
+  }
 };
 
 }  // namespace frictionlab

@@ -8,6 +8,7 @@
 // Sign convention (frictionlab's): friction F has the sign of the velocity and is subtracted,
 // M a = drive - F. A compensator's output estimates F, so the loop ADDS it to its command.
 
+#include <optional>
 #include <span>
 #include <string>
 
@@ -26,6 +27,13 @@ struct CompensatorInput {
   /// Force the drive applies to the body (N or N m), this compensator's own output included: the
   /// input of an inverse-model observer. In a sampled loop: the force held over the step just ended.
   double drive = 0.0;
+  /// The load the compensated contact transmits (N or N m; its magnitude counts), measured or
+  /// estimated by the loop that runs the compensator: it raises the levels of a law with a load
+  /// term (mu_load). 0 when the loop knows none.
+  double load = 0.0;
+  /// The contact's measured temperature (degC or K, the law's scale), for a law with a temperature
+  /// term; none = the law's T_ref (no shift: the compensation is the law at its reference).
+  std::optional<double> temperature;
 };
 
 /// A friction compensator: an immutable object (safe to share between threads and loops) whose

@@ -38,7 +38,7 @@ class FeedbackCompensation : public BandCompensation {
 
  protected:
   double speed(const CompensatorInput& in) const override { return in.velocity; }
-  double inside(double) const override { return 0.0; }
+  double inside(double, const Conditions&) const override { return 0.0; }
 
  private:
   FeedbackParams p_;

@@ -16,7 +16,13 @@
 //                                        the fixed-step update at constant v over dt seconds
 //                                        (FrictionLaw::step: stable for any dt), returning the
 //                                        force at the end of the step
-//   PREFIX_feedforward(vr) / PREFIX_feedback(v)
+//   PREFIX_ripple(q), PREFIX_friction_at(v[, q][, load][, T]), PREFIX_breakaway_pos_at([load][, T]),
+//   PREFIX_breakaway_neg_at(...)         a law with a position ripple (q in m or rad) and a static
+//                                        law with load (N or N m) or temperature (degC or K)
+//                                        terms: the force with the levels moved (sliding(v, c) +
+//                                        ripple(q)); the arguments are the terms the law has
+//   PREFIX_feedforward(vr) / PREFIX_feedback(v), and with load or temperature terms
+//   PREFIX_feedforward_at(vr[, load][, T]) / PREFIX_feedback_at(v[, load][, T])
 //   PREFIX_lugre_observer_state, _init(&s, v), _update(&s, x, v, r, dt)
 //   PREFIX_disturbance_observer_state, _init(&s, v), _update(&s, v, drive, dt)
 //                                        the compensations' update() (control/*.hpp)
@@ -47,11 +53,14 @@ struct CExportOptions {
 };
 
 /// The C99 header text (see the top of this file) for `law` and options.compensation.
-/// Every static and dynamic law of the library is supported (GMS with its N elements).
+/// Every static and dynamic law of the library is supported (GMS with its N elements), with a
+/// position ripple, and a static law with load and temperature terms.
 /// \throws std::invalid_argument for a prefix that is not a C identifier (naming it), and what the
 ///         compensation's constructor throws for parameters that break its rules or do not fit
 ///         the law ("lugre-observer: law = stribeck must be lugre ...", "disturbance-observer:
-///         inertia = 0 must be > 0 ...").
+///         inertia = 0 must be > 0 ..."); InputError (law.parameter, key mu_load or T_ref) for a
+///         dynamic law with load or temperature terms (its state update runs on fixed levels), and
+///         (key ripple_period) for a compensation of a law with a ripple.
 std::string c_header(const FrictionLaw& law, const CExportOptions& options = {});
 
 }  // namespace frictionlab

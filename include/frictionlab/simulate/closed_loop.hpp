@@ -11,9 +11,21 @@
 #include "frictionlab/control/emps_pd.hpp"
 #include "frictionlab/control/pid.hpp"
 #include "frictionlab/plants/plant.hpp"
+#include "frictionlab/simulate/environment.hpp"
 
 #include "frictionlab/export.hpp"
 namespace frictionlab FRICTIONLAB_API {
+
+/// What the loop tells its compensator about the compensated contact's conditions
+/// (CompensatorInput::load, ::temperature), for a law with load or temperature terms.
+struct CompensationConditions {
+  /// The load (N or N m): measured (`signal`, e.g. a load cell's column) or estimated from the
+  /// plant's known load function (`of_state`, called with the inner plant's states). None = 0.
+  LoadSource load;
+  /// A measured temperature (degC or K); none = the law's T_ref (the compensation does not see a
+  /// thermal state of the run, only a temperature it is given).
+  std::optional<double> temperature;
+};
 
 /// A PID (control/pid.hpp) closed around `inner` (a 1-DOF plant). States: the inner plant's, then
 /// the PID's own (continuous: the integral of the error; sampled: the integral, the applied and
@@ -78,6 +90,9 @@ class ClosedLoop : public SingleContactPlant {
   const Plant& inner() const { return *inner_; }
   /// The compensator, or nullptr.
   const Compensator* compensator() const { return compensator_.get(); }
+  /// This loop with its compensator given the conditions `c` (replacing any it had).
+  std::shared_ptr<const ClosedLoop> with_conditions(CompensationConditions c) const;
+  const CompensationConditions& conditions() const { return conditions_; }
 
  private:
   CompensatorInput measured(double t, std::span<const double> x, const InputValue& r) const;
@@ -88,6 +103,7 @@ class ClosedLoop : public SingleContactPlant {
   std::shared_ptr<const Plant> inner_;
   Pid pid_;
   std::shared_ptr<const Compensator> compensator_;
+  CompensationConditions conditions_;
   int n_inner_;
   int n_pid_;
   int n_comp_;

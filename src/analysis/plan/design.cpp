@@ -270,13 +270,16 @@ ExperimentProfile design_sweep(const PlanRig& rig, const PlanLimits& lim, const 
 }
 
 // ---- idim: trapezoidal velocity moves of the position reference ----
-ExperimentProfile design_idim(const PlanRig& rig, const PlanLimits& lim, const SensorNoise&, const PlanDesignOptions&,
-                              double) {
-  require_drive(rig, PlanMethod::idim, {PlanDrive::position_loop}, "a position loop (controller: {loop: position, ...})");
-  ExperimentProfile p;
+
+// Top speed v, acceleration a and distance d of idim's moves, within the limits; `Fc` the Coulomb
+// level the moves must overcome (the prior's, raised by the largest load of a load-steps plan).
+struct MoveLevels {
+  double v = 0, a = 0, d = 0;
+};
+
+MoveLevels move_levels(const PlanRig& rig, const PlanLimits& lim, ExperimentProfile& p, double Fc) {
   const Axis ax = rig.axis;
   const std::string fu = u(Quantity::force, ax), vu = u(Quantity::velocity, ax), xu = u(Quantity::displacement, ax);
-  const double Fc = need(rig, "Fc", "idim");
   const double Fv = std::isfinite(rig.prior("Fv")) ? rig.prior("Fv") : 0.0;
   const double M = rig.inertia;
   double v = 0;
@@ -305,23 +308,36 @@ ExperimentProfile design_idim(const PlanRig& rig, const PlanLimits& lim, const S
     p.warnings.push_back("--limits travel = " + num(lim.travel) + " " + xu + " makes the fastest move triangular: top speed " +
                          num(v) + " " + vu);
   }
-  // Piecewise position reference: rest, then out and back at each speed fraction.
-  struct Move {
-    double t0, x0, dist, vmax;
-  };
-  std::vector<Move> moves;
-  const double rest = 0.05;  // s: short, a standstill's friction is not the regressors' Fc sign(qd)
-  double t = 0.5;
-  for (double f : {1.0, 0.5, 0.25}) {
+  return {v, a, d};
+}
+
+// Piecewise position reference: moves out (from 0) and back (from d), trapezoidal in velocity.
+struct Move {
+  double t0, x0, dist, vmax;
+};
+
+double move_duration(double dist, double vm, double a) {
+  return std::abs(dist) < vm * vm / a ? 2 * std::sqrt(std::abs(dist) / a) : std::abs(dist) / vm + vm / a;
+}
+
+// Appends a move out and one back at each speed in `speeds`, from time t, each followed by `rest`
+// seconds; returns the time after them.
+double add_moves(ExperimentProfile& p, std::vector<Move>& moves, double t, std::initializer_list<double> speeds,
+                 double d, double a, double rest) {
+  for (double vm : speeds) {
     for (double dir : {1.0, -1.0}) {
-      const double vm = f * v, dd = dir * d;
+      const double dd = dir * d;
       moves.push_back({t, dir > 0 ? 0.0 : d, dd, vm});
-      const double duration = std::abs(dd) < vm * vm / a ? 2 * std::sqrt(std::abs(dd) / a) : std::abs(dd) / vm + vm / a;
+      const double duration = move_duration(dd, vm, a);
       p.windows.push_back({"move", t, t + duration, dir * vm});
       t += duration + rest;
     }
   }
-  const double total = t;
+  return t;
+}
+
+// The position reference of `moves` (acceleration a) sampled at fs up to `total` seconds.
+void sample_moves(ExperimentProfile& p, const std::vector<Move>& moves, double a, double total, double fs) {
   auto position = [&](double time) {
     double x = 0;
     for (const auto& m : moves) {
@@ -341,7 +357,6 @@ ExperimentProfile design_idim(const PlanRig& rig, const PlanLimits& lim, const S
     }
     return x;
   };
-  const double fs = rig.scenario.options.output_rate;
   p.signal.shape = InputShape::table;
   const auto n = static_cast<std::size_t>(std::ceil(total * fs)) + 1;
   p.signal.times.resize(n);
@@ -351,11 +366,142 @@ ExperimentProfile design_idim(const PlanRig& rig, const PlanLimits& lim, const S
     p.signal.values[k] = position(p.signal.times[k]);
   }
   p.duration = p.signal.times.back();
-  add(p, "top_speed", v, vu, "speed of the fastest moves (then 1/2 and 1/4 of it)");
-  add(p, "acceleration", a, u(Quantity::acceleration, ax), "acceleration of every move");
-  add(p, "distance", d, xu, "length of each move out and back");
+}
+
+constexpr double kMoveRest = 0.05;  // s: short, a standstill's friction is not the regressors' Fc sign(qd)
+constexpr double kFirstMove = 0.5;  // s of rest before the first move (the loop settles)
+
+ExperimentProfile design_idim(const PlanRig& rig, const PlanLimits& lim, const SensorNoise&, const PlanDesignOptions&,
+                              double) {
+  require_drive(rig, PlanMethod::idim, {PlanDrive::position_loop}, "a position loop (controller: {loop: position, ...})");
+  ExperimentProfile p;
+  const Axis ax = rig.axis;
+  const std::string fu = u(Quantity::force, ax), vu = u(Quantity::velocity, ax), xu = u(Quantity::displacement, ax);
+  const double Fc = need(rig, "Fc", "idim");
+  const double Fv = std::isfinite(rig.prior("Fv")) ? rig.prior("Fv") : 0.0;
+  const MoveLevels L = move_levels(rig, lim, p, Fc);
+  std::vector<Move> moves;
+  const double total = add_moves(p, moves, kFirstMove, {L.v, 0.5 * L.v, 0.25 * L.v}, L.d, L.a, kMoveRest);
+  sample_moves(p, moves, L.a, total, rig.scenario.options.output_rate);
+  add(p, "top_speed", L.v, vu, "speed of the fastest moves (then 1/2 and 1/4 of it)");
+  add(p, "acceleration", L.a, u(Quantity::acceleration, ax), "acceleration of every move");
+  add(p, "distance", L.d, xu, "length of each move out and back");
   add(p, "moves", static_cast<double>(moves.size()), "", "moves");
-  add(p, "inertia_force", M * a, fu, "M a, against Fc + Fv v = " + num(Fc + Fv * v) + " " + fu);
+  add(p, "inertia_force", rig.inertia * L.a, fu, "M a, against Fc + Fv v = " + num(Fc + Fv * L.v) + " " + fu);
+  return p;
+}
+
+// ---- load-steps: idim's moves at three loads ----
+ExperimentProfile design_load_steps(const PlanRig& rig, const PlanLimits& lim, const PlanDesignOptions& o, double fs) {
+  require_drive(rig, PlanMethod::load_steps, {PlanDrive::position_loop}, "a position loop (controller: {loop: position, ...})");
+  const Axis ax = rig.axis;
+  const std::string fu = u(Quantity::force, ax), vu = u(Quantity::velocity, ax), xu = u(Quantity::displacement, ax);
+  if (!(o.load > 0 && std::isfinite(o.load)))
+    throw std::invalid_argument("--load: a load-steps plan needs the largest load the rig applies, > 0 " + fu +
+                                " (got " + num(o.load) + ")");
+  ExperimentProfile p;
+  const double Fc = need(rig, "Fc", "load-steps");
+  const double mu = std::isfinite(rig.prior("mu_load")) ? rig.prior("mu_load") : 0.0;
+  if (!rig.law.effects().load)
+    p.warnings.push_back("the prior law has no load term (mu_load): the plan takes mu_load = 0 for its levels");
+  const MoveLevels L = move_levels(rig, lim, p, Fc + mu * o.load);  // the largest load raises the level to overcome
+  std::vector<Move> moves;
+  std::vector<double> load_times, load_values;
+  double t = kFirstMove;
+  constexpr double kLoadRest = 0.5;  // s at rest after a load step: the loop settles before moving
+  for (double f : {0.0, 0.5, 1.0}) {
+    load_times.push_back(t == kFirstMove ? 0.0 : t - kLoadRest);
+    load_values.push_back(f * o.load);
+    const double begin = t;
+    t = add_moves(p, moves, t, {L.v, 0.5 * L.v, 0.25 * L.v}, L.d, L.a, kMoveRest);
+    p.windows.push_back({"load", begin, t, f * o.load});
+    t += kLoadRest;
+  }
+  sample_moves(p, moves, L.a, t, fs);
+  p.load = staircase(load_times, load_values);
+  p.load_unit = fu;
+  add(p, "top_speed", L.v, vu, "speed of the fastest moves (then 1/2 and 1/4 of it), at every load");
+  add(p, "acceleration", L.a, u(Quantity::acceleration, ax), "acceleration of every move");
+  add(p, "distance", L.d, xu, "length of each move out and back");
+  add(p, "load_max", o.load, fu, "largest load; the moves run at 0, 1/2 and 1 of it");
+  add(p, "load_rise", mu * o.load, fu, "mu_load Lmax: the prior's rise of the Coulomb level at the largest load");
+  return p;
+}
+
+// ---- warm-up: moves at two speeds while the contact heats ----
+ExperimentProfile design_warm_up(const PlanRig& rig, const PlanLimits& lim, const PlanDesignOptions& o, double fs) {
+  require_drive(rig, PlanMethod::warm_up, {PlanDrive::position_loop}, "a position loop (controller: {loop: position, ...})");
+  const auto& envs = rig.scenario.options.environments;
+  if (envs.empty() || !envs[0].thermal)
+    throw std::invalid_argument(rig.scenario_file + ": a warm-up plan needs the contact's thermal model: environment: "
+                                "{thermal: {T_ambient, tau, R}} (its time constant sets the run's length)");
+  const ThermalModel& th = *envs[0].thermal;
+  const Axis ax = rig.axis;
+  const std::string fu = u(Quantity::force, ax), vu = u(Quantity::velocity, ax), xu = u(Quantity::displacement, ax);
+  if (!(o.warm_up >= 0 && std::isfinite(o.warm_up)))
+    throw std::invalid_argument("--warm-up = " + num(o.warm_up) + " s must be > 0 (or 0: 2 thermal time constants)");
+  ExperimentProfile p;
+  const double Fc = need(rig, "Fc", "warm-up");
+  if (!rig.law.effects().temperature)
+    p.warnings.push_back("the prior law has no temperature term (Fv_per_K): the plan takes Fv_per_K = 0");
+  const MoveLevels L = move_levels(rig, lim, p, Fc);
+  const double length = o.warm_up > 0 ? o.warm_up : 2 * th.tau;
+  // Every heat has both speeds: the temperature rises across the cycles, not with the speed
+  // schedule, so Fv_per_K (qd (T - T_ref)) stays apart from Fv (qd) and Fc (sign(qd)).
+  std::vector<Move> moves;
+  double t = kFirstMove;
+  while (t < length) t = add_moves(p, moves, t, {L.v, 0.5 * L.v}, L.d, L.a, kMoveRest);
+  sample_moves(p, moves, L.a, t, fs);
+  add(p, "top_speed", L.v, vu, "speed of the moves out and back (then 1/2 of it), in every cycle");
+  add(p, "acceleration", L.a, u(Quantity::acceleration, ax), "acceleration of every move");
+  add(p, "distance", L.d, xu, "length of each move out and back");
+  add(p, "cycles", static_cast<double>(moves.size() / 4), "", "cycles of four moves");
+  add(p, "thermal_tau", th.tau, "s", "the scenario's thermal time constant; the run lasts " + num(t / th.tau) + " of it");
+  return p;
+}
+
+// ---- ripple-scan: slow moves over several ripple periods ----
+ExperimentProfile design_ripple_scan(const PlanRig& rig, const PlanLimits& lim, const PlanDesignOptions& o, double fs) {
+  require_drive(rig, PlanMethod::ripple_scan, {PlanDrive::position_loop}, "a position loop (controller: {loop: position, ...})");
+  const auto& ripple = rig.law.effects().ripple;
+  if (!ripple)
+    throw std::invalid_argument(rig.prior_file + ": the prior law '" + rig.law.name() +
+                                "' has no ripple (ripple_period, ripple_a, ripple_b); a ripple-scan plan needs its period");
+  if (o.ripple_periods < 2 || o.ripple_periods > 10000)
+    throw std::invalid_argument("--ripple-periods " + std::to_string(o.ripple_periods) + " must be in 2..10000 (periods per move)");
+  const Axis ax = rig.axis;
+  const std::string fu = u(Quantity::force, ax), vu = u(Quantity::velocity, ax), xu = u(Quantity::displacement, ax);
+  ExperimentProfile p;
+  const double Fc = need(rig, "Fc", "ripple-scan");
+  const MoveLevels L = move_levels(rig, lim, p, Fc);
+  const double P = ripple->period;
+  const int K = static_cast<int>(std::max<std::size_t>(ripple->harmonics(), 1));
+  const double d = o.ripple_periods * P;
+  if (std::isfinite(lim.travel) && d > 0.9 * lim.travel)
+    throw std::invalid_argument("--limits travel = " + num(lim.travel) + " " + xu + " is shorter than " +
+                                std::to_string(o.ripple_periods) + " ripple periods of " + num(P) + " " + xu +
+                                " (and 10 % margin): lower --ripple-periods or give more travel");
+  // The ripple's top harmonic, K v / P Hz, a twentieth of idim's low-pass cut-off at most: the
+  // filter passes it unchanged, and the ripple is quasi-static for the loop (at a fifth the cosine
+  // terms came out 13 % off on the EMPS-like rig, at a twentieth 6 %).
+  constexpr double kCutoffShare = 0.05;
+  const double cutoff = idim_rate_defaults(fs).cutoff_hz;
+  double v = std::min(L.v, kCutoffShare * cutoff * P / K);
+  if (std::isfinite(lim.min_speed) && lim.min_speed > 0 && 0.5 * v < lim.min_speed)
+    throw std::invalid_argument("--limits min_speed = " + num(lim.min_speed) + " " + vu + " is above the scan's slow speed " +
+                                num(0.5 * v) + " " + vu + " (a twentieth of the low-pass cut-off " + num(cutoff) + " Hz times P / K)");
+  std::vector<Move> moves;
+  const double t = add_moves(p, moves, kFirstMove, {v, 0.5 * v}, d, L.a, kMoveRest);
+  sample_moves(p, moves, L.a, t, fs);
+  add(p, "scan_speed", v, vu, "speed of the scan (then 1/2 of it): the ripple's harmonic " + std::to_string(K) + " at " +
+                                  num(K * v / P) + " Hz, idim's low-pass at " + num(cutoff) + " Hz");
+  add(p, "acceleration", L.a, u(Quantity::acceleration, ax), "acceleration of every move");
+  add(p, "distance", d, xu, std::to_string(o.ripple_periods) + " ripple periods of " + num(P) + " " + xu);
+  add(p, "ripple_harmonics", K, "", "harmonics identified (the prior's)");
+  // At rest stiction holds the ripple (the force is anything within the static level), and the
+  // rests lie at the ends of whole periods: kept, they would bias the cosine terms.
+  add(p, "exclude_below", 0.1 * 0.5 * v, vu, "identify with idim --exclude-below this: the rows at rest left out");
+  (void)fu;
   return p;
 }
 
@@ -440,7 +586,11 @@ PlanMethod parse_plan_method(const std::string& name) {
   if (name == "sweep") return PlanMethod::sweep;
   if (name == "idim") return PlanMethod::idim;
   if (name == "lugre") return PlanMethod::lugre;
-  throw std::invalid_argument("plan method '" + name + "': expected one of breakaway, sweep, idim, lugre");
+  if (name == "load-steps") return PlanMethod::load_steps;
+  if (name == "warm-up") return PlanMethod::warm_up;
+  if (name == "ripple-scan") return PlanMethod::ripple_scan;
+  throw std::invalid_argument("plan method '" + name +
+                              "': expected one of breakaway, sweep, idim, lugre, load-steps, warm-up, ripple-scan");
 }
 
 const char* plan_method_name(PlanMethod method) {
@@ -449,6 +599,9 @@ const char* plan_method_name(PlanMethod method) {
     case PlanMethod::sweep: return "sweep";
     case PlanMethod::idim: return "idim";
     case PlanMethod::lugre: return "lugre";
+    case PlanMethod::load_steps: return "load-steps";
+    case PlanMethod::warm_up: return "warm-up";
+    case PlanMethod::ripple_scan: return "ripple-scan";
   }
   return "breakaway";
 }
@@ -462,6 +615,10 @@ void PlanDesignOptions::validate() const {
     throw std::invalid_argument("plan: lag_fraction = " + num(lag_fraction) + " must be in (0, 1)");
   if (speeds < 4 || speeds > 1000)
     throw std::invalid_argument("plan: speeds = " + std::to_string(speeds) + " must be in 4..1000 (per direction)");
+  if (!(load >= 0 && std::isfinite(load)))
+    throw std::invalid_argument("plan: load = " + num(load) + " must be >= 0 (N or N m; the largest load of load-steps)");
+  if (!(warm_up >= 0 && std::isfinite(warm_up)))
+    throw std::invalid_argument("plan: warm_up = " + num(warm_up) + " s must be >= 0 (0: 2 thermal time constants)");
   if (!(sample_rate >= 0 && std::isfinite(sample_rate)))
     throw std::invalid_argument("plan: sample_rate = " + num(sample_rate) + " Hz must be >= 0 (0: the scenario's)");
 }
@@ -483,12 +640,16 @@ ExperimentProfile design_experiment(PlanMethod method, const PlanRig& rig, const
     case PlanMethod::sweep: p = design_sweep(r, limits, noise, options, fs); break;
     case PlanMethod::idim: p = design_idim(r, limits, noise, options, fs); break;
     case PlanMethod::lugre: p = design_lugre(r, limits, noise, options, fs); break;
+    case PlanMethod::load_steps: p = design_load_steps(r, limits, options, fs); break;
+    case PlanMethod::warm_up: p = design_warm_up(r, limits, options, fs); break;
+    case PlanMethod::ripple_scan: p = design_ripple_scan(r, limits, options, fs); break;
   }
   p.method = plan_method_name(method);
   p.command = rig.command;
   p.command_unit = rig.command_unit;
   p.sample_rate = fs;
   p.signal.validate("plan " + p.method + ": profile");
+  if (p.load) p.load->validate("plan " + p.method + ": load");
   add(p, "duration", p.duration, "s", "length of the experiment");
   return p;
 }

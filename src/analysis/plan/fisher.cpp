@@ -142,15 +142,16 @@ AprioriSpread sweep_spread(const PlanMeasurement& m, const PlanRig& rig, const S
 // the fitted signal's noise e = y - (M qdd + Fv qd) at the decimated samples.
 Eigen::VectorXd idim_impulse(const PlanMeasurement& m, const IdimOptions& o, bool on_position, Eigen::Index k,
                              const std::vector<std::string>& names, const Eigen::VectorXd& theta) {
-  IdimData d;
-  d.time = m.time;
+  IdimData d = plan_idim_data(m);  // the load and temperature columns as measured (noise-free)
   d.position = Eigen::VectorXd::Zero(m.time.size());
   d.force = Eigen::VectorXd::Zero(m.time.size());
   (on_position ? d.position : d.force)[k] = 1.0;
   const IdimRegression r = idim_regression(d, o);
   Eigen::VectorXd e = r.y;
+  // The columns linear in the position: qdd, qd and qd (T - T_ref). The sign and ripple columns
+  // are taken as noise-free, as the Coulomb column.
   for (std::size_t j = 0; j < names.size(); ++j)
-    if (names[j] == "M" || names[j] == "Fv")  // the columns linear in the position (qdd, qd)
+    if (names[j] == "M" || names[j] == "Fv" || names[j] == "Fv_per_K")
       e -= theta[static_cast<Eigen::Index>(j)] * r.X.col(static_cast<Eigen::Index>(j));
   return e;
 }
@@ -175,14 +176,14 @@ std::vector<double> autocorrelation(const std::vector<Eigen::VectorXd>& phases) 
   return R;
 }
 
-AprioriSpread idim_spread(const PlanMeasurement& m, const PlanRig& rig, const ExperimentProfile& profile,
+AprioriSpread idim_spread(PlanMethod method, const PlanMeasurement& m, const PlanRig& rig, const ExperimentProfile& profile,
                           const SensorNoise& noise) {
   AprioriSpread out;
-  const IdimOptions o = plan_idim_options(rig);
-  IdimData d;
-  d.time = m.time;
-  d.position = m.position;
-  d.force = m.force;
+  IdimOptions o = plan_idim_options(rig, method, &profile);
+  IdimData d = plan_idim_data(m);
+  // The temperature term's T_ref as the identification takes it (the mean over the used samples
+  // when the prior gives none), fixed here so that the impulses' regressions use the same one.
+  if (!std::isfinite(o.temperature_ref) && d.temperature.size() > 0) o.temperature_ref = d.temperature.mean();
   const IdimRegression reg = idim_regression(d, o);
   const Eigen::MatrixXd& J = reg.X;
   const Eigen::Index p = J.cols(), n = J.rows();
@@ -196,10 +197,15 @@ AprioriSpread idim_spread(const PlanMeasurement& m, const PlanRig& rig, const Ex
   const Eigen::Index k0 = m.time.size() / 2;
   const double sx2 = noise.position * noise.position + noise.encoder * noise.encoder / 12;  // quantisation: uniform
   const double sf = force_noise_std(rig, noise);
+  // The impulses run the pipeline on every row: the rows a plan leaves out (exclude_below) are a
+  // choice of rows, not a change of the filter; the kept rows' noise is then taken as correlated as
+  // neighbours' (conservative across a gap).
+  IdimOptions all_rows = o;
+  all_rows.exclude_below = 0.0;
   std::vector<Eigen::VectorXd> pos, frc;
   for (int r = 0; r < D; ++r) {
-    if (sx2 > 0) pos.push_back(idim_impulse(m, o, true, k0 + r, names, theta));
-    if (sf > 0) frc.push_back(idim_impulse(m, o, false, k0 + r, names, theta));
+    if (sx2 > 0) pos.push_back(idim_impulse(m, all_rows, true, k0 + r, names, theta));
+    if (sf > 0) frc.push_back(idim_impulse(m, all_rows, false, k0 + r, names, theta));
   }
   const std::vector<double> Rx = autocorrelation(pos), Rf = autocorrelation(frc);
   std::vector<double> R(std::max(Rx.size(), Rf.size()), 0.0);
@@ -225,10 +231,10 @@ AprioriSpread idim_spread(const PlanMeasurement& m, const PlanRig& rig, const Ex
 
 AprioriSpread a_priori_spread(PlanMethod method, const ExperimentProfile& profile, const PlanRig& rig,
                               const Trajectory& clean, const SensorNoise& noise) {
-  if (method != PlanMethod::sweep && method != PlanMethod::idim) return {};
+  if (method != PlanMethod::sweep && !is_idim_plan(method)) return {};
   std::mt19937_64 unused(0);  // no noise is drawn: a zero std draws nothing
   const PlanMeasurement m = measure(clean, rig, profile, SensorNoise{}, unused);
-  return method == PlanMethod::sweep ? sweep_spread(m, rig, noise) : idim_spread(m, rig, profile, noise);
+  return method == PlanMethod::sweep ? sweep_spread(m, rig, noise) : idim_spread(method, m, rig, profile, noise);
 }
 
 }  // namespace frictionlab

@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "frictionlab/analysis/plan/fisher.hpp"
+#include <Eigen/Dense>
+#include <random>
 #include "frictionlab/budget.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/simulate/simulate.hpp"
@@ -19,6 +21,91 @@ constexpr int kDefaultRuns = 40;       // sample std to about 11 % (1 / sqrt(2 (
 constexpr int kDefaultLugreRuns = 8;   // each LuGre output-error fit takes about a second
 constexpr double kBytesPerSample = 30 * 8.0;  // a trajectory's ten columns and the copies a run's fit makes
 constexpr double kLimitSlack = 1.02;   // a simulated peak within 2 % of a limit (loop overshoot) passes
+
+// Share of an effect's regressor column that the other columns explain (R^2, uncentred) above
+// which the plan cannot separate the effect: its variance inflation 1 / (1 - R^2) exceeds 1000.
+// (A good warm-up has about 0.85: T - T_ref keeps a mean, which the qd column explains.)
+constexpr double kConfounded = 0.999;
+// |correlation| of the condition (temperature, |load|) with the speed |v| over the run above which
+// the condition follows the speed schedule: its term and the velocity terms cannot be told apart.
+// (A warm-up whose contact heats over many cycles has |corr| about 0.2; one that heats and cools
+// with each move, 0.9.)
+constexpr double kFollowsSpeed = 0.7;
+
+double correlation(const std::vector<double>& a, const std::vector<double>& b) {
+  const auto n = static_cast<double>(a.size());
+  double ma = 0, mb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) ma += a[i] / n, mb += b[i] / n;
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    sab += (a[i] - ma) * (b[i] - mb);
+    saa += (a[i] - ma) * (a[i] - ma);
+    sbb += (b[i] - mb) * (b[i] - mb);
+  }
+  return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
+}
+
+// Warnings for the effects' parameters (the load, temperature and ripple columns) that the other
+// columns of the clean record's idim regression explain: the design cannot separate them (e.g.
+// a temperature that rises with the speed schedule makes qd (T - T_ref) follow qd).
+std::vector<std::string> confounding(PlanMethod method, const PlanRig& rig, const ExperimentProfile& p,
+                                     const Trajectory& clean, std::vector<PlanFigure>& figures) {
+  std::vector<std::string> out;
+  if (method != PlanMethod::load_steps && method != PlanMethod::warm_up && method != PlanMethod::ripple_scan) return out;
+  // The condition against the speed: a temperature that rises and falls with the moves.
+  const std::vector<double>& cond = method == PlanMethod::warm_up ? clean.temperature : clean.load;
+  if (method != PlanMethod::ripple_scan && cond.size() == clean.velocity.size() && !cond.empty()) {
+    std::vector<double> speed(clean.velocity.size()), level(cond.size());
+    for (std::size_t i = 0; i < speed.size(); ++i) speed[i] = std::abs(clean.velocity[i]), level[i] = std::abs(cond[i]);
+    const double c = correlation(level, speed);
+    const std::string what = method == PlanMethod::warm_up ? "temperature" : "load";
+    figures.push_back({what + "_speed_correlation", c, "", "correlation of the " + what + " with |v| over the run"});
+    if (std::abs(c) > kFollowsSpeed)
+      out.push_back(std::string(method == PlanMethod::warm_up ? "Fv_per_K" : "mu_load") + " is confounded with the speed: the " +
+                    what + " follows the speed schedule (correlation " + format_number(c, 3) + " with |v|), so its term and "
+                    "the velocity terms (Fv, Fc) cannot be told apart; heat (or load) the contact over many cycles of "
+                    "both speeds (a slower thermal response, a longer run)");
+  }
+  std::mt19937_64 unused(0);
+  const PlanMeasurement m = measure(clean, rig, p, SensorNoise{}, unused);
+  const IdimRegression reg = idim_regression(plan_idim_data(m), plan_idim_options(rig, method, &p));
+  const Eigen::Index n = reg.X.rows(), k = reg.X.cols();
+  if (n <= k) return out;
+  static const std::vector<std::string> base = {"M", "Fv", "Fc", "offset"};
+  for (Eigen::Index j = 0; j < k; ++j) {
+    const std::string& name = reg.terms[static_cast<std::size_t>(j)].parameter;
+    if (std::find(base.begin(), base.end(), name) != base.end()) continue;
+    const Eigen::VectorXd x = reg.X.col(j);
+    const double xx = x.squaredNorm();
+    if (!(xx > 0)) {
+      out.push_back(name + ": its regressor is zero on this plan (nothing excites it)");
+      continue;
+    }
+    Eigen::MatrixXd others(n, k - 1);
+    for (Eigen::Index c = 0, o = 0; c < k; ++c)
+      if (c != j) others.col(o++) = reg.X.col(c);
+    const Eigen::VectorXd r = x - others * others.colPivHouseholderQr().solve(x);
+    const double R2 = 1 - r.squaredNorm() / xx;
+    figures.push_back({name + "_explained", 100 * R2, "%",
+                       "share of its regressor the other terms explain (above " + format_number(100 * kConfounded, 3) +
+                           " %: confounded)"});
+    if (R2 > kConfounded) {
+      std::string most;
+      double best = 0;
+      for (Eigen::Index c = 0; c < k; ++c) {
+        if (c == j) continue;
+        const double cn = reg.X.col(c).norm();
+        const double corr = cn > 0 ? std::abs(x.dot(reg.X.col(c))) / (std::sqrt(xx) * cn) : 0.0;
+        if (corr > best) best = corr, most = reg.terms[static_cast<std::size_t>(c)].parameter;
+      }
+      out.push_back(name + " is confounded with the other terms on this plan: they explain " + format_number(100 * R2, 4) +
+                    " % of its regressor (most with " + most + ", |correlation| " + format_number(best, 3) +
+                    "); the design cannot separate them" +
+                    (method == PlanMethod::warm_up ? " (the temperature follows the speed schedule)" : ""));
+    }
+  }
+  return out;
+}
 
 nlohmann::json number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
@@ -103,6 +190,17 @@ PlanResult plan_experiment(PlanMethod method, const PlanRig& rig, const PlanOpti
         out.simulated.push_back({"stop_time", it->time, "s", "return to standstill on the prior"});
         break;
       }
+
+  if (!clean.temperature.empty() && method == PlanMethod::warm_up) {
+    const auto [lo, hi] = std::minmax_element(clean.temperature.begin(), clean.temperature.end());
+    out.simulated.push_back({"temperature_rise", *hi - *lo, "K", "temperature range of the run on the prior"});
+  }
+  if (!clean.load.empty()) {
+    double lmax = 0;
+    for (double x : clean.load) lmax = std::max(lmax, std::abs(x));
+    out.simulated.push_back({"peak_load", lmax, fu, "largest |load| of the run"});
+  }
+  for (auto& w : confounding(method, rig, p, clean, out.simulated)) out.warnings.push_back(std::move(w));
 
   out.prediction = monte_carlo_spread(method, p, rig, clean, options.noise, runs, options.seed, options.progress);
   // The a-priori (Fisher-information) std of the noise-free plan next to the Monte Carlo one.

@@ -87,6 +87,11 @@ Trajectory simulate_profile(const ExperimentProfile& profile, const PlanRig& rig
   sc.inputs.clear();
   sc.options.duration = profile.duration;
   sc.options.output_rate = profile.sample_rate;
+  if (profile.load) {
+    if (sc.options.environments.empty()) sc.options.environments.resize(1);
+    sc.options.environments[0].load = LoadSource{};
+    sc.options.environments[0].load.signal = *profile.load;
+  }
   return simulate(sc);
 }
 
@@ -102,6 +107,8 @@ PlanMeasurement measure(const Trajectory& clean, const PlanRig& rig, const Exper
     m.force = add_noise(column(clean.drive), noise.force, rng);
   m.reference.resize(m.time.size());
   for (Eigen::Index i = 0; i < m.time.size(); ++i) m.reference[i] = profile.signal.at(m.time[i]).value;
+  if (!clean.load.empty()) m.load = column(clean.load);
+  if (!clean.temperature.empty()) m.temperature = column(clean.temperature);
   return m;
 }
 
@@ -114,15 +121,44 @@ SweepOptions plan_sweep_options(const PlanRig& rig, const Eigen::VectorXd& refer
   return o;
 }
 
-IdimOptions plan_idim_options(const PlanRig& rig) {
+IdimOptions plan_idim_options(const PlanRig& rig, PlanMethod method, const ExperimentProfile* profile) {
   IdimOptions o;
   o.auto_cutoff = o.auto_decimation = o.auto_skip = true;
   o.axis = rig.axis;
+  const LawEffects& e = rig.law.effects();
+  switch (method) {
+    case PlanMethod::load_steps: o.terms.push_back("load"); break;
+    case PlanMethod::warm_up:
+      o.terms.push_back("temperature");
+      if (e.temperature) o.temperature_ref = e.temperature->T_ref;
+      break;
+    case PlanMethod::ripple_scan:
+      o.terms.push_back("ripple");
+      if (e.ripple) {
+        o.ripple_period = e.ripple->period;
+        o.ripple_harmonics = static_cast<int>(std::max<std::size_t>(e.ripple->harmonics(), 1));
+      }
+      break;
+    default: break;
+  }
+  if (profile)
+    for (const auto& f : profile->figures)
+      if (f.name == "exclude_below") o.exclude_below = f.value;
   return o;
 }
 
+IdimData plan_idim_data(const PlanMeasurement& m) {
+  IdimData data;
+  data.time = m.time;
+  data.position = m.position;
+  data.force = m.force;
+  data.load = m.load;
+  data.temperature = m.temperature;
+  return data;
+}
+
 Result identify_measurement(PlanMethod method, const PlanMeasurement& d, const PlanRig& rig,
-                            const ExperimentProfile&) {
+                            const ExperimentProfile& profile) {
   switch (method) {
     case PlanMethod::breakaway: {
       BreakawayOptions o;
@@ -131,14 +167,11 @@ Result identify_measurement(PlanMethod method, const PlanMeasurement& d, const P
     }
     case PlanMethod::sweep:
       return identify_sweep(SweepData{d.time, d.force, d.velocity, {}}, plan_sweep_options(rig, d.reference));
-    case PlanMethod::idim: {
-      const IdimOptions o = plan_idim_options(rig);
-      IdimData data;
-      data.time = d.time;
-      data.position = d.position;
-      data.force = d.force;
-      return identify_idim(data, o);
-    }
+    case PlanMethod::idim:
+    case PlanMethod::load_steps:
+    case PlanMethod::warm_up:
+    case PlanMethod::ripple_scan:
+      return identify_idim(plan_idim_data(d), plan_idim_options(rig, method, &profile));
     case PlanMethod::lugre: {
       LugreOptions o;
       o.inertia = rig.inertia;
@@ -158,7 +191,7 @@ MonteCarloSpread monte_carlo_spread(PlanMethod method, const ExperimentProfile& 
   out.seed = seed;
   std::vector<std::string> order, readoff_order;
   std::map<std::string, Collect> params, readoff;
-  const bool fisher = method == PlanMethod::sweep || method == PlanMethod::idim;
+  const bool fisher = method == PlanMethod::sweep || is_idim_plan(method);
   for (int k = 1; k <= runs; ++k) {
     throw_if_cancelled();
     std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),

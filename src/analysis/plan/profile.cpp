@@ -21,7 +21,14 @@ std::vector<std::string> ExperimentProfile::column_names() const {
   std::string unit = command_unit;
   for (auto& c : unit)
     if (c == ' ' || c == '/') c = '_';
-  return {"time_s", command + "_" + unit};
+  std::vector<std::string> names{"time_s", command + "_" + unit};
+  if (load) {
+    std::string lu = load_unit;
+    for (auto& c : lu)
+      if (c == ' ') c = '_';
+    names.push_back("load_" + lu);
+  }
+  return names;
 }
 
 void ExperimentProfile::samples(std::vector<double>& time, std::vector<double>& command_values) const {
@@ -38,9 +45,10 @@ std::string ExperimentProfile::to_csv() const {
   std::vector<double> t, u;
   samples(t, u);
   const auto names = column_names();
-  std::string out = names[0] + "," + names[1] + "\n";
-  out.reserve(out.size() + t.size() * 24);
-  for (std::size_t k = 0; k < t.size(); ++k) out += format_exact(t[k]) + "," + format_exact(u[k]) + "\n";
+  std::string out = names[0] + "," + names[1] + (load ? "," + names[2] : std::string()) + "\n";
+  out.reserve(out.size() + t.size() * (load ? 36 : 24));
+  for (std::size_t k = 0; k < t.size(); ++k)
+    out += format_exact(t[k]) + "," + format_exact(u[k]) + (load ? "," + format_exact(load->at(t[k]).value) : std::string()) + "\n";
   return out;
 }
 

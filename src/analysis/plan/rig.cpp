@@ -25,6 +25,17 @@ const char* plan_drive_name(PlanDrive drive) {
 double PlanRig::prior(const std::string& name) const {
   if (name == "M") return inertia;
   if (name == "offset") return offset;
+  // The effects' parameters as idim's load, temperature and ripple terms name them.
+  const LawEffects& e = law.effects();
+  if (name == "mu_load") return e.load ? e.load->mu_coulomb : std::numeric_limits<double>::quiet_NaN();
+  if (name == "load_gain") return e.load ? 0.0 : std::numeric_limits<double>::quiet_NaN();  // the simulated load presses the contact only
+  if (name == "Fv_per_K") return e.temperature ? e.temperature->Fv_per_K : std::numeric_limits<double>::quiet_NaN();
+  for (const char* kind : {"ripple_sin_", "ripple_cos_"})
+    if (name.rfind(kind, 0) == 0 && e.ripple) {
+      const std::size_t k = std::stoul(name.substr(std::string(kind).size()));
+      const std::vector<double>& c = kind[7] == 's' ? e.ripple->a : e.ripple->b;
+      return k >= 1 && k <= c.size() ? c[k - 1] : 0.0;
+    }
   for (const auto& p : law.parameters())
     if (p.name == name) return p.value;
   if (name == "Fv")

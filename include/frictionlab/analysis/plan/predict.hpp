@@ -29,10 +29,16 @@ struct PlanMeasurement {
   Eigen::VectorXd velocity;   ///< m/s or rad/s (noise added)
   Eigen::VectorXd force;      ///< drive force, N or N m: Kt times the noisy current, or the noisy force
   Eigen::VectorXd reference;  ///< the command at each sample (command unit), exact
+  /// The load (N or N m) and the contact's temperature (degC or K) at each sample, as the rig
+  /// logs them (exact: the plan's noise is on the motion and force sensors); empty when the run
+  /// has no environment.
+  Eigen::VectorXd load, temperature;
 };
 
 /// Simulates the profile on the rig's plant with friction `law` (the prior's, or a different
-/// "true" law for a check), sampled at profile.sample_rate over profile.duration.
+/// "true" law for a check), sampled at profile.sample_rate over profile.duration; a profile's
+/// load (load-steps) is the contact's load signal (the scenario's environment keeps its
+/// temperature or thermal model).
 /// \throws std::runtime_error when the integrator fails; std::invalid_argument for bad options.
 Trajectory simulate_profile(const ExperimentProfile& profile, const PlanRig& rig, const FrictionLaw& law);
 
@@ -46,8 +52,16 @@ PlanMeasurement measure(const Trajectory& clean, const PlanRig& rig, const Exper
 SweepOptions plan_sweep_options(const PlanRig& rig, const Eigen::VectorXd& reference);
 
 /// The options the plan identifies an idim record with: the recipe's cut-off, decimation and
-/// skip from the sample rate (idim_rate_defaults), the default terms.
-IdimOptions plan_idim_options(const PlanRig& rig);
+/// skip from the sample rate (idim_rate_defaults), the default terms, and for the effects' plans
+/// the term they are for: load-steps "load", warm-up "temperature" (T_ref the prior's, so Fv is
+/// the prior's Fv at T_ref), ripple-scan "ripple" (the prior's period and harmonics), and the
+/// profile's figure "exclude_below" (m/s or rad/s) when it has one (ripple-scan: rows at rest,
+/// where stiction holds the ripple, left out).
+IdimOptions plan_idim_options(const PlanRig& rig, PlanMethod method = PlanMethod::idim,
+                              const ExperimentProfile* profile = nullptr);
+
+/// The idim data of a measurement: time, position, force, and its load and temperature columns.
+IdimData plan_idim_data(const PlanMeasurement& m);
 
 /// The method's identification of a record as a user would run it on the rig's data:
 /// breakaway (identify_breakaway, inertia estimated), sweep (identify_sweep with the profile's

@@ -2,6 +2,7 @@
 // An experiment profile: the command signal a plan gives the rig's controller (time and one
 // commanded signal with its unit), the figures that describe it, and its time windows.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,9 @@ struct ExperimentProfile {
   std::string command;       ///< what is commanded: "current", "force", "torque", "velocity", "position"
   std::string command_unit;  ///< "A", "N", "N m", "m/s", "rad/s", "m", "rad"
   InputSignal signal;        ///< the command u(t) (command unit), t in s from 0
+  /// The load the rig applies with the command (load-steps), N or N m; a third column of the CSV.
+  std::optional<InputSignal> load;
+  std::string load_unit;     ///< "N" or "N m" with a load
   double duration = 0.0;     ///< s
   double sample_rate = 0.0;  ///< Hz of the written profile and of the simulated measurement
   std::vector<PlanFigure> figures;

@@ -48,7 +48,9 @@ struct PlanRig {
   std::string prior_file, scenario_file;  ///< for results and messages
 
   /// The prior law's parameter `name` (Fc, Fs, Fv, vs, delta, sigma0, ...), "M" (inertia),
-  /// "offset"; "Fv" falls back to a LuGre law's sigma2 and "Fs" to the breakaway level.
+  /// "offset"; "Fv" falls back to a LuGre law's sigma2 and "Fs" to the breakaway level. The
+  /// effects' parameters as idim names them: "mu_load" (the Coulomb level's), "load_gain" (0: a
+  /// simulated load presses the contact only), "Fv_per_K", "ripple_sin_k", "ripple_cos_k".
   /// NaN when the prior has no such parameter.
   double prior(const std::string& name) const;
   /// Mechanical time constant inertia / damping, s; infinity without damping.
