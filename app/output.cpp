@@ -175,8 +175,30 @@ std::string shell_word(const std::string& s) {
   return out + "'";
 }
 
-// The command line (as given, options in their declared order) and every option with its value
-// or default, for the report.
+// The method's table entry of a command-line option ("--kp"), or null for the command line's
+// own options (data columns, outputs, batch).
+const OptionSpec* table_option(const OutputOptions& o, const std::string& name) {
+  if (!o.values) return nullptr;
+  for (const OptionSpec& s : o.values->table())
+    if ("--" + s.name == name) return &s;
+  return nullptr;
+}
+
+// A method option's value with its unit when it is a number ("0.001 m/s"; a word such as
+// "search" or a scalar's name as given).
+std::string with_unit(const OptionSpec* spec, const std::string& value, bool rotary) {
+  if (!spec || (spec->type != OptionType::number && spec->type != OptionType::integer)) return value;
+  const std::string& unit = spec->unit_on(rotary);
+  char* end = nullptr;
+  const bool number = !value.empty() && (std::strtod(value.c_str(), &end), *end == '\0');
+  return number && !unit.empty() ? value + " " + unit : value;
+}
+
+// The command line (as given, options in their declared order) and the options that applied to
+// the run: every option given, with its value; a method option not given, with its default when
+// it has one and applies (OptionSpec::applies_if: --iv-iterations only with --iv); a command-line
+// option not given, with its default unless that is empty or "none" (an output not asked for).
+// The batch options are left out unless given: a report is of one file's run.
 ReportInfo report_info(const Result& r, const OutputOptions& o) {
   ReportInfo info;
   info.version = kVersion;
@@ -185,6 +207,15 @@ ReportInfo report_info(const Result& r, const OutputOptions& o) {
     return info;
   }
   info.title = command_path(o.command);
+  const bool rotary = r.axis == Axis::rotary;
+  const auto given = [&o](const char* name) {
+    const CLI::Option* opt = o.command->get_option_no_throw(name);
+    return opt && opt->count() > 0;
+  };
+  // The force comes from one of --force, --input (with --gain) or --current (with --kt)
+  // (force_column, data_options.cpp): once one is given, the others' defaults are not used.
+  const bool force_source_given = given("--force") || given("--input") || given("--gain") || given("--current") ||
+                                  given("--kt");
   std::string line = info.title;
   for (const CLI::Option* opt : o.command->get_options()) {
     const std::string name = opt->get_name(false, true);
@@ -197,9 +228,15 @@ ReportInfo report_info(const Result& r, const OutputOptions& o) {
         joined += (joined.empty() ? "" : ", ") + v;
       }
       if (flag) line += " " + name;
-      info.options.emplace_back(name, flag ? "yes" : joined);
-    } else if (!opt->get_default_str().empty()) {
-      info.options.emplace_back(name, opt->get_default_str() + " (default)");
+      info.options.emplace_back(name, flag ? "yes" : with_unit(table_option(o, name), joined, rotary));
+    } else if (const OptionSpec* spec = table_option(o, name)) {
+      if (spec->default_value && o.values->applies(spec->name)) {
+        info.options.emplace_back(name, with_unit(spec, option_text(*spec->default_value), rotary) + " (default)");
+      }
+    } else if (const std::string d = opt->get_default_str();
+               !d.empty() && d != "none" && opt->get_group().rfind("Batch", 0) != 0 &&  // kBatchGroup
+               !(force_source_given && (name == "--force" || name == "--input" || name == "--current"))) {
+      info.options.emplace_back(name, d + " (default)");
     }
   }
   info.command_line = line;

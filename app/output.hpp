@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "frictionlab/error.hpp"
+#include "frictionlab/identify/options.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "report/report.hpp"
 
@@ -23,6 +24,10 @@ struct OutputOptions {
   std::string report;      ///< report directory, empty for none
   bool overwrite = false;  ///< replace existing output files
   CLI::App* command = nullptr;  ///< the subcommand (set by add_output_options), for the report's options
+  /// The method's option values (identify sets them before emit): the report lists an option of
+  /// the method's table that was not given only when it has a default and applies to the run
+  /// (OptionSpec::applies_if). Null: such options are listed only when given.
+  const OptionValues* values = nullptr;
 };
 
 /// Adds --json, --plot, --report and --overwrite to `cmd` (identify methods and validate), and

@@ -31,7 +31,7 @@ MethodInfo detail::auto_method_info() {
        .help = "Contiguous time blocks of the cross-validation: each candidate is fitted on all blocks but one and "
                "predicts the drive force of that one, in turn (more blocks: more data per fit, shorter held-out "
                "blocks)",
-       .min = 2},
+       .min = 2, .applies_if = {unless_given("validate")}},
       {.name = "from", .type = OptionType::text,
        .help = "What the trajectory candidates' regressors are built from when the data has both: position or "
                "velocity. Default: position, or velocity when only a velocity is given",

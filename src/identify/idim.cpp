@@ -593,10 +593,11 @@ MethodInfo detail::idim_method_info() {
                "error (the best of a 40-point log grid from 1e-4 to 0.5 of the top speed, refined by a golden-section "
                "search)",
        .min = 0, .min_open = true, .words = {"search"},
-       .expected_text = "a Stribeck velocity (m/s or rad/s) or 'search'", .deprecated_keywords = {"stribeck_vs"}},
+       .expected_text = "a Stribeck velocity (m/s or rad/s) or 'search'", .deprecated_keywords = {"stribeck_vs"},
+       .applies_if = {when_value("terms", {"stribeck"})}},
       {.name = "delta", .type = OptionType::number, .default_value = d.stribeck_delta,
        .help = "Stribeck exponent of the stribeck term", .min = 0, .min_open = true,
-       .deprecated_keywords = {"stribeck_delta"}},
+       .deprecated_keywords = {"stribeck_delta"}, .applies_if = {when_value("terms", {"stribeck"})}},
       {.name = "delay", .type = OptionType::integer, .unit = "samples", .default_value = static_cast<long long>(d.input_delay),
        .help = "Samples by which the applied force lags the recorded input (EMPS: 1, its controller output is "
                "applied one sample later)",
@@ -612,20 +613,24 @@ MethodInfo detail::idim_method_info() {
        .help = "Largest condition number of the column-normalised regressor accepted", .min = 1},
       {.name = "load", .type = OptionType::column, .unit = "N", .rotary_unit = "N m",
        .help = "Column of the load force or torque the contact transmits, for the load term (Python: an array of "
-               "the data's length)"},
+               "the data's length)",
+       .applies_if = {when_value("terms", {"load"})}},
       {.name = "temperature", .type = OptionType::column, .unit = "degC or K",
        .help = "Column of the contact's temperature (grease, gearbox), for the temperature term (Python: an array of "
-               "the data's length)"},
+               "the data's length)",
+       .applies_if = {when_value("terms", {"temperature"})}},
       {.name = "temperature-ref", .type = OptionType::number, .unit = "degC or K",
        .help = "Reference temperature T_ref of the temperature term, in the temperature column's unit. Default: the "
-               "mean temperature of the used samples (reported)"},
+               "mean temperature of the used samples (reported)",
+       .applies_if = {when_value("terms", {"temperature"})}},
       {.name = "ripple-period", .type = OptionType::number, .unit = "m", .rotary_unit = "rad",
        .help = "Period P of the ripple term: the distance over which cogging or a screw's pitch repeats (required by "
                "the ripple term)",
-       .min = 0, .min_open = true},
+       .min = 0, .min_open = true, .applies_if = {when_value("terms", {"ripple"})}},
       {.name = "ripple-harmonics", .type = OptionType::integer,
        .default_value = static_cast<long long>(d.ripple_harmonics),
-       .help = "Harmonics K of the ripple term: parameters ripple_sin_1, ripple_cos_1, ... ripple_cos_K", .min = 1},
+       .help = "Harmonics K of the ripple term: parameters ripple_sin_1, ripple_cos_1, ... ripple_cos_K", .min = 1,
+       .applies_if = {when_value("terms", {"ripple"})}},
       {.name = "validate", .type = OptionType::file,
        .help = "Second data file for a cross-test with the identified parameters (Python: a dict with time, force "
                "and position or velocity)"},
@@ -637,43 +642,51 @@ MethodInfo detail::idim_method_info() {
        .help = "IDIM-IV: a scenario YAML of the experiment (examples/emps_closed_loop.yaml) whose controller section "
                "gives the controller (type, gains, limit, delay; EMPS pulses); its plant must be an axis. Read as "
                "validate reads it (its data file replaced by DATA, friction and M not used); the controller options "
-               "given override its values (Python: a path, read with its own data file, or a Scenario)"},
+               "given override its values (Python: a path, read with its own data file, or a Scenario)",
+       .applies_if = {when_given("iv")}},
       {.name = "reference", .type = OptionType::column, .unit = "m", .rotary_unit = "rad",
-       .help = "IDIM-IV: column of the closed loop's reference position (Python: an array of the data's length)"},
+       .help = "IDIM-IV: column of the closed loop's reference position (Python: an array of the data's length)",
+       .applies_if = {when_given("iv")}},
       {.name = "feedforward", .type = OptionType::column, .unit = "N", .rotary_unit = "N m",
        .help = "IDIM-IV: column of the feedforward force the drive added to the controller's output (optional; "
-               "Python: an array of the data's length)"},
+               "Python: an array of the data's length)",
+       .applies_if = {when_given("iv")}},
       {.name = "controller", .type = OptionType::text,
        .help = "IDIM-IV: the experiment's controller, sampled at the record's rate: pid (force = kp (r - q) + ki "
                "int(r - q) - kd qd + feedforward) or emps-pd (v = kp kv (r - q) - kv qd_m, force = drive-gain v; "
                "EMPS benchmark)",
-       .words = {"pid", "emps-pd"}},
+       .words = {"pid", "emps-pd"}, .applies_if = {when_given("iv")}},
       {.name = "kp", .type = OptionType::number, .unit = "N/m or 1/s", .rotary_unit = "N m/rad or 1/s",
-       .help = "IDIM-IV: position gain (pid: N/m or N m/rad; emps-pd: the position loop's 1/s)", .min = 0, .scalar_name = true},
+       .help = "IDIM-IV: position gain (pid: N/m or N m/rad; emps-pd: the position loop's 1/s)", .min = 0, .scalar_name = true,
+       .applies_if = {when_given("iv")}},
       {.name = "kd", .type = OptionType::number, .unit = "N s/m", .rotary_unit = "N m s/rad",
-       .help = "IDIM-IV, pid: velocity feedback gain on the measured velocity. Default 0", .min = 0, .scalar_name = true},
+       .help = "IDIM-IV, pid: velocity feedback gain on the measured velocity. Default 0", .min = 0, .scalar_name = true,
+       .applies_if = {when_given("iv")}},
       {.name = "ki", .type = OptionType::number, .unit = "N/(m s)", .rotary_unit = "N m/(rad s)",
-       .help = "IDIM-IV, pid: integral gain. Default 0", .min = 0, .scalar_name = true},
+       .help = "IDIM-IV, pid: integral gain. Default 0", .min = 0, .scalar_name = true,
+       .applies_if = {when_given("iv")}},
       {.name = "kv", .type = OptionType::number, .unit = "V s/m", .rotary_unit = "V s/rad",
-       .help = "IDIM-IV, emps-pd: velocity-loop gain (EMPS: kv of the data file, 243.45)", .min = 0, .scalar_name = true},
+       .help = "IDIM-IV, emps-pd: velocity-loop gain (EMPS: kv of the data file, 243.45)", .min = 0, .scalar_name = true,
+       .applies_if = {when_given("iv")}},
       {.name = "drive-gain", .type = OptionType::number, .unit = "N/V", .rotary_unit = "N m/V",
        .help = "IDIM-IV, emps-pd: force per volt of the controller's output (EMPS: gtau). Command line default: "
                "--gain",
-       .min = 0, .min_open = true, .scalar_name = true},
+       .min = 0, .min_open = true, .scalar_name = true, .applies_if = {when_given("iv")}},
       {.name = "control-limit", .type = OptionType::number, .unit = "N or V", .rotary_unit = "N m or V",
        .help = "IDIM-IV: saturation of the controller's output (pid: N or N m, default none; emps-pd: V, default "
                "10, the EMPS drive's)",
-       .min = 0, .min_open = true, .scalar_name = true},
+       .min = 0, .min_open = true, .scalar_name = true, .applies_if = {when_given("iv")}},
       {.name = "control-delay", .type = OptionType::integer, .unit = "samples",
        .help = "IDIM-IV: samples from computing the controller's output to applying it, 0 or 1 (default: pid 0, "
                "emps-pd 1)",
-       .min = 0, .max = 1},
+       .min = 0, .max = 1, .applies_if = {when_given("iv")}},
       {.name = "iv-iterations", .type = OptionType::integer, .default_value = static_cast<long long>(d.iv.max_iterations),
-       .help = "IDIM-IV: largest number of iterations; not converged by then is an error", .min = 1},
+       .help = "IDIM-IV: largest number of iterations; not converged by then is an error", .min = 1,
+       .applies_if = {when_given("iv")}},
       {.name = "iv-tolerance", .type = OptionType::number, .default_value = d.iv.tolerance,
        .help = "IDIM-IV: converged when no parameter's change moves the model force by more than this share of "
                "its norm",
-       .min = 0, .min_open = true},
+       .min = 0, .min_open = true, .applies_if = {when_given("iv")}},
   };
   return m;
 }

@@ -265,7 +265,7 @@ MethodInfo detail::lugre_method_info() {
       {.name = "stribeck-velocity", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s",
        .default_value = d.stribeck_velocity,
        .help = "Stribeck velocity used with a --static static-coulomb-viscous law, which has none", .min = 0,
-       .min_open = true},
+       .min_open = true, .applies_if = {when_given("static")}},
       {.name = "vd", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s", .default_value = d.vd,
        .help = "Damping decay velocity of the damping sigma1 exp(-(v/vd)^2), held fixed; 0 = constant damping. A "
                "--static lugre model with vd > 0 gives its own",

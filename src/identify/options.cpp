@@ -211,7 +211,9 @@ std::string option_text(const OptionValue& value) {
   if (const auto* i = std::get_if<long long>(&value)) return std::to_string(*i);
   if (const auto* d = std::get_if<double>(&value)) return number_text(*d);
   if (const auto* s = std::get_if<std::string>(&value)) return *s;
-  return joined(std::get<std::vector<std::string>>(value), ",");
+  std::string list;  // "a,b" as the command line takes it (joined() would give "a, b,c")
+  for (const auto& item : std::get<std::vector<std::string>>(value)) list += (list.empty() ? "" : ",") + item;
+  return list;
 }
 
 const std::vector<OptionSpec>& OptionValues::table() const {
@@ -275,6 +277,21 @@ std::vector<std::string> OptionValues::list(const std::string& name) const {
   if (!v) return {};
   if (const auto* l = std::get_if<std::vector<std::string>>(&*v)) return *l;
   return {option_text(*v)};
+}
+
+bool OptionValues::applies(const std::string& name) const {
+  for (const OptionCondition& c : spec(name).applies_if) {
+    const OptionSpec& other = spec(c.option);
+    bool holds = false;
+    if (c.words.empty()) {
+      holds = other.type == OptionType::flag ? flag(c.option) : given(c.option);
+    } else {
+      for (const std::string& item : list(c.option))  // a text is a list of one
+        if (std::find(c.words.begin(), c.words.end(), item) != c.words.end()) holds = true;
+    }
+    if (holds == c.negated) return false;
+  }
+  return true;
 }
 
 std::string options_json(const OptionValues& values, bool rotary) {

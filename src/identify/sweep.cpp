@@ -123,26 +123,30 @@ MethodInfo detail::sweep_method_info() {
                .refusal = "cannot be fitted to a friction-velocity map"});
   o.push_back({.name = "delta", .type = OptionType::number, .default_value = d.fit.fixed_delta,
                .help = "Hold the Stribeck exponent at this value; 0: fitted (within 0.5 to 5)", .min = 0,
-               .deprecated_keywords = {"fixed_delta"}});
+               .deprecated_keywords = {"fixed_delta"},
+               .applies_if = {when_value("model", {"stribeck", "stribeck-asymmetric"})}});
   o.push_back({.name = "tolerance", .type = OptionType::number, .default_value = d.relative_tolerance,
                .help = "Relative velocity band of a steady segment (a fraction of its speed)", .min = 0,
-               .deprecated_keywords = {"relative_tolerance"}});
+               .deprecated_keywords = {"relative_tolerance"}, .applies_if = {unless_given("segment")}});
   o.push_back({.name = "velocity-tolerance", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s",
-               .default_value = d.velocity_tolerance, .help = "Absolute velocity band of a steady segment", .min = 0});
+               .default_value = d.velocity_tolerance, .help = "Absolute velocity band of a steady segment", .min = 0,
+               .applies_if = {unless_given("segment")}});
   o.push_back({.name = "noise-band", .type = OptionType::number, .default_value = d.noise_band,
                .help = "Half-width of the steady band in standard deviations of the smoothed velocity's measured noise",
-               .min = 0});
+               .min = 0, .applies_if = {unless_given("segment"), unless_given("reference")}});
   o.push_back({.name = "smoothing-fraction", .type = OptionType::number, .default_value = d.smoothing_fraction,
-               .help = "Moving-average window of the velocity, as a fraction of --min-duration", .min = 0, .min_open = true});
+               .help = "Moving-average window of the velocity, as a fraction of --min-duration", .min = 0, .min_open = true,
+               .applies_if = {unless_given("segment"), unless_given("reference")}});
   o.push_back({.name = "min-duration", .type = OptionType::number, .unit = "s", .default_value = d.min_duration,
-               .help = "Shortest steady segment kept", .min = 0, .min_open = true});
+               .help = "Shortest steady segment kept", .min = 0, .min_open = true,
+               .applies_if = {unless_given("segment")}});
   o.push_back({.name = "settle-fraction", .type = OptionType::number, .default_value = d.settle_fraction,
                .help = "Part of each segment dropped at its start (the settling of the previous speed step)", .min = 0,
-               .max = 1, .max_open = true});
+               .max = 1, .max_open = true, .applies_if = {unless_given("segment")}});
   o.push_back({.name = "min-speed", .type = OptionType::number, .unit = "m/s", .rotary_unit = "rad/s",
                .help = "Slower segments are standstill, not sliding. Default: 1e-6 of the largest |velocity| (of "
                        "--reference when given)",
-               .min = 0});
+               .min = 0, .applies_if = {unless_given("segment")}});
   o.push_back({.name = "min-segments", .type = OptionType::integer,
                .help = "Fewer steady segments is an error. Default: the law's parameter count + 1", .min = 1});
   o.push_back({.name = "segment", .type = OptionType::list, .unit = "s",
@@ -152,7 +156,8 @@ MethodInfo detail::sweep_method_info() {
   o.push_back({.name = "reference", .type = OptionType::column, .unit = "m/s", .rotary_unit = "rad/s",
                .help = "Commanded velocity: steady segments are found on it instead of on the measured velocity "
                        "(which is smoothed, with a band that covers its measured noise). Python: an array of the "
-                       "data's length"});
+                       "data's length",
+               .applies_if = {unless_given("segment")}});
   o.push_back({.name = "load", .type = OptionType::column, .unit = "N", .rotary_unit = "N m",
                .help = "Column of the load force or torque the contact transmits: each steady segment's mean |load| "
                        "goes with its point and mu_load (the Coulomb and static levels' rise per unit of load, "

@@ -186,6 +186,47 @@ TEST(Options, RecordListsEveryOptionWithValueAndUnit) {
   EXPECT_EQ(nlohmann::json::parse(options_json(v, false))["velocity-tolerance"]["unit"], "m/s");
 }
 
+// When an option applies (OptionSpec::applies_if, which the report's Options table follows): an
+// IV option only with --iv, the Stribeck term's only when --terms holds stribeck, sweep's
+// detection options not with --segment; every condition names an option of its own table.
+TEST(Options, AppliesFollowsTheTableConditions) {
+  const MethodInfo& idim = method_info(MethodId::idim);
+  OptionValues v = idim.values();
+  EXPECT_TRUE(v.applies("filter-order"));  // no condition: always
+  EXPECT_FALSE(v.applies("iv-iterations"));
+  EXPECT_FALSE(v.applies("kp"));
+  EXPECT_FALSE(v.applies("vs"));  // the default terms have no stribeck
+  v.set("iv", true, "--iv");
+  v.set("terms", parse_option(*idim.option("terms"), "inertia,viscous,coulomb,stribeck", "--terms"), "--terms");
+  EXPECT_TRUE(v.applies("iv-iterations"));
+  EXPECT_TRUE(v.applies("kp"));
+  EXPECT_TRUE(v.applies("vs"));
+  EXPECT_FALSE(v.applies("ripple-harmonics"));
+  OptionValues off = idim.values();
+  off.set("iv", false, "iv");  // given, but off (Python iv=False)
+  EXPECT_FALSE(off.applies("iv-tolerance"));
+
+  const MethodInfo& sweep = method_info(MethodId::sweep);
+  OptionValues s = sweep.values();
+  EXPECT_TRUE(s.applies("delta"));  // the default model is stribeck
+  EXPECT_TRUE(s.applies("noise-band"));
+  s.set("model", std::string("coulomb-viscous"), "--model");
+  s.set("reference", std::string("v_cmd"), "--reference");
+  EXPECT_FALSE(s.applies("delta"));
+  EXPECT_FALSE(s.applies("noise-band"));  // found on the reference: no noise band
+  EXPECT_TRUE(s.applies("min-duration"));
+  s.set("segment", std::vector<std::string>{"1:2"}, "--segment");
+  EXPECT_FALSE(s.applies("min-duration"));
+
+  for (const auto& m : identification_methods()) {
+    const OptionValues defaults = m.values();
+    for (const auto& o : m.options) {
+      for (const auto& c : o.applies_if) EXPECT_NE(m.option(c.option), nullptr) << m.name << " --" << o.name << ": " << c.option;
+      EXPECT_NO_THROW(defaults.applies(o.name)) << m.name << " --" << o.name;
+    }
+  }
+}
+
 // The reference is what the tables say: a heading per method and a row per option with its
 // flag, keyword, default and valid values.
 TEST(Options, MarkdownReferenceListsEveryOptionOfEveryTable) {

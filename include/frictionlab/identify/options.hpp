@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -34,6 +35,25 @@ const char* to_string(OptionType type);
 /// The value of a given option: flag bool, integer long long, number double, text/column/file
 /// std::string, list std::vector<std::string>.
 using OptionValue = std::variant<bool, long long, double, std::string, std::vector<std::string>>;
+
+/// A condition on another option of the same table, under which an option applies to a run
+/// (OptionSpec::applies_if): the report lists the defaults of the options that apply.
+struct OptionCondition {
+  std::string option;  ///< the other option's name ("iv", "terms")
+  /// Empty: `option` is given, or is a flag that is on. Otherwise: its value (given, else its
+  /// default) is one of these words (a text), or holds one of them (a list).
+  std::vector<std::string> words;
+  bool negated = false;  ///< the condition is that the above does not hold
+};
+
+/// `name` is given (a flag: on): "only with --iv".
+inline OptionCondition when_given(std::string name) { return {std::move(name), {}, false}; }
+/// `name` is not given (a flag: off): "not with --segment".
+inline OptionCondition unless_given(std::string name) { return {std::move(name), {}, true}; }
+/// `name`'s value is (a text) or holds (a list) one of `words`: "only when --terms holds stribeck".
+inline OptionCondition when_value(std::string name, std::vector<std::string> words) {
+  return {std::move(name), std::move(words), false};
+}
 
 /// One option of a method.
 struct OptionSpec {
@@ -66,6 +86,10 @@ struct OptionSpec {
   std::string refusal;
   /// Former Python keywords of this option, still accepted with a DeprecationWarning.
   std::vector<std::string> deprecated_keywords;
+  /// When the option applies to a run: every condition holds (empty: always). An option that
+  /// does not apply is not used by the run whatever its value (the method may refuse it when
+  /// given); the report lists an option's default only where it applies.
+  std::vector<OptionCondition> applies_if;
 
   /// The Python keyword: the name with '-' as '_', and "_" appended to a Python reserved word
   /// ("from" -> "from_").
@@ -118,6 +142,10 @@ class OptionValues {
   bool flag(const std::string& name) const;
   std::string text(const std::string& name) const;
   std::vector<std::string> list(const std::string& name) const;
+  /// Whether option `name` applies to this run: every condition of its applies_if holds for
+  /// these values (given or not). \throws std::invalid_argument for a name the table lacks, in
+  /// `name` or in one of its conditions (a programming error of the method's own file).
+  bool applies(const std::string& name) const;
 
   const std::vector<OptionSpec>& table() const;
   const std::map<std::string, OptionValue>& given_values() const { return given_; }
