@@ -747,12 +747,17 @@ void conditions(Writer& w, const LawEffects& e, const ConditionArgs& a) {
 
 bool moves(const ConditionArgs& a) { return a.load || a.temperature; }
 
+// The comment over a compensation at the conditions: which arguments it takes, in which units.
+std::string conditions_comment(const std::string& what, const ConditionArgs& a) {
+  return "/* The " + what + " at load" + std::string(a.load ? " `load` (N or N m, measured or estimated)" : " 0") +
+         (a.temperature ? " and temperature `T` (degC or K, measured; pass T_ref when none is measured)" : "") +
+         ": the law with its levels moved. */\n";
+}
+
 // The compensations at the measured (or estimated) load and temperature (control/feedforward.cpp,
 // feedback.cpp with CompensatorInput::load, ::temperature): the band's ends move with the levels.
 void feedforward_at(Writer& w, const ConditionArgs& a) {
-  w.code("/* The feedforward at load" + std::string(a.load ? " `load` (N or N m, measured or estimated)" : " 0") +
-         (a.temperature ? " and temperature `T` (degC or K, measured; pass T_ref when none is measured)" : "") +
-         ": the law with its levels moved. */\n"
+  w.code(conditions_comment("feedforward", a) +
          "static inline REAL @_feedforward_at(REAL vr" + a.decl() + ") {\n"
          "  REAL dFc, dFs, dFv, plus, minus;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n"
          "  if (vr > @_ff_band || vr < -@_ff_band) return @_friction_moved(vr, dFc, dFs, dFv);\n"
@@ -762,9 +767,7 @@ void feedforward_at(Writer& w, const ConditionArgs& a) {
 }
 
 void feedback_at(Writer& w, const ConditionArgs& a) {
-  w.code("/* The feedback at load" + std::string(a.load ? " `load` (N or N m, measured or estimated)" : " 0") +
-         (a.temperature ? " and temperature `T` (degC or K, measured; pass T_ref when none is measured)" : "") +
-         ": the law with its levels moved. */\n"
+  w.code(conditions_comment("feedback", a) +
          "static inline REAL @_feedback_at(REAL v" + a.decl() + ") {\n"
          "  REAL dFc, dFs, dFv;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n"
          "  if (v > @_fb_dead_band || v < -@_fb_dead_band) return @_friction_moved(v, dFc, dFs, dFv);\n"

@@ -21,6 +21,37 @@ Eigen::VectorXd vec(const std::vector<double>& x) { return Eigen::Map<const Eige
 
 double param(const fl::Result& r, const std::string& name) { return r.value(name); }
 
+// The Virgala motor's sweep as measured: Km times the simulated current, with white noise on the
+// current (2 mA) and the speed (0.05 rad/s) from `seed`.
+struct NoisySweep {
+  Eigen::VectorXd time, force, speed;
+};
+NoisySweep noisy_sweep(const fl::Trajectory& tr, unsigned seed) {
+  constexpr double Km = 0.039;  // N m/A
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> current_noise(0.0, 2e-3), speed_noise(0.0, 0.05);  // A, rad/s
+  NoisySweep s{vec(tr.time), Km * vec(tr.current), vec(tr.velocity)};
+  for (Eigen::Index i = 0; i < s.force.size(); ++i) {
+    s.force[i] += Km * current_noise(rng);
+    s.speed[i] += speed_noise(rng);
+  }
+  return s;
+}
+
+// Segmentation that holds with that noise.
+fl::SweepOptions noisy_sweep_options() {
+  fl::SweepOptions o;
+  o.relative_tolerance = 0.02;
+  o.velocity_tolerance = 0.3;  // rad/s: covers the speed noise at the slowest step
+  return o;
+}
+
+bool has_warning(const fl::Result& r, const std::string& text) {
+  for (const auto& w : r.diagnostics.warnings)
+    if (w.find(text) != std::string::npos) return true;
+  return false;
+}
+
 }  // namespace
 
 // The lecture's trapezoid (J = 1.06e-6, B = 2.85e-6, Tfs = 0.0015, Tfd = 0.0012, Kt = 0.0141).
@@ -72,11 +103,6 @@ TEST(IdentifySimulated, BreakawaySaysWhenItsStdCannotBeTrusted) {
     o.axis = fl::Axis::rotary;
     return fl::identify_breakaway({vec(tr.time), force, vec(tr.velocity), {}}, o);
   };
-  const auto warned = [](const fl::Result& r, const std::string& text) {
-    for (const auto& w : r.diagnostics.warnings)
-      if (w.find(text) != std::string::npos) return true;
-    return false;
-  };
   const fl::Scenario lecture = fl::load_scenario(example("craig_motor_trapezoid.yaml"));
   fl::ScenarioOptions with_dip;
   with_dip.law = fl::FrictionLaw(fl::Stribeck{0.0012, 0.0015, 100.0, 2.0, 2.85e-6});  // vs 100 rad/s
@@ -87,7 +113,7 @@ TEST(IdentifySimulated, BreakawaySaysWhenItsStdCannotBeTrusted) {
     EXPECT_EQ(right.diagnostics.groups.at("adequacy").at("findings"), 0.0) << "seed " << seed;
     const fl::Result wrong = run(dipped, seed);
     ASSERT_TRUE(wrong.ok()) << wrong.message;
-    EXPECT_TRUE(warned(wrong, "breakaway's std of Fc, Fv and M (they assume independent samples) are too small by about"))
+    EXPECT_TRUE(has_warning(wrong, "breakaway's std of Fc, Fv and M (they assume independent samples) are too small by about"))
         << "seed " << seed;
   }
 }
@@ -104,19 +130,8 @@ TEST(IdentifySimulated, BreakawayWithoutMotionIsAnErrorStatus) {
 // true Stribeck parameters lie inside the reported 2-sigma intervals.
 TEST(IdentifySimulated, SweepRecoversVirgalaStribeckWithinTwoSigma) {
   const fl::Scenario sc = fl::load_scenario(example("virgala_motor_sweep.yaml"));
-  const fl::Trajectory tr = fl::simulate(sc);
-  constexpr double Km = 0.039;
-  std::mt19937 rng(7);
-  std::normal_distribution<double> current_noise(0.0, 2e-3), speed_noise(0.0, 0.05);  // A, rad/s
-  Eigen::VectorXd force = Km * vec(tr.current), speed = vec(tr.velocity);
-  for (Eigen::Index i = 0; i < force.size(); ++i) {
-    force[i] += Km * current_noise(rng);
-    speed[i] += speed_noise(rng);
-  }
-  fl::SweepOptions o;
-  o.relative_tolerance = 0.02;
-  o.velocity_tolerance = 0.3;  // rad/s: covers the speed noise at the slowest step
-  const fl::Result r = fl::identify_sweep({vec(tr.time), force, speed}, o);
+  const NoisySweep m = noisy_sweep(fl::simulate(sc), 7);
+  const fl::Result r = fl::identify_sweep({m.time, m.force, m.speed}, noisy_sweep_options());
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_EQ(r.diagnostics.lists.at("points").size(), 15u);
   const std::map<std::string, double> truth{{"Fc", 0.002}, {"Fs", 0.003}, {"vs", 5.0}, {"delta", 2.0}, {"Fv", 1e-5}};
@@ -133,38 +148,24 @@ TEST(IdentifySimulated, SweepRecoversVirgalaStribeckWithinTwoSigma) {
 TEST(IdentifySimulated, SweepNamesAMissingStribeckDipAndNothingWhenTheLawFits) {
   const fl::Scenario sc = fl::load_scenario(example("virgala_motor_sweep.yaml"));
   const fl::Trajectory tr = fl::simulate(sc);
-  constexpr double Km = 0.039;
-  const auto warned = [](const fl::Result& r, const std::string& text) {
-    for (const auto& w : r.diagnostics.warnings)
-      if (w.find(text) != std::string::npos) return true;
-    return false;
-  };
   // Seeded noise draws: a white residual must pass every one (the checks' significance of 4
   // standard errors makes a false finding rarer than 1 in 1000 per draw).
-  constexpr int kSeeds = 10;
-  for (int seed = 1; seed <= kSeeds; ++seed) {
-    std::mt19937 rng(static_cast<unsigned>(seed));
-    std::normal_distribution<double> current_noise(0.0, 2e-3), speed_noise(0.0, 0.05);  // A, rad/s
-    Eigen::VectorXd force = Km * vec(tr.current), speed = vec(tr.velocity);
-    for (Eigen::Index i = 0; i < force.size(); ++i) {
-      force[i] += Km * current_noise(rng);
-      speed[i] += speed_noise(rng);
-    }
-    fl::SweepOptions o;
-    o.relative_tolerance = 0.02;
-    o.velocity_tolerance = 0.3;
+  constexpr unsigned kSeeds = 10;
+  for (unsigned seed = 1; seed <= kSeeds; ++seed) {
+    const NoisySweep m = noisy_sweep(tr, seed);
+    fl::SweepOptions o = noisy_sweep_options();
     o.axis = fl::Axis::rotary;
-    const fl::Result right = fl::identify_sweep({vec(tr.time), force, speed}, o);
+    const fl::Result right = fl::identify_sweep({m.time, m.force, m.speed}, o);
     ASSERT_TRUE(right.ok()) << right.message;
     EXPECT_EQ(right.diagnostics.groups.at("adequacy").at("findings"), 0.0) << "seed " << seed;
     EXPECT_FALSE(right.diagnostics.lists.at("residual_by_velocity").empty());
     o.fit.model = fl::StaticFitModel::coulomb_viscous;
-    const fl::Result wrong = fl::identify_sweep({vec(tr.time), force, speed}, o);
+    const fl::Result wrong = fl::identify_sweep({m.time, m.force, m.speed}, o);
     ASSERT_TRUE(wrong.ok()) << wrong.message;
-    EXPECT_TRUE(warned(wrong, "friction at low speed is higher than the model")) << "seed " << seed;
-    EXPECT_TRUE(warned(wrong, "N m more at |v| about")) << "units of the rotary axis";
-    EXPECT_TRUE(warned(wrong, "(sweep --model stribeck)"));
-    EXPECT_FALSE(warned(wrong, "idim")) << "a sweep's finding names sweep's remedy";
+    EXPECT_TRUE(has_warning(wrong, "friction at low speed is higher than the model")) << "seed " << seed;
+    EXPECT_TRUE(has_warning(wrong, "N m more at |v| about")) << "units of the rotary axis";
+    EXPECT_TRUE(has_warning(wrong, "(sweep --model stribeck)"));
+    EXPECT_FALSE(has_warning(wrong, "idim")) << "a sweep's finding names sweep's remedy";
   }
 }
 
