@@ -74,10 +74,9 @@ Adequacy assess_residuals(const std::vector<double>& velocity, const std::vector
                                 ", position " + std::to_string(position.size()) + ", time " +
                                 std::to_string(time.size()) + ")");
   }
-  constexpr std::size_t kMinSamples = 20;
-  if (n < kMinSamples) {
+  if (n < kAdequacyMinSamples) {
     throw std::invalid_argument("assess_residuals: " + std::to_string(n) + " samples; expected at least " +
-                                std::to_string(kMinSamples));
+                                std::to_string(kAdequacyMinSamples));
   }
   Adequacy a;
   a.samples = n;

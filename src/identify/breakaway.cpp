@@ -61,15 +61,13 @@ std::vector<double> interval_loads(const Eigen::VectorXd& load, const std::vecto
   return out;
 }
 
-// True when `loads` spread by more than kLeastLoadSpread of the largest; sets lo and hi.
 // Adequacy of the sliding fit (identify/adequacy.hpp): the sliding samples' residual against
 // velocity and time. A static-Coulomb-viscous law leaves a Stribeck dip above it at low speed;
 // the remedies are in breakaway's terms. Its std are those of least squares on these residuals,
 // so a correlated residual is reported.
 void add_breakaway_adequacy(Result& r, const BreakawayData& d, const std::vector<Eigen::Index>& rows,
                             const Eigen::VectorXd& residual, Axis axis) {
-  constexpr std::size_t kMinSamples = 20;  // assess_residuals' least
-  if (rows.size() < kMinSamples) return;
+  if (rows.size() < kAdequacyMinSamples) return;
   std::vector<double> velocity, time, e;
   double ss = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -92,6 +90,7 @@ void add_breakaway_adequacy(Result& r, const BreakawayData& d, const std::vector
                                    std::string(unit(Quantity::velocity, axis)), ao));
 }
 
+// True when `loads` spread by more than kLeastLoadSpread of the largest; sets lo and hi.
 bool load_spreads(const std::vector<double>& loads, double& lo, double& hi) {
   lo = std::numeric_limits<double>::infinity();
   hi = 0;
@@ -292,8 +291,9 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
   // Fs keeps its propagated std; the regression's parameters get the common rules.
   set_uncertainty_from_information(r, names, fit.information, fit.residual_variance);
   if (with_load) add("mu_load_static", mu_s, mu_s_std, Quantity::dimensionless);
-  set_fit(r, y, X * fit.theta);
-  add_breakaway_adequacy(r, d, rows, y - X * fit.theta, o.axis);
+  const Eigen::VectorXd modelled = X * fit.theta;
+  set_fit(r, y, modelled);
+  add_breakaway_adequacy(r, d, rows, y - modelled, o.axis);
   if (!std::isfinite(r.fit.relative_error_percent) || !std::isfinite(Fs))
     return fail(r, "the fit gave figures that are not finite numbers (force zero throughout?); the data cannot give an answer");
   r.diagnostics.condition_number = fit.condition_number;

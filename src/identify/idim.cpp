@@ -844,8 +844,7 @@ void add_idim_adequacy(Result& r, const IdimData& data, const IdimOptions& o, co
   if (data.position.size() > 0) {
     for (std::size_t k = 0; k < f.size(); ++k) position.push_back(data.position[sample[k]]);
   }
-  constexpr std::size_t kMinSamples = 20;  // assess_residuals' least
-  if (residual.size() < kMinSamples) return;
+  if (residual.size() < kAdequacyMinSamples) return;
   AdequacyOptions ao;
   double ss = 0;
   for (double x : f) ss += x * x;

@@ -318,8 +318,7 @@ void add_sweep_adequacy(Result& r, const SweepData& d, const std::vector<SweepPo
     ++per_direction[p.velocity > 0 ? 0 : 1];
     slowest = std::min(slowest, std::abs(p.velocity));
   }
-  constexpr std::size_t kMinSamples = 20;  // assess_residuals' least
-  if (residual.size() < kMinSamples) return;
+  if (residual.size() < kAdequacyMinSamples) return;
   AdequacyOptions ao;
   ao.force_scale = std::sqrt(ss / static_cast<double>(residual.size()));  // the segments' force rms
   ao.segment_ends = ends;

@@ -95,6 +95,9 @@ struct Adequacy {
   std::vector<std::string> findings;
 };
 
+/// The fewest samples assess_residuals checks (fewer: the fits skip the check).
+inline constexpr std::size_t kAdequacyMinSamples = 20;
+
 /// Checks the residual of a fit against velocity, position and time.
 /// \param velocity, position, time  the fit's samples (m/s or rad/s, m or rad, s), one per residual;
 ///        position and time may be empty (those checks are then skipped).
