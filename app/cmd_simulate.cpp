@@ -75,6 +75,11 @@ std::string summary(const std::string& file, const Scenario& sc, const Trajector
     }
     if (shown < tr.switches.size()) out << "  ... (" << tr.switches.size() - shown << " more)\n";
   }
+  if (!tr.plant_events.empty()) {
+    // Impacts and separations of a backlash, a compensator's switches: first and last instants.
+    out << "events     " << tr.plant_events.size() << " of the plant's own (impacts, separations, switches), t = "
+        << format_number(tr.plant_events.front().time) << " .. " << format_number(tr.plant_events.back().time) << " s\n";
+  }
   return out.str();
 }
 

@@ -234,7 +234,18 @@ dict(trajectory) gives the columns; also law_state, switches, stats, to_csv().)d
           l.append(d);
         }
         return l;
-      }, "Mode switches of the hybrid solver: dicts {time (s), kind ('breakaway'|'stick'|'reversal'), position, applied (N or N m), direction, contact (index)}.")
+      }, "Mode switches of the hybrid solver: dicts {time (s), kind ('breakaway'|'stick'|'reversal'|'impact'), position, applied (N or N m), direction, contact (index)}.")
+      .def_property_readonly("plant_events", [](const Trajectory& t) {
+        py::list l;
+        for (const auto& e : t.plant_events) {
+          py::dict d;
+          d["time"] = e.time;
+          d["index"] = e.index;
+          l.append(d);
+        }
+        return l;
+      }, "The plant's own events: dicts {time (s), index}; a backlash: 0 the forward flank reached, 1 the "
+         "backward flank, 2 a separation; a compensator: the edges of its velocity band.")
       .def_property_readonly("stats", [](const Trajectory& t) {
         py::dict d;
         d["steps"] = t.stats.steps;

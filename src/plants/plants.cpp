@@ -57,6 +57,12 @@ void Plant::events(double, std::span<const double>, Inputs, std::span<double>) c
 
 void Plant::on_event(double, std::span<double>, Inputs, int) const {}
 
+void Plant::events(double t, std::span<const double> x, Inputs u, std::span<const double>, std::span<double> g) const {
+  events(t, x, u, g);
+}
+
+bool Plant::guard_event(int) const { return false; }
+
 // ---- 1-DOF plants ------------------------------------------------------------------------------
 
 PlantSignals SingleContactPlant::signals(double, std::span<const double>, const InputValue& u) const {

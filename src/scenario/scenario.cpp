@@ -25,6 +25,7 @@
 #include "frictionlab/scenario/model_file.hpp"
 #include "frictionlab/io/load.hpp"
 #include "frictionlab/plants/axis.hpp"
+#include "frictionlab/plants/backlash_axis.hpp"
 #include "frictionlab/plants/dc_motor.hpp"
 #include "frictionlab/plants/pendulum.hpp"
 #include "frictionlab/plants/spring_base.hpp"
@@ -338,11 +339,24 @@ std::shared_ptr<const Compensator> read_compensation(const Section& s, const Com
 }
 
 PlantPtr read_axis(const Section& s, const PlantContext&) {
-  s.allow({"type", "M", "offset"});
+  s.allow({"type", "M", "offset", "backlash"});
   AxisParams p;
   p.M = s.number("M");
   p.offset = s.number("offset", p.offset);
-  return detail::with_context(s.path(), [&] { return std::make_shared<const RigidAxis>(p); });
+  if (!s.has("backlash")) return detail::with_context(s.path(), [&] { return std::make_shared<const RigidAxis>(p); });
+  // Backlash: M is the load's inertia, the input drives the motor across the play.
+  const Section b(s.node("backlash"), s.at("backlash"));
+  b.allow({"width", "motor_inertia", "restitution", "friction_side", "initial_gap"});
+  BacklashParams q;
+  q.M_load = p.M;
+  q.offset = p.offset;
+  q.width = b.number("width");
+  q.M_motor = b.number("motor_inertia");
+  q.restitution = b.number("restitution", q.restitution);
+  q.initial_gap = b.number("initial_gap", q.initial_gap);
+  static constexpr std::pair<const char*, FrictionSide> kSides[] = {{"load", FrictionSide::load}, {"motor", FrictionSide::motor}};
+  q.friction_side = choose(b, "friction_side", "load", kSides, "friction side", "sides");
+  return detail::with_context(s.path(), [&] { return std::make_shared<const BacklashAxis>(q); });
 }
 
 PlantPtr read_pendulum(const Section& s, const PlantContext&) {

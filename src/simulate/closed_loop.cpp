@@ -145,15 +145,38 @@ void ClosedLoop::sample(double t, std::span<double> x, const InputValue& r) cons
   pid_.sample(pid_input(x, r), s, c);
 }
 
+int ClosedLoop::num_events() const {
+  return inner_->num_events() + (compensator_ && !pid_.sampled() ? compensator_->num_events() : 0);
+}
+
+bool ClosedLoop::guard_event(int k) const { return k < inner_->num_events() && inner_->guard_event(k); }
+
+void ClosedLoop::events(double t, std::span<const double> x, Inputs u, std::span<const double> friction,
+                        std::span<double> g) const {
+  const auto ni = static_cast<std::size_t>(inner_->num_events());
+  if (ni > 0) {
+    const InputValue c{control(t, x, u[0])};
+    inner_->events(t, x.first(static_cast<std::size_t>(n_inner_)), Inputs(&c, 1), friction, g.first(ni));
+  }
+  if (compensator_ && !pid_.sampled()) compensator_->events(measured(t, x, u[0]), own_states(x), g.subspan(ni));
+}
+
 void ClosedLoop::events(double t, std::span<const double> x, Inputs u, std::span<double> g) const {
-  if (compensator_ && !pid_.sampled()) compensator_->events(measured(t, x, u[0]), own_states(x), g);
+  const double no_friction = 0.0;
+  events(t, x, u, std::span<const double>(&no_friction, 1), g);
 }
 
 void ClosedLoop::on_event(double t, std::span<double> x, Inputs u, int k) const {
+  const int ni = inner_->num_events();
+  if (k < ni) {
+    const InputValue c{control(t, x, u[0])};
+    inner_->on_event(t, x.first(static_cast<std::size_t>(n_inner_)), Inputs(&c, 1), k);
+    return;
+  }
   if (compensator_ && !pid_.sampled())
     compensator_->on_event(measured(t, x, u[0]), x.subspan(static_cast<std::size_t>(n_inner_ + n_pid_),
                                                            static_cast<std::size_t>(n_comp_)),
-                           k);
+                           k - ni);
 }
 
 std::shared_ptr<const Plant> close_loop(std::shared_ptr<const Plant> plant, const Controller& controller,

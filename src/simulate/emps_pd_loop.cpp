@@ -11,6 +11,8 @@ EmpsPdLoop::EmpsPdLoop(std::shared_ptr<const Plant> inner, EmpsPdParams p, std::
       compensator_(std::move(compensator)) {
   n_inner_ = inner_->num_states();
   n_comp_ = compensator_ ? compensator_->num_states() : 0;
+  if (inner_->num_events() > 0)  // a backlash's impacts: this loop does not forward plant events
+    throw std::invalid_argument("controller (emps-pd): cannot close this loop around an axis with backlash; use a pid controller");
 }
 
 void EmpsPdLoop::initial_extras(std::span<double> x, Inputs u) const {

@@ -225,6 +225,9 @@ class Engine {
     found_.assign(static_cast<std::size_t>(std::max(nroots_, 1)), 0);
     g_prev_.assign(static_cast<std::size_t>(ne_), 0.0);
     g_now_.assign(static_cast<std::size_t>(ne_), 0.0);
+    for (int e = 0; e < ne_; ++e) any_guard_ = any_guard_ || plant.guard_event(e);
+    // Guards (a force between bodies) may depend on the friction: it is computed for them.
+    events_need_friction_ = any_guard_;
     // The states that are no contact's position or velocity (integrated by explicit Euler in
     // fixed-step mode, unless the plant's fixed_step_update rewrites them).
     for (int i = 0; i < np_; ++i) {
@@ -522,7 +525,11 @@ class Engine {
         }
       }
     }
-    if (ne_ > 0) plant_.events(t, x, u_, std::span<double>(g + (hybrid_ ? 2 * nc_ : 0), static_cast<std::size_t>(ne_)));
+    if (ne_ > 0) {
+      if (events_need_friction_)
+        for (std::size_t k = 0; k < contacts<One>(); ++k) friction_[k] = friction_of(bodies_[k], t, x, y);
+      plant_.events(t, x, u_, friction_, std::span<double>(g + (hybrid_ ? 2 * nc_ : 0), static_cast<std::size_t>(ne_)));
+    }
   }
 
   // An exception must not unwind through CVODE's C frames: the callbacks catch it, report an
@@ -750,6 +757,10 @@ class Engine {
         }
       }
     }
+    // A guard of the plant's mode counts only when it falls through zero.
+    const std::size_t first_event = hybrid_ ? 2 * bodies_.size() : 0;
+    for (int e = 0; e < ne_; ++e)
+      if (plant_.guard_event(e)) dirs_[first_event + static_cast<std::size_t>(e)] = -1;
     CVodeSetRootDirection(sd_.mem, dirs_.data());
   }
 
@@ -834,6 +845,7 @@ class Engine {
         settle_at_rest(tr, k, 0.0, y, false, 0);
       }
     }
+    if (any_guard_) settle_after_jump(tr, 0.0, y);
 
     sd_.mem = CVodeCreate(CV_BDF, sd_.ctx);
     if (!sd_.mem) throw std::runtime_error("SUNDIALS: CVodeCreate failed");
@@ -936,7 +948,7 @@ class Engine {
             if (sample_now) {
               take_sample(tr, t_corner, y);
             } else {
-              settle_stuck(tr, t, y);
+              settle_after_jump(tr, t, y);
             }
             restart(t);
           }
@@ -986,16 +998,37 @@ class Engine {
     pin_stuck(y);
     eval_inputs(t);
     plant_.sample(t, std::span<double>(y, static_cast<std::size_t>(np_)), u_);
-    settle_stuck(tr, t, y);
+    settle_after_jump(tr, t, y);
+  }
+
+  // After a jump of the inputs or of the plant's discrete states at t (an input corner, a
+  // controller sample): a guard the jump made negative (engaged bodies that now pull apart) fires
+  // at once, as no root finder sees a guard that starts negative; stuck bodies are decided again.
+  void settle_after_jump(Trajectory& tr, double t, double* y) {
+    if (any_guard_) {
+      pin_stuck(y);
+      remember_velocities(y);
+      after_plant_events(tr, t, y);
+    } else {
+      settle_stuck(tr, t, y);
+    }
   }
 
   void handle_root(Trajectory& tr, double t, double* y) {
     CVodeGetRootInfo(sd_.mem, found_.data());
     pin_stuck(y);
+    const std::size_t first_event = hybrid_ ? 2 * bodies_.size() : 0;
+    bool plant_found = false;
+    for (int e = 0; e < ne_; ++e) plant_found = plant_found || found_[first_event + static_cast<std::size_t>(e)] != 0;
+    // A plant's guard event (a backlash separating) changes the applied force that decides a
+    // stuck body: when both come at one instant, the stuck body is decided after the plant's
+    // events (after_plant_events), at the force of the plant's new mode.
+    const bool stuck_after_events = any_guard_ && plant_found;
     if (hybrid_) {
       for (std::size_t k = 0; k < bodies_.size(); ++k) {
         if (!found_[2 * k] && !found_[2 * k + 1]) continue;
         Body& b = bodies_[k];
+        if (b.mode == Mode::stuck && stuck_after_events) continue;
         if (b.mode == Mode::stuck) {
           // breakaway: the applied force reached a level
           const double a = applied_at_rest(k, t, y);
@@ -1011,8 +1044,8 @@ class Engine {
         }
       }
     }
-    const std::size_t first_event = hybrid_ ? 2 * bodies_.size() : 0;
     bool any_event = false;
+    remember_velocities(y);
     for (int e = 0; e < ne_; ++e) {
       if (!found_[first_event + static_cast<std::size_t>(e)]) continue;
       eval_inputs(t);
@@ -1020,8 +1053,82 @@ class Engine {
       tr.plant_events.push_back({t, e});
       any_event = true;
     }
-    // The plant's discrete states changed: the applied force on a stuck body may have jumped.
-    if (any_event) settle_stuck(tr, t, y);
+    // The plant's discrete states changed (and, at an impact, a contact's velocity): each body's
+    // mode is decided again, then the applied force on a stuck body may have jumped.
+    if (any_event) after_plant_events(tr, t, y);
+  }
+
+  // After the plant's events at t: a contact whose velocity an impact changed takes the mode of
+  // its new velocity, and a guard that is negative in the mode the plant entered fires at once
+  // (an engagement whose bodies would pull apart separates at the same instant); then stuck
+  // bodies are decided again under the new applied force.
+  void after_plant_events(Trajectory& tr, double t, double* y) {
+    for (int round = 0;; ++round) {
+      follow_velocity_jumps(tr, t, y);
+      if (!any_guard_ || round == kMaxGuardRounds) break;
+      bool fired = false;
+      const std::vector<int> negative = negative_guards(t, y);
+      if (!negative.empty()) remember_velocities(y);
+      for (int e : negative) {
+        plant_.on_event(t, std::span<double>(y, static_cast<std::size_t>(np_)), u_, e);
+        tr.plant_events.push_back({t, e});
+        fired = true;
+      }
+      if (!fired) break;
+    }
+    settle_stuck(tr, t, y);
+  }
+
+  // The plant's guards that are negative (below rounding) at state y and time t.
+  std::vector<int> negative_guards(double t, double* y) {
+    pin_stuck(y);
+    eval_inputs(t);
+    const auto x = effective_state(y);
+    if (stuck_count_ > 0) plant_applied(t, x);
+    for (std::size_t k = 0; k < bodies_.size(); ++k) friction_[k] = friction_of(bodies_[k], t, x, y);
+    plant_.events(t, x, u_, friction_, g_now_);
+    std::vector<int> out;
+    for (int e = 0; e < ne_; ++e)
+      if (plant_.guard_event(e) && g_now_[static_cast<std::size_t>(e)] < 0) out.push_back(e);
+    return out;
+  }
+
+  // A contact whose velocity the plant set at an event leaves a mode that no longer matches it: a
+  // stuck body struck into motion slides, a sliding one struck to the other direction slides
+  // that way, one struck to rest is decided at rest.
+  void follow_velocity_jumps(Trajectory& tr, double t, double* y) {
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+      Body& b = bodies_[k];
+      const double v = y[b.vel];
+      if (!b.hybrid || v == velocities_before_[k]) continue;  // no impact on this body
+      const int contact = static_cast<int>(k);
+      if (b.mode == Mode::stuck) {
+        if (v == 0.0) continue;
+        y[b.pos] = b.stuck_position;
+        set_mode(b, v > 0 ? Mode::slide_pos : Mode::slide_neg);
+        tr.switches.push_back({t, SwitchKind::impact, y[b.pos], applied_now(k, t, y), v > 0 ? 1 : -1, contact});
+      } else if (b.mode == Mode::slide_pos || b.mode == Mode::slide_neg) {
+        const int dir = b.mode == Mode::slide_pos ? 1 : -1;
+        if (v * dir > 0) continue;
+        if (v == 0.0) {
+          settle_at_rest(tr, k, t, y, false, dir);
+        } else {
+          set_mode(b, v > 0 ? Mode::slide_pos : Mode::slide_neg);
+          tr.switches.push_back({t, SwitchKind::impact, y[b.pos], applied_now(k, t, y), -dir, contact});
+        }
+      }
+    }
+  }
+  // Each contact's velocity before the plant's events, to tell which an impact changed.
+  void remember_velocities(const double* y) {
+    velocities_before_.resize(bodies_.size());
+    for (std::size_t k = 0; k < bodies_.size(); ++k) velocities_before_[k] = y[bodies_[k].vel];
+  }
+  // The applied force on body k at state y and time t.
+  double applied_now(std::size_t k, double t, double* y) {
+    eval_inputs(t);
+    plant_applied(t, effective_state(y));
+    return force_[k];
   }
 
   // ---- fixed-step --------------------------------------------------------------------------
@@ -1029,15 +1136,16 @@ class Engine {
   // The plant's events in fixed-step mode: checked after each step, on_event at the first step
   // where g[k] changed sign (what a controller sampled at 1/dt sees).
   void fixed_events(Trajectory& tr, double t, std::vector<double>& x) {
-    plant_.events(t, x, u_, g_now_);
+    plant_.events(t, x, u_, friction_, g_now_);
     for (int e = 0; e < ne_; ++e) {
       const auto i = static_cast<std::size_t>(e);
-      if ((g_prev_[i] < 0 && g_now_[i] >= 0) || (g_prev_[i] > 0 && g_now_[i] <= 0)) {
+      const bool up = g_prev_[i] < 0 && g_now_[i] >= 0;
+      if ((up && !plant_.guard_event(e)) || (g_prev_[i] > 0 && g_now_[i] <= 0)) {
         plant_.on_event(t, x, u_, e);
         tr.plant_events.push_back({t, e});
       }
     }
-    plant_.events(t, x, u_, g_prev_);
+    plant_.events(t, x, u_, friction_, g_prev_);
   }
 
   void run_fixed(Trajectory& tr, std::size_t rows) {
@@ -1060,7 +1168,7 @@ class Engine {
     }
     if (ne_ > 0) {
       eval_inputs(0.0);
-      plant_.events(0.0, x, u_, g_prev_);
+      plant_.events(0.0, x, u_, friction_, g_prev_);
     }
     // The plant's own fixed-step update: the state and inputs at each step's start are kept for it.
     const bool own_update = plant_.has_fixed_step_update();
@@ -1175,6 +1283,12 @@ class Engine {
   bool hybrid_ = false;      // some body has hybrid modes
   bool any_cond_ = false;    // some body's friction depends on conditions (load, temperature, ripple)
   bool kinematic_ = false;   // the plant imposes the velocity (plant_.kinematic(), asked once)
+  bool any_guard_ = false;   // some plant event is a guard (Plant::guard_event)
+  bool events_need_friction_ = false;  // the plant's events are given the contacts' friction
+  std::vector<double> velocities_before_;  // each contact's velocity before the plant's events
+  // Rounds of guards fired at one instant before the engine goes on (an impact, then the
+  // separation it cannot hold, then nothing more).
+  static constexpr int kMaxGuardRounds = 4;
   double sample_period_ = 0.0;  // s; > 0 for a plant with a sampled controller
   std::vector<InputValue> u_;       // the inputs at the time being evaluated
   std::vector<double> force_;       // applied force on each contact

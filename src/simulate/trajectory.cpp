@@ -26,6 +26,7 @@ const char* switch_kind_name(SwitchKind kind) {
     case SwitchKind::breakaway: return "breakaway";
     case SwitchKind::stick: return "stick";
     case SwitchKind::reversal: return "reversal";
+    case SwitchKind::impact: return "impact";
   }
   return "?";
 }

@@ -82,3 +82,17 @@ def test_scenario_errors(tmp_path, example):
         fl.simulate(dict(AXIS, duration=object()))
     with pytest.raises(KeyError, match="no column 'speed'"):
         fl.simulate(AXIS)["speed"]
+
+
+def test_backlash_impact_from_a_dict():
+    # The motor (0.5 kg, 2 N) crosses half the 20 mm play in sqrt(0.005) s and strikes the stuck
+    # load (1.5 kg): a plastic impact, reported as a plant event and an `impact` switch.
+    sc = dict(AXIS, plant={"type": "axis", "M": 1.5, "backlash": {"width": 0.02, "motor_inertia": 0.5}},
+              friction={"law": "static-coulomb-viscous", "Fs": 1.2, "Fc": 1.0, "Fv": 0.0})
+    tr = fl.simulate(sc)
+    t1 = np.sqrt(0.005)
+    assert [e["index"] for e in tr.plant_events] == [0]
+    assert tr.plant_events[0]["time"] == pytest.approx(t1, rel=1e-7)  # CVODE's root finder at rtol 1e-8
+    assert [s["kind"] for s in tr.switches] == ["impact"]
+    with pytest.raises(ValueError, match="backlash.width = -1 must be > 0"):
+        fl.simulate(dict(sc, plant={"type": "axis", "M": 1.5, "backlash": {"width": -1, "motor_inertia": 0.5}}))

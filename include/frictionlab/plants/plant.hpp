@@ -115,8 +115,22 @@ class Plant {
   /// change of g[k] by root finding, stops there, calls on_event(k) and restarts its integrator,
   /// so a discontinuity of the plant's right-hand side is never stepped over. Default: nothing.
   virtual void events(double t, std::span<const double> x, Inputs u, std::span<double> g) const;
-  /// At event k (located at time t): may rewrite the plant's own discrete states in x (never a
-  /// contact's position or velocity). Default: nothing.
+  /// The event functions given the friction force on every contact (num_contacts() entries, N or
+  /// N m), for a plant whose events depend on it (the force between two bodies, one of which
+  /// rubs). The engine calls this one. Default: events(t, x, u, g).
+  virtual void events(double t, std::span<const double> x, Inputs u, std::span<const double> friction,
+                      std::span<double> g) const;
+  /// True when event function k is a guard of the plant's current mode: g[k] >= 0 while the mode
+  /// holds, and on_event(k) leaves a mode whose guard is crossing downward (an impact, a
+  /// separation). The engine watches only downward crossings of a guard and, right after any
+  /// event (and at the start), fires at once each guard that is already negative, so that a mode
+  /// entered at an impact that cannot hold is left at the same instant: a guard that was just
+  /// reached must therefore not read negative from rounding (the plant allows for it). Default
+  /// false (an event function whose every sign change counts).
+  virtual bool guard_event(int k) const;
+  /// At event k (located at time t): may rewrite the plant's own discrete states in x and, for an
+  /// impact, a contact's velocity (never its position): the engine then decides the contact's
+  /// mode again (a stuck body struck into motion slides). Default: nothing.
   virtual void on_event(double t, std::span<double> x, Inputs u, int k) const;
 
   /// True when the plant advances some of its own states by a discrete rule of its own in

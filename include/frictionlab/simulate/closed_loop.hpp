@@ -75,8 +75,13 @@ class ClosedLoop : public SingleContactPlant {
   double sample_period() const override { return pid_.params().Ts; }
   using SingleContactPlant::sample;
   void sample(double t, std::span<double> x, const InputValue& r) const override;
-  /// The compensator's event functions (0 without one, or with a sampled PID).
-  int num_events() const override { return compensator_ && !pid_.sampled() ? compensator_->num_events() : 0; }
+  /// The inner plant's event functions (a backlash's impacts, at the controller output), then the
+  /// compensator's (none without one, or with a sampled PID).
+  int num_events() const override;
+  bool guard_event(int k) const override;
+  void events(double t, std::span<const double> x, Inputs u, std::span<const double> friction,
+              std::span<double> g) const override;
+  /// The same with no friction on the contact (0 N).
   void events(double t, std::span<const double> x, Inputs u, std::span<double> g) const override;
   void on_event(double t, std::span<double> x, Inputs u, int k) const override;
 

@@ -13,6 +13,8 @@ enum class SwitchKind {
   breakaway,  ///< stuck -> sliding: |applied| reached the breakaway level
   stick,      ///< sliding -> stuck: velocity reached 0 and |applied| is within the breakaway levels
   reversal,   ///< velocity reached 0 and |applied| exceeds the breakaway level on the other side
+  impact,     ///< an impact of the plant (a backlash flank) set the velocity of a stuck body, or
+              ///< reversed a sliding one's
 };
 
 /// One mode switch, at the exact time the root finder located.
@@ -99,7 +101,7 @@ struct Trajectory : ContactColumns {
   std::string to_csv() const;
 };
 
-/// Name of a switch kind ("breakaway", "stick", "reversal").
+/// Name of a switch kind ("breakaway", "stick", "reversal", "impact").
 const char* switch_kind_name(SwitchKind kind);
 
 }  // namespace frictionlab
