@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "frictionlab/identify/method.hpp"
+#include "frictionlab/identify/option_applies.hpp"
 #include "io/atomic_write.hpp"
 #include "output.hpp"
 
@@ -20,7 +21,7 @@ struct HelpArgs {
   bool overwrite = false;
 };
 
-// One line per option: "  --NAME  TYPE  UNIT  default D".
+// One line per option: "  --NAME (TYPE, UNIT) default D: HELP (applies with --X)".
 std::string options_text() {
   std::string s;
   for (const auto& m : identification_methods()) {
@@ -29,7 +30,10 @@ std::string options_text() {
       s += "  --" + o.name + " (" + to_string(o.type) + (o.unit_text().empty() ? "" : ", " + o.unit_text()) + ")";
       if (o.required) s += " required";
       else if (o.default_value) s += " default " + option_text(*o.default_value);
-      s += ": " + o.help + "\n";
+      s += ": " + o.help;
+      const std::string applies = applies_text(o, m.options);
+      if (!applies.empty()) s += " (" + applies + ")";
+      s += "\n";
     }
   }
   return s;

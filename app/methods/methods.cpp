@@ -4,6 +4,7 @@
 #include <memory>
 #include <sstream>
 
+#include "frictionlab/identify/option_applies.hpp"
 #include "method.hpp"
 
 namespace frictionlab::cli {
@@ -30,8 +31,8 @@ const CliMethod* find_cli_method(const std::string& name) {
 
 namespace {
 
-// The help of one option: its text, then (unit; default; valid values).
-std::string option_help(const OptionSpec& o) {
+// The help of one option of `table`: its text, then (unit; default; valid values; when it applies).
+std::string option_help(const OptionSpec& o, const std::vector<OptionSpec>& table) {
   std::ostringstream s;
   s << o.help;
   std::vector<std::string> notes;
@@ -42,6 +43,8 @@ std::string option_help(const OptionSpec& o) {
     if (!rule.empty()) notes.push_back(rule);
   }
   if (o.type == OptionType::text && !o.words.empty()) notes.push_back(o.expected());
+  const std::string applies = applies_text(o, table);
+  if (!applies.empty()) notes.push_back(applies);
   if (!notes.empty()) {
     s << " (";
     for (std::size_t i = 0; i < notes.size(); ++i) s << (i ? "; " : "") << notes[i];
@@ -76,11 +79,11 @@ GivenOptions add_table_options(CLI::App* cmd, const MethodInfo& info) {
     Flag f{&o, nullptr};
     const std::string name = "--" + o.name;
     if (o.type == OptionType::flag) {
-      f.opt = cmd->add_flag(name, *f.on, option_help(o));
+      f.opt = cmd->add_flag(name, *f.on, option_help(o, info.options));
     } else if (o.repeatable) {
-      f.opt = cmd->add_option(name, *f.texts, option_help(o))->type_name(type_name(o));
+      f.opt = cmd->add_option(name, *f.texts, option_help(o, info.options))->type_name(type_name(o));
     } else {
-      f.opt = cmd->add_option(name, *f.text, option_help(o))->type_name(type_name(o));
+      f.opt = cmd->add_option(name, *f.text, option_help(o, info.options))->type_name(type_name(o));
     }
     if (o.required) f.opt->required();
     flags->push_back(f);

@@ -20,9 +20,15 @@ for m in idim breakaway sweep decay lugre; do
 done
 grep -qF '| `--min-speed` | `min_speed` | number | m/s or rad/s | computed |' "$tmp/ref.md" || fail "sweep --min-speed row"
 grep -qF '| `--delay` | `delay` | integer | samples | `0` |' "$tmp/ref.md" || fail "idim --delay row"
-# The help text comes from the table too: unit, default and range.
 "$exe" identify sweep --help > "$tmp/help.txt"
-grep -q "Shortest steady segment kept (s; default 0.5; > 0)" "$tmp/help.txt" || fail "sweep --min-duration help"
+# The help text comes from the table too: unit, default, range and when the option applies (its
+# table's conditions; in the reference too).
+grep -q "Shortest steady segment kept (s; default 0.5; > 0; applies without --segment)" "$tmp/help.txt" ||
+  fail "sweep --min-duration help"
+"$exe" identify idim --help > "$tmp/help.txt"
+grep -qE -- "--kp .*applies with --iv\)" "$tmp/help.txt" || fail "idim --kp help does not say it applies with --iv"
+grep -qE -- "--vs .*applies when --terms holds stribeck\)" "$tmp/help.txt" || fail "idim --vs help does not say when it applies"
+grep -F '| `--kp` |' "$tmp/ref.md" | grep -qF '(applies with `--iv`) |' || fail "the reference does not say idim --kp applies with --iv"
 # Written to a file: refused when it exists, replaced with --overwrite.
 expect 0 "" help --markdown -o "$tmp/options.md"
 cmp "$tmp/ref.md" "$tmp/options.md" || fail "help -o differs from stdout"

@@ -16,6 +16,7 @@
 #include "frictionlab/identify/idim.hpp"
 #include "frictionlab/identify/lugre.hpp"
 #include "frictionlab/identify/method.hpp"
+#include "frictionlab/identify/option_applies.hpp"
 #include "frictionlab/identify/sweep.hpp"
 
 namespace frictionlab {
@@ -225,6 +226,38 @@ TEST(Options, AppliesFollowsTheTableConditions) {
       EXPECT_NO_THROW(defaults.applies(o.name)) << m.name << " --" << o.name;
     }
   }
+}
+
+// When an option applies is said in words from its table's conditions, as `identify METHOD
+// --help` and the reference (docs/options.md) print it.
+TEST(Options, AppliesTextSaysTheConditions) {
+  const MethodInfo& idim = method_info(MethodId::idim);
+  EXPECT_EQ(applies_text(*idim.option("filter-order"), idim.options), "");  // always
+  EXPECT_EQ(applies_text(*idim.option("kp"), idim.options), "applies with --iv");
+  EXPECT_EQ(applies_text(*idim.option("vs"), idim.options), "applies when --terms holds stribeck");  // a list
+  const MethodInfo& sweep = method_info(MethodId::sweep);
+  EXPECT_EQ(applies_text(*sweep.option("delta"), sweep.options),
+            "applies when --model is stribeck or stribeck-asymmetric");  // a text
+  EXPECT_EQ(applies_text(*sweep.option("noise-band"), sweep.options),
+            "applies without --segment and without --reference");
+  EXPECT_EQ(applies_text(*idim.option("kp"), idim.options, true), "applies with `--iv`");
+  OptionSpec lost;
+  lost.name = "x";
+  lost.applies_if = {when_given("no-such-option")};
+  EXPECT_EQ(error_of([&] { applies_text(lost, idim.options); }),
+            "--x: its condition names --no-such-option, which is not an option of the table");
+  // Every conditional option of every table says when it applies in the reference.
+  const std::string md = options_markdown();
+  for (const auto& m : identification_methods())
+    for (const auto& o : m.options)
+      if (!o.applies_if.empty()) {
+        const std::size_t section = md.find("\n## " + m.name + "\n");  // idim and sweep both have --delta
+        const std::size_t row = md.find("| `--" + o.name + "` | `" + o.keyword() + "` | ", section);
+        ASSERT_NE(row, std::string::npos) << m.name << " --" << o.name;
+        EXPECT_NE(md.substr(row, md.find('\n', row) - row).find("(" + applies_text(o, m.options, true) + ")"),
+                  std::string::npos)
+            << m.name << " --" << o.name;
+      }
 }
 
 // The reference is what the tables say: a heading per method and a row per option with its
