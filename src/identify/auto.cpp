@@ -734,12 +734,12 @@ Seen look_at(const IdimData& d, Axis axis) {
 
 // A Result of one method chosen for what the record holds, stamped as auto's: the experiment, the
 // choice and the one candidate in the selection.
-Result single_choice(Result inner, const std::string& method, const std::string& structure, const Seen& seen,
-                     const std::string& choice, const IdimData& data, Axis axis) {
+Result single_choice(Result inner, const std::string& method, const std::string& name, const std::string& structure,
+                     const Seen& seen, const std::string& choice, const IdimData& data, Axis axis) {
   std::vector<SelectionCandidate> candidates(1);
   SelectionCandidate& c = candidates.front();
   c.method = method;
-  c.name = method + " " + inner.model;
+  c.name = name;
   c.structure = structure;
   c.training_error_percent = inner.fit.relative_error_percent;
   c.result = inner;
@@ -811,7 +811,7 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
           (is_pendulum ? "linear spring" : "pendulum");
       inner.diagnostics.numbers["decay_centre"] = centre;
       return single_choice(
-          std::move(inner), name, "coulomb-viscous energy balance per half cycle", seen,
+          std::move(inner), name, name + " coulomb-viscous", "coulomb-viscous energy balance per half cycle", seen,
           name + ": the record is a free decay, where the energy lost between turning points measures the friction; "
                  "without the stiffness only Fc/k and the damping ratio zeta follow (the natural frequency from the "
                  "oscillation's half periods, the centre (decay_centre) that fits the balance best; run " + name +
@@ -845,7 +845,8 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
           "only the bristle stiffness (sigma0) can be seen in presliding: the Coulomb and static levels, vs and the "
           "viscous term need the axis to slide; identify the full model with " + lugre +
           " on a record that also slides");
-      return single_choice(std::move(inner), "presliding", "force = A (1 - exp(-sigma0 x / A)) (bristles)", seen,
+      return single_choice(std::move(inner), "presliding", "presliding stiffness",
+                           "force = A (1 - exp(-sigma0 x / A)) (bristles)", seen,
                            "presliding: sigma0 is the initial slope of the force against the displacement (the bristles' "
                            "stiffness, LuGre's sigma0), from the steady presliding curve f = A (1 - exp(-sigma0 x / A)); " + lugre + " is the method for the whole LuGre model. The trajectory "
                            "methods are not run: without sliding they would fit friction to an elastic force",
@@ -858,7 +859,7 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
       const std::string& name = method_info(MethodId::breakaway).name;
       Result inner = identify_breakaway(bd, o);
       if (inner.ok())
-        return single_choice(std::move(inner), name, "static-coulomb-viscous with M", seen,
+        return single_choice(std::move(inner), name, name + " static-coulomb-viscous", "static-coulomb-viscous with M", seen,
                              name + ": the record is a breakaway experiment, and only its onset of motion shows the "
                                     "static level Fs (the force at which the stuck axis broke away); Fc, Fv and M are "
                                     "fitted to the sliding samples. The trajectory methods are not run: they see no "

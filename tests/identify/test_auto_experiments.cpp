@@ -131,7 +131,7 @@ TEST(AutoExperiments, PreslidingIsSeenAndOnlyTheStiffnessReported) {
       << r.diagnostics.texts.at("experiment");
   EXPECT_TRUE(contains(r.diagnostics.texts.at("choice"), "lugre is the method for the whole LuGre model"))
       << r.diagnostics.texts.at("choice");
-  expect_single_choice(r, "presliding presliding");
+  expect_single_choice(r, "presliding stiffness");
   ASSERT_EQ(r.parameters.size(), 1u);
   EXPECT_NEAR(r.value("sigma0"), 1e5, kRel * 1e5);
   EXPECT_EQ(r.find("Fc"), nullptr) << "no friction level may be fitted to presliding";
