@@ -1,4 +1,5 @@
-// frictionlab identify auto: model selection on held-out data: what experiment the record holds,
+// frictionlab identify auto: model selection on held-out data: what experiment the record holds
+// (a free decay, a breakaway ramp or presliding get their own method),
 // every candidate structure it supports (the inverse dynamic model's term sets, a sweep's laws
 // when it has plateaus), and the one with the lowest held-out drive-force error: options, run,
 // figures (measured and reconstructed force; the candidates' held-out errors).
@@ -37,8 +38,9 @@ Figure fit_figure(const Result& r) {
 }  // namespace
 
 CliMethod auto_method() {
-  return {"Model selection: says what experiment the record holds (a trajectory; constant-speed plateaus), fits "
-          "every structure it supports (inverse dynamic model Coulomb-viscous, + Stribeck with vs searched, "
+  return {"Model selection: says what experiment the record holds (a free decay: runs decay; a slow force ramp "
+          "with stick: runs breakaway; presliding: the bristle stiffness only, and names lugre; a trajectory; "
+          "constant-speed plateaus), fits every structure it supports (inverse dynamic model Coulomb-viscous, + Stribeck with vs searched, "
           "asymmetric; a sweep's laws with M from the trajectory) and answers with the one that predicts held-out "
           "time blocks (or --validate FILE) best; refuses physically impossible fits. The candidates are listed "
           "with their held-out errors",

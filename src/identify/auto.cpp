@@ -5,10 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
+#include "frictionlab/identify/breakaway.hpp"
+#include "frictionlab/identify/covariance.hpp"
+#include "frictionlab/identify/decay.hpp"
 #include "frictionlab/identify/selection.hpp"
+#include "frictionlab/signal/differentiate.hpp"
 #include "frictionlab/identify/static_fit.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 #include "idim_stribeck.hpp"
@@ -281,9 +286,9 @@ void add_static_level(Result& r, Axis axis) {
   add_parameter(r, "Fs", value, var >= 0 ? std::sqrt(var) : std::numeric_limits<double>::quiet_NaN(), Quantity::force, axis);
 }
 
-}  // namespace
-
-Result identify_auto(const IdimData& data, const AutoOptions& options) {
+// The trajectory path: idim and sweep candidates chosen by held-out error; `seen` opens the
+// experiment text (what the record was checked for before).
+Result trajectory_choice(const IdimData& data, const AutoOptions& options, const std::vector<std::string>& seen) {
   const MethodInfo& idim = method_info(MethodId::idim);
   IdimOptions base = options.idim;
   base.axis = options.axis;
@@ -320,7 +325,7 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
   }
 
   std::vector<SelectionCandidate> candidates;
-  std::vector<std::string> experiment;
+  std::vector<std::string> experiment = seen;
 
   // The trajectory candidates (idim).
   const auto add_idim = [&](const std::string& label, const std::vector<std::string>& terms, bool search) {
@@ -424,7 +429,6 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
                          (points.empty() || both ? "" : ", all in one direction") + ": too few for a friction map (" +
                          sweep.name + " not run; it needs 6 in both directions)");
   }
-  experiment.push_back("free decays and slow force ramps are not looked for (run breakaway or decay on such a record)");
 
   // Refusals, then the choice.
   for (auto& c : candidates) {
@@ -504,6 +508,370 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
               "that law (a sweep alone has no M)";
   r.diagnostics.texts["choice"] = choice;
   return r;
+}
+
+// What a record holds besides a trajectory, seen on its raw samples before any filter.
+enum class Experiment { trajectory, free_decay, coast_down, presliding, breakaway_ramp };
+
+struct Seen {
+  Experiment kind = Experiment::trajectory;
+  std::string text;          // what was seen, in words (the experiment text's opening)
+  Vec velocity, position;    // raw: the position differentiated (or the velocity integrated)
+  double natural_frequency = 0;  // rad/s, of a free oscillation (pi over the mean half period)
+  double equilibrium = 0;        // position the oscillation centres on (m or rad)
+  double stiffness = 0, stiffness_std = 0;  // presliding: initial slope of force against displacement
+  double limit = 0;                         // presliding: the force the deflection saturates at
+  Vec presliding_model;                     // presliding: the curve's force at each sample
+};
+
+// The fewest samples a record is checked on for the experiments below (fewer: a trajectory).
+constexpr Eigen::Index kLeastSamplesSeen = 50;
+// |correlation| below which the drive force counts as not driving the motion (free decay): a
+// force that drives the axis correlates with its acceleration, velocity, direction or position.
+constexpr double kUndriven = 0.2;
+// Rank correlation of displacement and force above which the record is presliding: the
+// displacement a monotone function of the force (bristles), where a slide runs on at a held force.
+constexpr double kElastic = 0.98;
+// A breakaway ramp: the axis at rest for at least this share of the record before it moves, while
+// the force's magnitude rises with time (correlation at least kRamp).
+constexpr double kStuckShare = 0.05;
+constexpr double kRamp = 0.9;
+// Velocity sign changes (at kTurnFraction of the largest speed, with hysteresis) that make a free
+// oscillation: 3, the energy balance's fewest half cycles (identify/decay.hpp).
+constexpr int kLeastHalfCycles = 3;
+constexpr double kTurnFraction = 0.02;
+
+double correlation(const Vec& a, const Vec& b) {
+  const Vec x = a.array() - a.mean(), y = b.array() - b.mean();
+  const double den = std::sqrt(x.squaredNorm() * y.squaredNorm());
+  return den > 0 ? x.dot(y) / den : 0.0;
+}
+
+// Ranks 0..n-1 of x (ties in sample order).
+Vec ranks(const Vec& x) {
+  std::vector<Eigen::Index> order(static_cast<std::size_t>(x.size()));
+  for (Eigen::Index i = 0; i < x.size(); ++i) order[static_cast<std::size_t>(i)] = i;
+  std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return x(a) < x(b); });
+  Vec r(x.size());
+  for (std::size_t k = 0; k < order.size(); ++k) r(order[k]) = static_cast<double>(k);
+  return r;
+}
+
+// The steady presliding curve of the bristle models (LuGre at vanishing speed):
+//   f = A (1 - exp(-sigma0 x / A)),
+// with f the force and x the displacement from the start, both in the direction of the largest
+// force; sigma0 the bristles' stiffness (the curve's initial slope), A the force they saturate at
+// (LuGre's g(0) = Fs when the ramp reaches it). For each A the exponent is linear in x (-ln(1 -
+// f/A) = (sigma0/A) x, least squares through the origin over the samples with f < A); A by a
+// golden-section search of the force residual over [1.001, 100] times the largest f (at the upper
+// end the curve is a straight line). The std of sigma0: Newey-West (identify/covariance.hpp) on the
+// curve's Jacobian at the optimum.
+struct PreslidingFit {
+  bool ok = false;
+  double stiffness = 0, stiffness_std = 0, limit = 0;
+  Vec model;  // the curve's force at each sample (N or N m, the data's sign)
+};
+
+PreslidingFit presliding_fit(const Vec& F, const Vec& position) {
+  PreslidingFit out;
+  Eigen::Index top = 0;
+  F.cwiseAbs().maxCoeff(&top);
+  const double dir = F(top) > 0 ? 1.0 : -1.0;
+  const Vec f = dir * F, x = dir * (position.array() - position(0)).matrix();
+  const double fmax = f.maxCoeff();
+  if (!(fmax > 0)) return out;
+  const auto slope_at = [&](double A) {
+    double num = 0, den = 0;
+    for (Eigen::Index i = 0; i < f.size(); ++i)
+      if (f(i) > 0 && f(i) < A && x(i) > 0) num += x(i) * -std::log1p(-f(i) / A), den += x(i) * x(i);
+    return den > 0 ? num / den : std::numeric_limits<double>::quiet_NaN();
+  };
+  const auto cost = [&](double logA) {
+    const double A = std::exp(logA), c = slope_at(A);
+    if (!std::isfinite(c)) return std::numeric_limits<double>::infinity();
+    return (f.array() - A * (1 - (-c * x.array().max(0.0)).exp())).matrix().squaredNorm();
+  };
+  double lo = std::log(1.001 * fmax), hi = std::log(100 * fmax);
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  double a = hi - g * (hi - lo), b = lo + g * (hi - lo), fa = cost(a), fb = cost(b);
+  for (int k = 0; k < 60; ++k) {
+    if (fa < fb) hi = b, b = a, fb = fa, a = hi - g * (hi - lo), fa = cost(a);
+    else lo = a, a = b, fa = fb, b = lo + g * (hi - lo), fb = cost(b);
+  }
+  const double A = std::exp(0.5 * (lo + hi)), c = slope_at(A);
+  if (!std::isfinite(c) || !(c > 0)) return out;
+  const double sigma0 = c * A;
+  // Jacobian of f = A (1 - exp(-sigma0 x / A)) in (sigma0, A).
+  Mat J(f.size(), 2);
+  Vec e(f.size());
+  for (Eigen::Index i = 0; i < f.size(); ++i) {
+    const double xi = std::max(0.0, x(i)), ex = std::exp(-sigma0 * xi / A);
+    J(i, 0) = xi * ex;
+    J(i, 1) = 1 - ex - sigma0 * xi / A * ex;
+    e(i) = f(i) - A * (1 - ex);
+  }
+  out.model = dir * (f - e);
+  if (!J.allFinite() || !e.allFinite() || f.size() <= 2) return out;
+  const HacCovariance hac = hac_covariance(J, e);
+  out.ok = true;
+  out.stiffness = sigma0;
+  out.stiffness_std = std::sqrt(std::max(0.0, hac.covariance(0, 0)));
+  out.limit = dir * A;
+  return out;
+}
+
+Seen look_at(const IdimData& d, Axis axis) {
+  Seen s;
+  const Eigen::Index n = d.time.size();
+  const bool from_position = d.position.size() > 0;
+  // Anything inconsistent is the trajectory path's to refuse, naming the file.
+  if (n < kLeastSamplesSeen || d.force.size() != n || (from_position ? d.position.size() : d.velocity.size()) != n ||
+      !d.time.allFinite() || !d.force.allFinite() || !(from_position ? d.position.allFinite() : d.velocity.allFinite()))
+    return s;
+  const double dt = (d.time(n - 1) - d.time(0)) / static_cast<double>(n - 1);
+  if (!(dt > 0)) return s;
+  if (from_position) {
+    s.position = d.position;
+    s.velocity = gradient(d.position, dt);
+  } else {
+    s.velocity = d.velocity;
+    s.position.resize(n);
+    s.position(0) = 0;
+    for (Eigen::Index i = 1; i < n; ++i) s.position(i) = s.position(i - 1) + 0.5 * (s.velocity(i) + s.velocity(i - 1)) * dt;
+  }
+  const double vmax = s.velocity.cwiseAbs().maxCoeff();
+  if (!(vmax > 0) || !std::isfinite(vmax)) return s;
+  const std::string vu(unit(Quantity::velocity, axis)), fu(unit(Quantity::force, axis)), xu(unit(Quantity::displacement, axis));
+  const Vec& F = d.force;
+  const double fspread = std::sqrt((F.array() - F.mean()).square().mean());
+
+  // Free decay: the force constant, or unrelated to the motion.
+  const Vec a = gradient(s.velocity, dt);
+  const Vec sg = s.velocity.unaryExpr([](double v) { return v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0; });
+  const double drive = fspread == 0 ? 0.0
+                                    : std::max({std::abs(correlation(F, a)), std::abs(correlation(F, s.velocity)),
+                                                std::abs(correlation(F, sg)), std::abs(correlation(F, s.position))});
+  if (drive < kUndriven) {
+    // Turning points: sign changes of the velocity beyond +-kTurnFraction of the largest speed.
+    std::vector<double> turns;
+    std::vector<Eigen::Index> turn_samples;
+    int last = 0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double v = s.velocity(i);
+      const int sign = v > kTurnFraction * vmax ? 1 : v < -kTurnFraction * vmax ? -1 : 0;
+      if (sign == 0 || sign == last) continue;
+      if (last != 0) {
+        // The turning point: where the velocity crossed zero since the last sample beyond the band.
+        Eigen::Index k = i;
+        while (k > 0 && s.velocity(k - 1) * sign > 0) --k;
+        turns.push_back(d.time(k));
+        turn_samples.push_back(k);
+      }
+      last = sign;
+    }
+    const std::string force_words = fspread == 0 ? "the drive force is constant"
+                                                 : "the drive force does not follow the motion (correlation " +
+                                                       format_number(drive, 2) + " at most)";
+    if (static_cast<int>(turns.size()) >= kLeastHalfCycles) {
+      s.kind = Experiment::free_decay;
+      s.natural_frequency = std::numbers::pi * static_cast<double>(turns.size() - 1) / (turns.back() - turns.front());
+      // The centre: the mean over consecutive turning positions x0, x1, x2 of (x0 + 2 x1 + x2) / 4,
+      // which Coulomb friction's steps of 2 Fc/k cancel from exactly and a viscous decay by the
+      // ratio r per half cycle leaves (1 - r)^2 / 4 of the amplitude in, alternating in sign.
+      double sum = 0;
+      std::size_t triples = 0;
+      for (std::size_t k = 0; k + 2 < turn_samples.size(); ++k, ++triples)
+        sum += 0.25 * (s.position(turn_samples[k]) + 2 * s.position(turn_samples[k + 1]) + s.position(turn_samples[k + 2]));
+      s.equilibrium = triples > 0 ? sum / static_cast<double>(triples) : 0.0;
+      s.text = "a free decay: " + force_words + " while the axis oscillates (" + std::to_string(turns.size()) +
+               " reversals, natural frequency about " + format_number(s.natural_frequency, 4) +
+               " rad/s from the mean half period): the energy lost per half cycle gives the friction (decay)";
+    } else {
+      s.kind = Experiment::coast_down;
+      s.text = "a free coast-down: " + force_words + " while the axis moves with " + std::to_string(turns.size()) +
+               " reversal(s)";
+    }
+    return s;
+  }
+
+  // A slow ramp of force from rest: stuck for a while, the force's magnitude rising, then motion.
+  const double threshold = 0.01 * vmax;  // breakaway's default motion threshold
+  Eigen::Index onset = 0;
+  while (onset < n && std::abs(s.velocity(onset)) <= threshold) ++onset;
+  if (onset >= std::max<Eigen::Index>(20, static_cast<Eigen::Index>(kStuckShare * static_cast<double>(n))) && onset < n) {
+    const Vec t = d.time.head(onset), f = F.head(onset).cwiseAbs();
+    const double rise = correlation(t, f);
+    if (rise >= kRamp) {
+      s.kind = Experiment::breakaway_ramp;
+      s.text = "a slow ramp of force with stick: the axis stays at rest for " + format_number(d.time(onset) - d.time(0), 3) +
+               " s while |force| rises to " + format_number(std::abs(F(onset)), 3) + " " + fu +
+               ", then moves (speeds up to " + format_number(vmax, 3) + " " + vu +
+               "): the breakaway experiment (breakaway) applies";
+    }
+  }
+  // Presliding: the displacement a monotone function of the force (rank correlation), so that it
+  // holds while the force holds and the axis never slides (a slide runs on at a held force).
+  if (fspread > 0 && s.kind == Experiment::trajectory) {
+    const double rank = correlation(ranks(F), ranks(s.position));
+    if (rank >= kElastic) {
+      const PreslidingFit fit = presliding_fit(F, s.position);
+      if (fit.ok) {
+        s.kind = Experiment::presliding;
+        s.stiffness = fit.stiffness;
+        s.stiffness_std = fit.stiffness_std;
+        s.limit = fit.limit;
+        s.presliding_model = fit.model;
+        const double xspan = s.position.maxCoeff() - s.position.minCoeff();
+        s.text = "presliding: the displacement (" + format_number(xspan, 3) + " " + xu +
+                 " at most) follows the force (rank correlation " + format_number(rank, 4) + ", up to " +
+                 format_number(F.cwiseAbs().maxCoeff(), 3) + " " + fu +
+                 ") and holds while the force holds: the axis never slides";
+      }
+    }
+  }
+  return s;
+}
+
+// A Result of one method chosen for what the record holds, stamped as auto's: the experiment, the
+// choice and the one candidate in the selection.
+Result single_choice(Result inner, const std::string& method, const std::string& name, const std::string& structure,
+                     const Seen& seen, const std::string& choice, const IdimData& data, Axis axis) {
+  std::vector<SelectionCandidate> candidates(1);
+  SelectionCandidate& c = candidates.front();
+  c.method = method;
+  c.name = name;
+  c.structure = structure;
+  c.training_error_percent = inner.fit.relative_error_percent;
+  c.result = inner;
+  if (!inner.ok()) c.refusal = inner.message;
+  const std::optional<std::size_t> chosen = inner.ok() ? std::optional<std::size_t>(0) : std::nullopt;
+  Result r = std::move(inner);
+  const Result stamp = new_result(method_info(MethodId::automatic), r.model, axis);
+  r.method = stamp.method;
+  r.axis = stamp.axis;
+  r.data_file = data.file;
+  r.data_sha256 = data.sha256;
+  r.diagnostics.texts["experiment"] = seen.text;
+  r.diagnostics.texts["choice"] = choice;
+  r.diagnostics.texts["candidate 1"] = c.name + " [" + structure + "]: " + (chosen ? "chosen" : "refused: " + c.refusal);
+  r.diagnostics.lists["selection"] = {{{"candidate", 1.0},
+                                       {"heldout_error_percent", c.heldout_error_percent},
+                                       {"training_error_percent", c.training_error_percent},
+                                       {"chosen", chosen ? 1.0 : 0.0},
+                                       {"refused", chosen ? 0.0 : 1.0}}};
+  r.json_sections["diagnostics.selection"] = selection_json(candidates, chosen);
+  return r;
+}
+
+}  // namespace
+
+Result identify_auto(const IdimData& data, const AutoOptions& options) {
+  if (options.folds < 2)
+    throw std::invalid_argument("identify auto: --folds = " + std::to_string(options.folds) + " must be at least 2");
+  const Seen seen = look_at(data, options.axis);
+  const Axis axis = options.axis;
+  switch (seen.kind) {
+    case Experiment::free_decay: {
+      DecayOptions o;
+      o.natural_frequency = seen.natural_frequency;
+      o.axis = axis;
+      const std::string& name = method_info(MethodId::decay).name;
+      // The centre enters the energy balance linearly (a column of signed half-cycle travel), so
+      // its residual is a parabola in it: a golden-section search of decay's own fit error, over a
+      // quarter of the swing's span either side of the turning points' estimate, finds it. The
+      // restoring force is a linear spring's or a pendulum's (k sin x, x in rad from the bottom):
+      // the one whose balance fits better (the same two parameters, so the training error decides).
+      const auto decay_at = [&](double centre, bool pendulum) {
+        DecayOptions op = o;
+        op.pendulum = pendulum;
+        return identify_decay({data.time, (seen.position.array() - centre).matrix()}, op);
+      };
+      const auto misfit_of = [](const Result& t) { return t.ok() ? t.fit.rmse : std::numeric_limits<double>::infinity(); };
+      const auto best_centre = [&](bool pendulum) {
+        const auto misfit = [&](double centre) { return misfit_of(decay_at(centre, pendulum)); };
+        const double span = 0.25 * (seen.position.maxCoeff() - seen.position.minCoeff());
+        double lo = seen.equilibrium - span, hi = seen.equilibrium + span;
+        const double g = (std::sqrt(5.0) - 1) / 2;
+        double c1 = hi - g * (hi - lo), c2 = lo + g * (hi - lo), m1 = misfit(c1), m2 = misfit(c2);
+        for (int k = 0; k < 50; ++k) {
+          if (m1 < m2) hi = c2, c2 = c1, m2 = m1, c1 = hi - g * (hi - lo), m1 = misfit(c1);
+          else lo = c1, c1 = c2, m1 = m2, c2 = lo + g * (hi - lo), m2 = misfit(c2);
+        }
+        return misfit(0.5 * (lo + hi)) <= misfit(seen.equilibrium) ? 0.5 * (lo + hi) : seen.equilibrium;
+      };
+      const double centre_spring = best_centre(false), centre_pendulum = best_centre(true);
+      const Result spring = decay_at(centre_spring, false), pendulum = decay_at(centre_pendulum, true);
+      const bool is_pendulum = misfit_of(pendulum) < misfit_of(spring);
+      const double centre = is_pendulum ? centre_pendulum : centre_spring;
+      Result inner = is_pendulum ? pendulum : spring;
+      inner.diagnostics.texts["restoring_force"] =
+          std::string(is_pendulum ? "pendulum, k sin(x)" : "linear spring, k x") + ": its energy balance fits with rmse " +
+          format_number(misfit_of(is_pendulum ? pendulum : spring), 3) + " against " +
+          format_number(misfit_of(is_pendulum ? spring : pendulum), 3) + " for the " +
+          (is_pendulum ? "linear spring" : "pendulum");
+      inner.diagnostics.numbers["decay_centre"] = centre;
+      return single_choice(
+          std::move(inner), name, name + " coulomb-viscous", "coulomb-viscous energy balance per half cycle", seen,
+          name + ": the record is a free decay, where the energy lost between turning points measures the friction; "
+                 "without the stiffness only Fc/k and the damping ratio zeta follow (the natural frequency from the "
+                 "oscillation's half periods, the centre (decay_centre) that fits the balance best; run " + name +
+                 " --stiffness K, --pendulum for a pendulum, for Fc and Fv in force units). The trajectory methods are "
+                 "not run: with no drive force the inverse dynamic model has nothing to fit",
+          data, axis);
+    }
+    case Experiment::coast_down: {
+      Result r = make_result(MethodId::automatic, "none", axis);
+      fail(r, seen.text + ": without a restoring force or a known drive only friction over inertia shows, and no "
+                          "method of frictionlab identifies that; record a free oscillation (" +
+                  method_info(MethodId::decay).name + ") or drive the axis (idim, sweep)");
+      r.data_file = data.file;
+      r.data_sha256 = data.sha256;
+      r.diagnostics.texts["experiment"] = seen.text;
+      return r;
+    }
+    case Experiment::presliding: {
+      const std::string& lugre = method_info(MethodId::lugre).name;
+      Result inner = make_result(MethodId::automatic, "presliding", axis);
+      add_parameter(inner, "sigma0", seen.stiffness, seen.stiffness_std, Quantity::stiffness, axis);
+      inner.diagnostics.texts["covariance"] = "newey-west";
+      // The force the deflection saturates at: LuGre's Fs when the ramp came near it, else a bound.
+      inner.diagnostics.numbers["presliding_limit"] = seen.limit;
+      set_fit(inner, data.force, seen.presliding_model);
+      inner.series["time"].assign(data.time.data(), data.time.data() + data.time.size());
+      inner.series["force"].assign(data.force.data(), data.force.data() + data.force.size());
+      inner.series["force_model"].assign(seen.presliding_model.data(), seen.presliding_model.data() + seen.presliding_model.size());
+      inner.series["position"].assign(seen.position.data(), seen.position.data() + seen.position.size());
+      inner.diagnostics.warnings.push_back(
+          "only the bristle stiffness (sigma0) can be seen in presliding: the Coulomb and static levels, vs and the "
+          "viscous term need the axis to slide; identify the full model with " + lugre +
+          " on a record that also slides");
+      return single_choice(std::move(inner), "presliding", "presliding stiffness",
+                           "force = A (1 - exp(-sigma0 x / A)) (bristles)", seen,
+                           "presliding: sigma0 is the initial slope of the force against the displacement (the bristles' "
+                           "stiffness, LuGre's sigma0), from the steady presliding curve f = A (1 - exp(-sigma0 x / A)); " + lugre + " is the method for the whole LuGre model. The trajectory "
+                           "methods are not run: without sliding they would fit friction to an elastic force",
+                           data, axis);
+    }
+    case Experiment::breakaway_ramp: {
+      BreakawayData bd{data.time, data.force, seen.velocity, data.load};
+      BreakawayOptions o;
+      o.axis = axis;
+      const std::string& name = method_info(MethodId::breakaway).name;
+      Result inner = identify_breakaway(bd, o);
+      if (inner.ok())
+        return single_choice(std::move(inner), name, name + " static-coulomb-viscous", "static-coulomb-viscous with M", seen,
+                             name + ": the record is a breakaway experiment, and only its onset of motion shows the "
+                                    "static level Fs (the force at which the stuck axis broke away); Fc, Fv and M are "
+                                    "fitted to the sliding samples. The trajectory methods are not run: they see no "
+                                    "force at rest, so no Fs",
+                             data, axis);
+      return trajectory_choice(data, options,
+                               {seen.text + ", but " + name + " refused it (" + inner.message + ")"});
+    }
+    case Experiment::trajectory:
+      break;
+  }
+  return trajectory_choice(data, options, {});
 }
 
 }  // namespace frictionlab

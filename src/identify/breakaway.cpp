@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "frictionlab/identify/adequacy.hpp"
+#include "frictionlab/identify/covariance.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 #include "method_support.hpp"
 #include "frictionlab/signal/differentiate.hpp"
@@ -83,8 +84,8 @@ void add_breakaway_adequacy(Result& r, const BreakawayData& d, const std::vector
   ao.advice.shape = "the friction-velocity curve is not Coulomb plus viscous (sweep maps it point by point)";
   ao.advice.asymmetry = "breakaway fits one level for both directions: use direction-dependent terms (idim: "
                         "--terms inertia,asymmetric) or identify each direction's ramps on their own";
-  ao.advice.correlated_std = "breakaway's std of Fc, Fv and M (they assume independent samples)";
-  ao.advice.correlated_remedy = "read them as lower bounds";
+  ao.advice.correlated_std = "breakaway's std_ols of Fc, Fv and M (they assume independent samples)";
+  ao.advice.correlated_remedy = "breakaway's std accounts for the correlation";
   ao.advice.standstill = false;  // the rows slide
   add_adequacy(r, assess_residuals(velocity, {}, time, e, std::string(unit(Quantity::force, axis)),
                                    std::string(unit(Quantity::velocity, axis)), ao));
@@ -239,13 +240,17 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
   const auto level_at = [&](Eigen::Index k) { return Fc + mu_c * (with_load ? std::abs(d.load[k]) : 0.0); };
   const double tb = breakaway_time(d.time, d.force, d.time[k1], d.velocity[k1], M, level_at(k1), Fv, dt);
   double Fs = interpolate(d.time, d.force, tb);
-  // Its uncertainty, propagated from Fc, Fv and M one at a time (their covariance is ignored).
+  // Its sensitivities to Fc, Fv and M (finite differences over one ordinary std of each), for the
+  // propagation of their covariance below.
   auto Fs_with = [&](double m, double fc, double fv) {
     return interpolate(d.time, d.force, breakaway_time(d.time, d.force, d.time[k1], d.velocity[k1], m, fc, fv, dt));
   };
-  const double dFc = Fs_with(M, level_at(k1) + fit.stdev[0], Fv) - Fs, dFv = Fs_with(M, level_at(k1), Fv + fit.stdev[1]) - Fs;
-  const double dM = fit_inertia ? Fs_with(M + fit.stdev[2], level_at(k1), Fv) - Fs : 0.0;
-  double Fs_std = std::sqrt(dFc * dFc + dFv * dFv + dM * dM);
+  Eigen::VectorXd gradient_Fs = Eigen::VectorXd::Zero(p);
+  const auto slope = [&](int j, double fs_step) { return fit.stdev[j] > 0 ? (fs_step - Fs) / fit.stdev[j] : 0.0; };
+  gradient_Fs[0] = slope(0, Fs_with(M, level_at(k1) + fit.stdev[0], Fv));
+  gradient_Fs[1] = slope(1, Fs_with(M, level_at(k1), Fv + fit.stdev[1]));
+  if (fit_inertia) gradient_Fs[2] = slope(2, Fs_with(M + fit.stdev[2], level_at(k1), Fv));
+  double Fs_std = std::numeric_limits<double>::quiet_NaN();
   double mu_s = 0, mu_s_std = 0;
   if (with_load) {
     // Every start from rest: its breakaway force against its |load|; Fs (at zero load) and
@@ -288,8 +293,24 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
   add("Fv", Fv, fit.stdev[1], Quantity::viscous);
   if (fit_inertia) add("M", M, fit.stdev[2], Quantity::inertia);
   if (with_load) add("mu_load_coulomb", mu_c, fit.stdev[p - 1], Quantity::dimensionless);
-  // Fs keeps its propagated std; the regression's parameters get the common rules.
-  set_uncertainty_from_information(r, names, fit.information, fit.residual_variance);
+  // The regression's std from the Newey-West covariance (identify/covariance.hpp), as idim's: the
+  // sliding residual of a drive's current is coloured, and the ordinary figure (std_ols) is then a
+  // lower bound.
+  const HacCovariance hac = hac_covariance(X, fit.residual);
+  const Eigen::MatrixXd cov = set_uncertainty_from_sandwich(r, names, fit.information, hac.meat, fit.residual_variance);
+  r.diagnostics.texts["covariance"] = hac.prewhitened ? "newey-west-prewhitened" : "newey-west";
+  r.diagnostics.numbers["covariance_bandwidth"] = hac.bandwidth;
+  if (!with_load) {
+    // Fs: the fitted dynamics' part through the sensitivities and the covariance of Fc, Fv, M, and
+    // the noise of the one force sample read at the breakaway instant, whose variance the sliding
+    // residual's estimates (s^2). std_ols: the same with the ordinary covariance.
+    const double noise = fit.residual_variance;
+    const double var = gradient_Fs.dot(cov * gradient_Fs) + noise;
+    const double var_ols = gradient_Fs.dot(fit.covariance * gradient_Fs) + noise;
+    const auto root = [](double x) { return std::isfinite(x) && x >= 0 ? std::sqrt(x) : std::numeric_limits<double>::quiet_NaN(); };
+    for (Parameter& q : r.parameters)
+      if (q.name == "Fs") q.std = root(var), q.std_ols = root(var_ols);
+  }
   if (with_load) add("mu_load_static", mu_s, mu_s_std, Quantity::dimensionless);
   const Eigen::VectorXd modelled = X * fit.theta;
   set_fit(r, y, modelled);

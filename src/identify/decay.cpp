@@ -2,9 +2,11 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
+#include "frictionlab/identify/adequacy.hpp"
 #include "frictionlab/signal/differentiate.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 #include "method_support.hpp"
@@ -98,6 +100,66 @@ EnergyBalance energy_balance(const Eigen::VectorXd& time, const Eigen::VectorXd&
   eb.fit = fit;
   eb.turning_points = tp;
   return eb;
+}
+
+// Samples next to a velocity reversal left out of the residual check: the Coulomb force switches
+// there, and the central difference that gives the acceleration straddles the switch.
+constexpr Eigen::Index kReversalSamples = 2;
+
+// Adequacy of the energy balance (identify/adequacy.hpp), sample by sample: with the fitted Fc
+// and Fv, the friction the motion shows, -(restoring force + M a), less the model's Fc sign(v) +
+// Fv v, against velocity and time. The balance sums each half cycle, so a friction that is not
+// Coulomb plus viscous (a Stribeck rise at low speed) moves both estimates without leaving a
+// trace in its own few residuals; here it shows.
+// Units: force, or with neither stiffness nor inertia (Fc/k reported) force over stiffness, a
+// length. The std of decay come from the half cycles, not from these samples: no claim on them.
+void add_decay_adequacy(Result& r, const DecayData& d, double dt, const DecayOptions& o, double k, double Fc,
+                        double Fv, bool relative) {
+  const Eigen::Index n = d.time.size();
+  const Eigen::VectorXd v = gradient(d.position, dt), a = gradient(v, dt);
+  const double vmax = v.cwiseAbs().maxCoeff();
+  const double moving = 0.02 * vmax;  // the residual check's standstill fraction
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index i = kReversalSamples; i + kReversalSamples < n; ++i) {
+    bool near_reversal = false;
+    for (Eigen::Index j = i - kReversalSamples; j < i + kReversalSamples; ++j) near_reversal |= v[j] * v[j + 1] <= 0;
+    if (std::abs(v[i]) > moving && !near_reversal) rows.push_back(i);
+  }
+  if (rows.size() < kAdequacyMinSamples) return;
+  const auto restoring = [&](double x) { return o.pendulum ? k * std::sin(x) : k * x; };
+  const auto sign = [](double x) { return x > 0 ? 1.0 : -1.0; };
+  // M by least squares of this residual's acceleration column, also when the natural frequency is
+  // given: it is often estimated from the record (identify auto), and a pendulum's period grows
+  // with its amplitude, so k / wn^2 would leave an inertial residual that is no friction's.
+  double num = 0, den = 0;
+  for (const Eigen::Index i : rows) {
+    num += a[i] * (-restoring(d.position[i]) - Fc * sign(v[i]) - Fv * v[i]);
+    den += a[i] * a[i];
+  }
+  const double M = den > 0 ? num / den : 0.0;
+  std::vector<double> velocity, time, e;
+  double ss = 0;
+  for (const Eigen::Index i : rows) {
+    const double model = Fc * sign(v[i]) + Fv * v[i];
+    velocity.push_back(v[i]);
+    time.push_back(d.time[i]);
+    e.push_back(-restoring(d.position[i]) - M * a[i] - model);
+    ss += model * model;
+  }
+  AdequacyOptions ao;
+  ao.force_scale = std::sqrt(ss / static_cast<double>(rows.size()));  // the modelled friction's rms
+  ao.advice.stribeck = "the energy balance fits Coulomb plus viscous friction, so a rise at low speed (a Stribeck "
+                       "dip) biases both levels; map the friction-velocity curve from constant-speed runs (sweep) or "
+                       "fit it from a driven trajectory (idim with the stribeck term)";
+  ao.advice.shape = "the friction-velocity curve is not Coulomb plus viscous (sweep maps it point by point)";
+  ao.advice.asymmetry = "decay fits one level for both directions: identify each direction from driven runs (idim: "
+                        "--terms inertia,asymmetric)";
+  ao.advice.correlated_std = "";  // decay's std come from the half cycles' scatter and the discretisation check
+  ao.advice.standstill = false;   // the rows are in motion by construction
+  const std::string force_unit = relative ? std::string(unit(Quantity::displacement, o.axis))
+                                          : std::string(unit(Quantity::force, o.axis));
+  add_adequacy(r, assess_residuals(velocity, {}, time, e, force_unit, std::string(unit(Quantity::velocity, o.axis)), ao));
+  r.diagnostics.numbers["adequacy_inertia"] = M;
 }
 
 }  // namespace
@@ -215,6 +277,7 @@ Result identify_decay(const DecayData& d, const DecayOptions& o) {
     r.series["peak_time"].push_back(d.time[q.sample]);
     r.series["peak_position"].push_back(q.position);
   }
+  add_decay_adequacy(r, d, dt, o, k, fit.theta[0], fit.theta[1], relative);
   if (!relative && fit.theta[0] >= 0 && fit.theta[1] >= 0)
     r.law = FrictionLaw(CoulombViscous{fit.theta[0], fit.theta[1]}).to_spec();
   for (const auto& p : r.parameters)

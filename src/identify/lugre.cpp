@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "frictionlab/identify/adequacy.hpp"
 #include "frictionlab/identify/static_fit.hpp"
 #include "frictionlab/identify/uncertainty.hpp"
 #include "frictionlab/models/lugre.hpp"
@@ -239,6 +240,52 @@ StaticPart static_part_of(const FrictionLaw& law, const LugreOptions& o) {
     throw std::invalid_argument("lugre: the static law's Coulomb level Fc = " + format_number(p.Fc) +
                                 " must be > 0 (N or N m) for a LuGre model");
   return p;
+}
+
+// Adequacy of the fit (identify/adequacy.hpp) on the force: the friction the motion shows,
+// u - M a (a the position's second central difference), less the identified LuGre's along the
+// measured velocity (its bristle state integrated exactly over each sample with the velocity held,
+// from z = 0 at the record's start at rest), against velocity, position and time. The fit itself
+// is on the position, whose residual hides a friction of the wrong shape in the integration; the
+// force shows it. The std of lugre come from the position residuals: no claim on them here.
+void add_lugre_adequacy(Result& r, const LugreData& d, double M, const LuGre& lg, double dt, Axis axis) {
+  const Eigen::Index n = d.time.size();
+  if (n < static_cast<Eigen::Index>(kAdequacyMinSamples) + 4) return;
+  const Eigen::VectorXd v = gradient(d.position, dt), a = gradient(v, dt);
+  const auto g = [&](double vel) { return lg.Fc + (lg.Fs - lg.Fc) * std::exp(-std::pow(std::abs(vel / lg.vs), lg.delta)); };
+  const auto damping = [&](double vel) { return lg.vd > 0 ? lg.sigma1 * std::exp(-(vel / lg.vd) * (vel / lg.vd)) : lg.sigma1; };
+  std::vector<double> velocity, position, time, e;
+  double z = 0, ss = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double vi = v[i], rate = lg.sigma0 * std::abs(vi) / g(vi);  // 1/s
+    const double zdot = vi - rate * z;
+    const double model = lg.sigma0 * z + damping(vi) * zdot + lg.sigma2 * vi;
+    // The ends: one-sided differences; the check takes the samples between.
+    if (i >= 2 && i + 2 < n) {
+      velocity.push_back(vi);
+      position.push_back(d.position[i]);
+      time.push_back(d.time[i]);
+      e.push_back(d.force[i] - M * a[i] - model);
+      ss += d.force[i] * d.force[i];
+    }
+    if (rate > 0) {
+      const double steady = vi / rate;
+      z = steady + (z - steady) * std::exp(-rate * dt);
+    }
+  }
+  AdequacyOptions ao;
+  ao.force_scale = std::sqrt(ss / static_cast<double>(e.size()));  // the applied force's rms
+  ao.advice.stribeck = "the identified Stribeck curve (Fs, vs, delta) does not reach it: fit with another exponent "
+                       "(--delta), or identify the static part from constant-speed runs (sweep) and give it (--static)";
+  ao.advice.shape = "the friction-velocity curve is not LuGre's static curve (sweep maps it point by point; give it "
+                    "with --static)";
+  ao.advice.asymmetry = "LuGre has one level for both directions: a force the model lacks (gravity on an inclined "
+                        "axis, a drive offset) or direction-dependent friction; remove the offset from the force, or "
+                        "identify each direction from driven runs (idim: --terms inertia,asymmetric)";
+  ao.advice.correlated_std = "";  // lugre's std come from the position residuals, not these
+  ao.advice.standstill = false;   // presliding is the model's own: samples at rest belong to the fit
+  add_adequacy(r, assess_residuals(velocity, position, time, e, std::string(unit(Quantity::force, axis)),
+                                   std::string(unit(Quantity::velocity, axis)), ao));
 }
 
 }  // namespace
@@ -845,6 +892,7 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
     num["free_run_relative_error_percent"] = 100.0 * (free_run - d.position).norm() / dx.norm();
     r.series["position_free_run"].assign(free_run.data(), free_run.data() + n);
   }
+  add_lugre_adequacy(r, d, M, lg, dt, o.axis);
   return r;
 }
 

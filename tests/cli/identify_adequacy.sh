@@ -30,4 +30,24 @@ fi
 # The model is right here: the recipe lands within 5 % on Fc and Fv (truth 3 N, 20 N s/m). (M comes
 # out about 14 % high on this log: a third of its samples are stuck, which the recipe keeps.)
 check_parameters cv.json "$(rel Fc 3.0 0.05) and $(rel Fv 20.0 0.05)"
+
+# decay (a pendulum's free decay simulated by frictionlab, the lecture's combined pivot friction):
+# the Coulomb-viscous energy balance is right, no finding; with a Stribeck pivot (Fs 0.3 N m over
+# Fc 0.16, vs 0.1 rad/s) it is wrong, and the text, the JSON and the report say so.
+"$exe" simulate "$src/examples/craig_pendulum_combined.yaml" -o pendulum.csv > /dev/null
+sed -e 's/law: static-coulomb-viscous/law: stribeck/' -e 's/Fs: 0.2/Fs: 0.3\n  vs: 0.1/' \
+  "$src/examples/craig_pendulum_combined.yaml" > dip.yaml
+"$exe" simulate dip.yaml -o dip.csv > /dev/null
+decay=(--time time --position position --stiffness 9.81 --pendulum --axis rotary)
+"$exe" identify decay pendulum.csv "${decay[@]}" --json pendulum.json > pendulum.txt
+grep -q "^adequacy: .*findings = 0" pendulum.txt || { cat pendulum.txt; fail "decay: a finding where the model is right"; }
+"$exe" identify decay dip.csv "${decay[@]}" --json dip.json --report dip > dip.txt
+grep -q "a rise at low speed (a Stribeck dip) biases both levels" dip.txt || { cat dip.txt; fail "decay: no Stribeck warning"; }
+/usr/bin/python3 - dip.json <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["diagnostics"]["adequacy"]["findings"] >= 1, j["diagnostics"]["adequacy"]
+assert len(j["diagnostics"]["residual_by_velocity"]) >= 6, j["diagnostics"]
+PY
+grep -q "residual_by_velocity" dip/report.html || fail "decay: the report lacks the residual against velocity"
 echo "PASS identify_adequacy"

@@ -34,6 +34,16 @@ grep -Eq '"unit": ?"N/m"' "$tmp/l.json"
 printf '{"law": "stribeck", "Fc": 1.0, "Fs": 1.5, "vs": 0.001, "delta": 2, "Fv": 0.4}\n' > "$tmp/static.json"
 "$exe" identify lugre "$tmp/lugre.csv" --force applied --inertia 1 --static "$tmp/static.json" --json "$tmp/g.json" > /dev/null
 check_parameters "$tmp/g.json" "$(rel sigma0 1e5 0.05) and $(rel sigma1 316.22776601683796 0.05) and p['Fs'] == 1.5"
+# The model is right: the residual check on the force runs, in the text, the JSON and the report,
+# and finds nothing.
+"$exe" identify lugre "$tmp/lugre.csv" --force applied --inertia 1 --static "$tmp/static.json" --report "$tmp/gr" > "$tmp/g.txt"
+grep -q "^adequacy: .*findings = 0" "$tmp/g.txt" || { cat "$tmp/g.txt"; fail "lugre: no residual check, or a finding where the model is right"; }
+/usr/bin/python3 -c "
+import json, sys
+d = json.load(open(sys.argv[1]))['diagnostics']
+assert d['adequacy']['findings'] == 0 and len(d['residual_by_velocity']) >= 6, d.get('adequacy')
+" "$tmp/g.json"
+grep -q "residual_by_velocity" "$tmp/gr/report.html" || fail "lugre: the report lacks the residual against velocity"
 
 # The identified model is a MODEL.json that --static accepts.
 "$exe" identify lugre "$tmp/lugre.csv" --force applied --inertia 1 --static "$tmp/l.json" --json "$tmp/m.json" > /dev/null

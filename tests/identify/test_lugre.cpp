@@ -80,6 +80,35 @@ TEST(Lugre, StaticPartGivenStillRecoversTheDynamicOnes) {
   EXPECT_EQ(r.find("Fs")->std, 0.0);
 }
 
+// Adequacy on the force (identify/adequacy.hpp): with the true static part given, the identified
+// model leaves nothing in u - M a - F. With a constant 0.3 N in the recorded force that LuGre has
+// no term for (gravity on an inclined axis, a drive offset: a fifth of the difference between the
+// levels) the fit cannot place it (sigma0 runs to its bound) and the residual keeps it; the check
+// reads it where it is largest against the model, as friction above the model at low speed in the
+// positive direction, and says what to do in lugre's terms.
+TEST(Lugre, AdequacyNamesAForceTheModelLacks) {
+  LugreOptions o;
+  o.inertia = 1.0;
+  o.static_law = FrictionLaw(Stribeck{kTruth.Fc, kTruth.Fs, kTruth.vs, kTruth.delta, kTruth.sigma2});
+  const Result right = identify_lugre(canudas_record(), o);
+  ASSERT_TRUE(right.ok()) << right.message;
+  ASSERT_TRUE(right.diagnostics.groups.count("adequacy")) << "the residual check must run";
+  EXPECT_EQ(right.diagnostics.groups.at("adequacy").at("findings"), 0.0)
+      << (right.diagnostics.warnings.empty() ? std::string() : right.diagnostics.warnings.front());
+  EXPECT_FALSE(right.diagnostics.lists.at("residual_by_velocity").empty());
+  LugreData offset = canudas_record();
+  offset.force.array() += 0.3;  // N
+  const Result wrong = identify_lugre(offset, o);
+  ASSERT_TRUE(wrong.ok()) << wrong.message;
+  bool named = false;
+  for (const auto& w : wrong.diagnostics.warnings)
+    named |= w.find("friction at low speed is higher than the model: 0.3 N") != std::string::npos &&
+             w.find("the identified Stribeck curve (Fs, vs, delta) does not reach it") != std::string::npos;
+  std::string all;
+  for (const auto& w : wrong.diagnostics.warnings) all += w + "\n";
+  EXPECT_TRUE(named) << all;
+}
+
 // A token cancelled during the fit (here from its own progress callback, after the first
 // iteration) aborts the Ceres solve at its next iteration and the fit throws Cancelled instead of
 // returning the parameters reached so far.

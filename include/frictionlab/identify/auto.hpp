@@ -1,9 +1,17 @@
 #pragma once
-// Automatic identification: look at a record, say what experiment it holds (constant-speed
-// plateaus a sweep can use; a trajectory with accelerations the inverse dynamic model can use),
-// fit every candidate structure the data support, and choose among them by the error with which
-// each predicts held-out data (identify/selection.hpp): K contiguous time blocks of the record,
-// or a second record. Candidates:
+// Automatic identification: look at a record, say what experiment it holds, fit every candidate
+// structure the data support, and choose among them by the error with which each predicts
+// held-out data (identify/selection.hpp): K contiguous time blocks of the record, or a second
+// record. First, on the raw samples, the experiments a trajectory method must not be fitted to:
+//   a free decay (the drive force constant or unrelated to the motion, 3 reversals or more):
+//     decay, with the natural frequency from the half periods (Fc/k and zeta); a coast-down (fewer
+//     reversals) is refused with the reason
+//   a slow ramp of force with stick (at rest for 5 % of the record or more while |force| rises):
+//     breakaway; if it refuses the record, the trajectory candidates below
+//   presliding (displacement a monotone function of the force): sigma0 from the steady presliding
+//     curve, and a warning naming lugre for the rest
+// Otherwise the trajectory candidates (constant-speed plateaus a sweep can use; a trajectory with
+// accelerations the inverse dynamic model can use):
 //   idim coulomb-viscous      terms inertia, viscous, coulomb, offset
 //   idim stribeck             the same and stribeck, vs searched (on the training blocks only)
 //   idim asymmetric           terms inertia, asymmetric
@@ -59,7 +67,11 @@ struct AutoOptions {
 /// record and the axis are the caller's.
 AutoOptions make_auto_options(const OptionValues& values);
 
-/// Identifies `data` by the candidate with the lowest held-out drive-force error. The Result is
+/// A free decay, a breakaway ramp or presliding (see above): the Result is that method's (decay,
+/// breakaway, or the presliding fit: sigma0 in N/m or N m/rad) with method auto, texts
+/// "experiment" and "choice", one candidate in the selection, chosen (refused with the method's
+/// message when it failed); a coast-down: status error with the reason.
+/// Otherwise identifies `data` by the candidate with the lowest held-out drive-force error. The Result is
 /// the chosen candidate's (parameters with std and units, law, fit figures, signals), with method
 /// auto; diagnostics.texts "experiment" (what the record holds), "choice" (the candidate and why),
 /// "candidate N" (each one: held-out and training error, status, the refusal reason);
@@ -71,7 +83,8 @@ AutoOptions make_auto_options(const OptionValues& values);
 /// Newey-West std; with options.heldout, `validation` holds the chosen
 /// candidate's error on the second record (samples in motion). Status error naming each candidate's refusal when
 /// none can be chosen.
-/// \throws std::invalid_argument for bad data, as identify_idim (naming the file), or folds < 2.
+/// \throws std::invalid_argument for bad data, as identify_idim (naming the file) or as decay
+///         (irregular time), or folds < 2.
 Result identify_auto(const IdimData& data, const AutoOptions& options = {});
 
 }  // namespace frictionlab

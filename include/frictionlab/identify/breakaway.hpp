@@ -48,6 +48,12 @@ BreakawayOptions make_breakaway_options(const OptionValues& values);
 /// parameters: the dynamic estimate (Fc, Fv by least squares of M a + Fv v + Fc sign(v) = force
 /// over the sliding samples; Fs as the force at the instant motion began, found by integrating
 /// that fitted model back from the first moving sample to v = 0).
+/// std: Fc, Fv (and M) from the Newey-West covariance of the sliding fit (identify/covariance.hpp,
+/// diagnostics "covariance", "covariance_bandwidth"), the ordinary least-squares figure as std_ols;
+/// Fs's from that covariance through the backward integration plus the variance of the force
+/// sample read at the breakaway instant (the sliding residual's variance); with data.load, Fs's
+/// and mu_load_static's from the starts' scatter. The sliding residual is checked for adequacy
+/// (identify/adequacy.hpp).
 /// diagnostics.readoff: the lecture's read-offs {"Fs", "Fc", "Fv"}, and the times of onset,
 /// hold and stop. A record without a stuck start, without motion or without a return to
 /// standstill gives status "error" with a message saying which.

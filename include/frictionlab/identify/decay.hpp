@@ -42,6 +42,10 @@ DecayOptions make_decay_options(const OptionValues& values);
 
 /// Estimates Fc and Fv (or Fc/k and zeta) with standard deviations from a free decay.
 /// Needs at least 3 half cycles; fewer gives status "error" with the count found.
+/// The adequacy of the Coulomb-viscous model is checked sample by sample (identify/adequacy.hpp):
+/// the friction the motion shows, -(restoring force + M a) with M by least squares, less
+/// Fc sign(v) + Fv v, over the samples in motion away from reversals (diagnostics.adequacy,
+/// residual_by_velocity, residual_by_time, warnings; "adequacy_inertia" the M used; units of Fc).
 /// \throws std::invalid_argument on unequal lengths, irregular time, or neither stiffness nor
 ///         natural_frequency given (or not positive).
 Result identify_decay(const DecayData& data, const DecayOptions& options);

@@ -96,6 +96,9 @@ LugreOptions make_lugre_options(const OptionValues& values);
 /// fit on the sliding samples) and "multistart" (the best-ranked pair); correlation (the six or
 /// two fitted parameters), undetermined, at_bound; warnings (among them the passivity verdict
 /// when the identified set is not passive, and non-convergence).
+/// Adequacy (identify/adequacy.hpp) on the force: u - M a - F_LuGre along the measured motion
+/// (the bristle state integrated from z = 0), against velocity, position and time
+/// (diagnostics.adequacy, residual_by_*, warnings naming lugre's remedies).
 /// law: the lugre LawSpec. series: "time", "position", "position_sim" (the windowed simulation
 /// of the identified model), "position_free_run" (the identified model simulated over the whole
 /// record from its start; diagnostics "free_run_relative_error_percent"), "force" (length N).

@@ -10,7 +10,11 @@ __all__ = ["identify_auto"]
 
 @_with_options_doc("auto")
 def identify_auto(time, force, position=None, velocity=None, *, axis="linear", source=None, **options):
-    """Model selection on held-out data: fits the inverse dynamic model with the Coulomb-viscous,
+    """Model selection on held-out data. First says what experiment the record holds: a free decay
+    (the force constant or unrelated to the motion while the axis oscillates) runs decay (Fc_over_k,
+    zeta); a slow ramp of force with stick runs breakaway; presliding gives the bristle stiffness
+    sigma0 alone and names lugre; a coast-down is an error status with the reason. Otherwise it
+    fits the inverse dynamic model with the Coulomb-viscous,
     Stribeck (vs searched) and asymmetric terms, and, when the record has constant-speed plateaus,
     a sweep's laws with M from the trajectory; answers with the candidate whose drive-force error
     on held-out time blocks (``folds``, default 4) or on a second record (``validate``: a dict

@@ -1,0 +1,100 @@
+// Coverage of breakaway's 95 % intervals (identify/breakaway.hpp) on seeded synthetic trapezoid
+// records: a linear axis of random mass and static-Coulomb-viscous friction, driven by a force
+// ramped up from rest, held and ramped down to rest, measured with coloured (AR(1)) noise on the
+// force as a drive's current has. The std breakaway reports (Newey-West, as idim's) must cover the
+// truth as 95 % intervals do; the ordinary least-squares figure (std_ols) is kept for comparison.
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <random>
+#include <string>
+
+#include "frictionlab/identify/breakaway.hpp"
+
+namespace fl = frictionlab;
+
+namespace {
+
+struct Truth {
+  double M, Fs, Fc, Fv;
+};
+
+// One record at 1 kHz: the force ramps from 0 to `level` in 2 s, holds 1 s, ramps back to 0 in
+// 2 s and rests 0.5 s; the axis sticks while |F| <= Fs at rest and stops when its velocity
+// reaches zero with |F| <= Fs (semi-implicit Euler, 20 substeps a sample). The measured force
+// has AR(1) noise (coefficient 0.9, std 2 % of Fc); the velocity is exact (an encoder's
+// difference at these speeds is far finer than the force noise).
+fl::BreakawayData record(const Truth& p, unsigned seed) {
+  constexpr double dt = 1e-3, ramp = 2.0, hold = 1.0, rest = 0.5;
+  constexpr int substeps = 20;
+  constexpr double rho = 0.9, relative_noise = 0.02;
+  const double level = 1.6 * p.Fs;
+  const auto force_at = [&](double t) {
+    if (t < ramp) return level * t / ramp;
+    if (t < ramp + hold) return level;
+    if (t < 2 * ramp + hold) return level * (1 - (t - ramp - hold) / ramp);
+    return 0.0;
+  };
+  const auto n = static_cast<Eigen::Index>((2 * ramp + hold + rest) / dt);
+  fl::BreakawayData d;
+  d.time.resize(n), d.force.resize(n), d.velocity.resize(n);
+  std::mt19937 gen(seed);
+  std::normal_distribution<double> white(0.0, relative_noise * p.Fc * std::sqrt(1 - rho * rho));
+  double v = 0, noise = std::normal_distribution<double>(0.0, relative_noise * p.Fc)(gen);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) * dt;
+    d.time(i) = t;
+    d.velocity(i) = v;
+    noise = rho * noise + white(gen);
+    d.force(i) = force_at(t) + noise;
+    for (int s = 0; s < substeps; ++s) {
+      const double h = dt / substeps, F = force_at(t + s * h);
+      if (v == 0.0 && std::abs(F) <= p.Fs) continue;  // stuck
+      const double dir = v != 0.0 ? (v > 0 ? 1.0 : -1.0) : (F > 0 ? 1.0 : -1.0);
+      const double vn = (p.M * v + h * (F - p.Fc * dir)) / (p.M + h * p.Fv);
+      v = vn * dir < 0 && std::abs(F) <= p.Fs ? 0.0 : vn;
+    }
+  }
+  return d;
+}
+
+}  // namespace
+
+TEST(BreakawayCoverage, NeweyWestIntervalsCoverTheTruthOnSeededTrapezoids) {
+  // 200 seeded cases: a binomial test at the 1 % level against 95 % coverage rejects 181 covered
+  // or fewer (P(X <= 181 | 200, 0.95) = 0.006, P(X <= 182) = 0.012), and 182 is 91 %, above the
+  // 90 % the coverage suite asks of every parameter.
+  constexpr int kCases = 200, kLeastCovered = 182;
+  const std::vector<std::string> names{"Fs", "Fc", "Fv", "M"};
+  std::map<std::string, int> covered, covered_ols;
+  std::mt19937 draw(20261128);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int k = 0; k < kCases; ++k) {
+    Truth p;
+    p.M = 0.5 + 1.5 * u(draw);
+    p.Fc = 2.0 + 2.0 * u(draw);
+    p.Fs = p.Fc * (1.2 + 0.3 * u(draw));
+    p.Fv = 5.0 + 15.0 * u(draw);
+    const fl::Result r = fl::identify_breakaway(record(p, 1000u + static_cast<unsigned>(k)));
+    ASSERT_TRUE(r.ok()) << "case " << k << ": " << r.message;
+    const std::map<std::string, double> truth{{"Fs", p.Fs}, {"Fc", p.Fc}, {"Fv", p.Fv}, {"M", p.M}};
+    for (const auto& name : names) {
+      const fl::Parameter* q = r.find(name);
+      ASSERT_NE(q, nullptr) << name;
+      ASSERT_TRUE(q->std_ols.has_value()) << name << ": std_ols is kept";
+      const double error = std::abs(q->value - truth.at(name));
+      covered[name] += error <= 1.959964 * q->std;
+      covered_ols[name] += error <= 1.959964 * *q->std_ols;
+    }
+  }
+  for (const auto& name : names) {
+    std::cout << "breakaway " << name << ": std covers " << covered[name] << "/" << kCases << ", std_ols "
+              << covered_ols[name] << "/" << kCases << "\n";
+    EXPECT_GE(covered[name], kLeastCovered) << name << ": " << covered[name] << " of " << kCases << " covered";
+  }
+}
