@@ -26,6 +26,21 @@ Eigen::VectorXd vec(const std::vector<double>& x) {
 
 bool contains(const std::string& text, const std::string& words) { return text.find(words) != std::string::npos; }
 
+// A record of a simulated run: its time and position, the drive force `force` (N or N m).
+fl::IdimData record(const fl::Trajectory& tr, Eigen::VectorXd force, const std::string& file) {
+  fl::IdimData d;
+  d.time = vec(tr.time);
+  d.position = vec(tr.position);
+  d.force = std::move(force);
+  d.file = file;
+  return d;
+}
+
+// `r` is auto's answer whose texts `key` hold `words`.
+void expect_text(const fl::Result& r, const std::string& key, const std::string& words) {
+  EXPECT_TRUE(contains(r.diagnostics.texts.at(key), words)) << r.diagnostics.texts.at(key);
+}
+
 // The one candidate of the selection, chosen, named `name`.
 void expect_single_choice(const fl::Result& r, const std::string& name) {
   const auto sel = nlohmann::json::parse(r.json_sections.at("diagnostics.selection"));
@@ -42,19 +57,13 @@ void expect_single_choice(const fl::Result& r, const std::string& name) {
 TEST(AutoExperiments, SlowRampWithStickRunsBreakaway) {
   constexpr double kRel = 0.01, Kt = 0.0141;
   const fl::Trajectory tr = fl::simulate(fl::load_scenario(example("craig_motor_trapezoid.yaml")));
-  fl::IdimData d;
-  d.time = vec(tr.time);
-  d.position = vec(tr.position);
-  d.force = Kt * vec(tr.current);
-  d.file = "trapezoid";
+  fl::IdimData d = record(tr, Kt * vec(tr.current), "trapezoid");
   fl::AutoOptions o;
   o.axis = fl::Axis::rotary;
   const fl::Result r = fl::identify_auto(d, o);
   ASSERT_TRUE(r.ok()) << r.message;
-  EXPECT_TRUE(contains(r.diagnostics.texts.at("experiment"), "a slow ramp of force with stick"))
-      << r.diagnostics.texts.at("experiment");
-  EXPECT_TRUE(contains(r.diagnostics.texts.at("choice"), "only its onset of motion shows the static level Fs"))
-      << r.diagnostics.texts.at("choice");
+  expect_text(r, "experiment", "a slow ramp of force with stick");
+  expect_text(r, "choice", "only its onset of motion shows the static level Fs");
   expect_single_choice(r, "breakaway static-coulomb-viscous");
   EXPECT_NEAR(r.value("Fs"), 0.0015, kRel * 0.0015);
   EXPECT_NEAR(r.value("Fc"), 0.0012, kRel * 0.0012);
@@ -72,20 +81,13 @@ TEST(AutoExperiments, SlowRampWithStickRunsBreakaway) {
 TEST(AutoExperiments, FreeDecayRunsDecay) {
   constexpr double kRel = 0.02;
   const fl::Trajectory tr = fl::simulate(fl::load_scenario(example("craig_pendulum_combined.yaml")));
-  fl::IdimData d;
-  d.time = vec(tr.time);
-  d.position = vec(tr.position);
-  d.force = Eigen::VectorXd::Zero(d.time.size());  // the drive's current: none
-  d.file = "pendulum";
+  const fl::IdimData d = record(tr, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(tr.rows())), "pendulum");  // no drive
   const fl::Result r = fl::identify_auto(d);
   ASSERT_TRUE(r.ok()) << r.message;
-  EXPECT_TRUE(contains(r.diagnostics.texts.at("experiment"), "a free decay: the drive force is constant"))
-      << r.diagnostics.texts.at("experiment");
-  EXPECT_TRUE(contains(r.diagnostics.texts.at("choice"), "decay: the record is a free decay"))
-      << r.diagnostics.texts.at("choice");
+  expect_text(r, "experiment", "a free decay: the drive force is constant");
+  expect_text(r, "choice", "decay: the record is a free decay");
   expect_single_choice(r, "decay coulomb-viscous");
-  EXPECT_TRUE(contains(r.diagnostics.texts.at("restoring_force"), "pendulum, k sin(x)"))
-      << r.diagnostics.texts.at("restoring_force");
+  expect_text(r, "restoring_force", "pendulum, k sin(x)");
   const double wn = std::sqrt(9.81);
   EXPECT_NEAR(r.value("Fc_over_k"), 0.16 / 9.81, kRel * 0.16 / 9.81);
   EXPECT_NEAR(r.value("zeta"), 0.5 / (2 * wn), kRel * 0.5 / (2 * wn));
@@ -120,17 +122,11 @@ TEST(AutoExperiments, CoastDownIsSeenAndRefused) {
 TEST(AutoExperiments, PreslidingIsSeenAndOnlyTheStiffnessReported) {
   constexpr double kRel = 0.10;
   const fl::Trajectory tr = fl::simulate(fl::load_scenario(example("canudas_presliding.yaml")));
-  fl::IdimData d;
-  d.time = vec(tr.time);
-  d.position = vec(tr.position);
-  d.force = vec(tr.applied);
-  d.file = "presliding";
+  const fl::IdimData d = record(tr, vec(tr.applied), "presliding");
   const fl::Result r = fl::identify_auto(d);
   ASSERT_TRUE(r.ok()) << r.message;
-  EXPECT_TRUE(contains(r.diagnostics.texts.at("experiment"), "presliding: the displacement"))
-      << r.diagnostics.texts.at("experiment");
-  EXPECT_TRUE(contains(r.diagnostics.texts.at("choice"), "lugre is the method for the whole LuGre model"))
-      << r.diagnostics.texts.at("choice");
+  expect_text(r, "experiment", "presliding: the displacement");
+  expect_text(r, "choice", "lugre is the method for the whole LuGre model");
   expect_single_choice(r, "presliding stiffness");
   ASSERT_EQ(r.parameters.size(), 1u);
   EXPECT_NEAR(r.value("sigma0"), 1e5, kRel * 1e5);

@@ -45,18 +45,20 @@ std::size_t row_at(const Trajectory& tr, double t) {
   return tr.rows() - 1;
 }
 
+// The motor of rig() pushed by 2 N onto the load held by Fs 1.2, Fc 1 N, one second.
+Trajectory strike(SimulationOptions o) {
+  o.duration = 1.0;
+  o.output_rate = 1000;
+  return simulate(BacklashAxis(rig()), StaticCoulombViscous{1.2, 1.0, 0.0}, constant(2.0), o);
+}
+
 }  // namespace
 
 TEST(Backlash, TheMotorCrossesThePlayAndStrikesTheStuckLoad) {
   // u = 2 N accelerates the motor alone at 4 m/s^2 over half the play (10 mm): it strikes at
   // t1 = sqrt(2 * 0.01 / 4) with 4 t1; a plastic impact gives both 0.5 * 4 t1 / 2; engaged they
   // slide at (2 - Fc) / 2 = 0.5 m/s^2 against Fc = 1 N.
-  const BacklashAxis plant(rig());
-  const FrictionLaw law = StaticCoulombViscous{1.2, 1.0, 0.0};
-  SimulationOptions o;
-  o.duration = 1.0;
-  o.output_rate = 1000;
-  const Trajectory tr = simulate(plant, law, constant(2.0), o);
+  const Trajectory tr = strike({});
   const double t1 = std::sqrt(2 * 0.01 / 4.0), v1 = 0.5 * 4 * t1 / 2.0;
   ASSERT_EQ(tr.plant_events.size(), 1u);
   EXPECT_EQ(tr.plant_events[0].index, 0);  // the forward flank
@@ -212,15 +214,11 @@ TEST(Backlash, APidAcrossThePlayReachesTheTargetAndReportsItsImpacts) {
 }
 
 TEST(Backlash, FixedStepAgreesWithTheExactEngineToAStep) {
-  const BacklashAxis plant(rig());
-  const FrictionLaw law = StaticCoulombViscous{1.2, 1.0, 0.0};
+  const Trajectory exact = strike({});
   SimulationOptions o;
-  o.duration = 1.0;
-  o.output_rate = 1000;
-  const Trajectory exact = simulate(plant, law, constant(2.0), o);
   o.dt = 1e-5;
   o.mode = SolverMode::fixed_step;
-  const Trajectory fixed = simulate(plant, law, constant(2.0), o);
+  const Trajectory fixed = strike(o);
   ASSERT_EQ(fixed.plant_events.size(), 1u);
   EXPECT_NEAR(fixed.plant_events[0].time, exact.plant_events[0].time, 2 * o.dt);
   constexpr double kEulerRel = 1e-3;  // first-order steps of 1e-5 s over 1 s
