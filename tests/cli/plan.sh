@@ -63,6 +63,14 @@ expect_fail "no-such.json" plan breakaway --prior "$tmp/no-such.json" --scenario
 expect_fail "--noise current = 0.001 A: the scenario's plant (axis) has no motor current" \
   plan idim --prior "$src/examples/plan/emps_prior.json" --scenario "$src/examples/plan/axis_position_loop.yaml" \
   --noise current=1e-3 -o "$tmp/x.csv"
+cat > "$tmp/backlash.yaml" <<'YAML'
+plant: {type: axis, M: 1.5, backlash: {width: 0.002, motor_inertia: 0.5}}
+controller: {loop: position, Kp: 400, Kd: 60}
+input: {type: constant, value: 0}
+duration: 1
+YAML
+expect_fail "plant.backlash: an axis with backlash is not supported by plan" \
+  plan idim --prior "$src/examples/plan/emps_prior.json" --scenario "$tmp/backlash.yaml" -o "$tmp/x.csv"
 # The error JSON on stdout with --json -.
 set +e
 "$exe" plan breakaway --prior "$prior" --scenario "$motor" --limits current=0.1 -o "$tmp/x.csv" --json - > "$tmp/err.json" 2> /dev/null

@@ -65,6 +65,9 @@ PlanRig make_plan_rig(const Scenario& scenario, const FrictionLaw& prior_law, st
   const Plant& inner = loop ? loop->inner() : plant;
   const auto* motor = dynamic_cast<const DcMotor*>(&inner);
   const auto* axis = dynamic_cast<const RigidAxis*>(&inner);
+  if (!motor && !axis && inner.num_events() > 0)
+    throw std::invalid_argument(scenario_file + ": plant.backlash: an axis with backlash is not supported by plan (its "
+                                "impacts are not in the predicted information); plan on the axis without it");
   if (!motor && !axis)
     throw std::invalid_argument(scenario_file + ": plant.type '" + inner.type() +
                                 "' is not supported by plan; expected axis or dc-motor (with or without a controller)");
