@@ -106,10 +106,11 @@ void check_conditions(const FrictionLaw& law, const Scenario& sc, const std::str
     throw std::invalid_argument(model + ": the law's load effect (mu_load) needs the load the measured run worked at; "
                                 "scenario " + scenario + " gives none: add 'environment: {load: {type: data, column: "
                                 "LOAD}}' naming the log's load column (N or N m)");
-  if (e.temperature && !env.temperature && !env.thermal)
+  if (e.temperature && !env.temperature && !env.temperature_log && !env.thermal)
     throw std::invalid_argument(model + ": the law's temperature effect (T_ref, Fv_per_K) needs the temperature the "
                                 "measured run worked at; scenario " + scenario + " gives none: add 'environment: "
-                                "{temperature: T}' (degC or K, the log's mean) or a thermal model");
+                                "{temperature: {type: data, column: TEMPERATURE}}' naming the log's temperature column, "
+                                "'{temperature: T}' (degC or K, the log's mean) or a thermal model");
 }
 
 // MODEL as "AXIS=FILE[,AXIS=FILE]" (a model per axis of a two-axis plant): the pairs, in order;

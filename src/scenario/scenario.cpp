@@ -836,9 +836,20 @@ ContactEnvironment read_environment(const Section& s, DataSource& src) {
     }
   }
   if (s.has("temperature") && s.has("thermal"))
-    throw InputError(errc::scenario_value, s.at("thermal") + ": give a fixed 'temperature' or a 'thermal' model, not both",
+    throw InputError(errc::scenario_value, s.at("thermal") + ": give a 'temperature' (fixed or over time) or a 'thermal' model, not both",
                      s.fields("thermal"));
-  if (s.has("temperature")) env.temperature = s.number("temperature");
+  if (s.has("temperature") && s.node("temperature").IsMap()) {
+    // A temperature over time: any input type, a log's column as a data input (degC or K); like
+    // the load, it must not become the run's data input (its duration).
+    const Section ts(s.node("temperature"), s.at("temperature"));
+    const auto step = src.data_step;
+    const auto time = src.time_column;
+    env.temperature_log = read_input(ts, src);
+    src.data_step = step;
+    src.time_column = time;
+  } else if (s.has("temperature")) {
+    env.temperature = s.number("temperature");
+  }
   if (s.has("thermal")) {
     const Section ts(s.node("thermal"), s.at("thermal"));
     ts.allow({"T_ambient", "T0", "tau", "R"});
@@ -964,15 +975,15 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
     // temperature; a thermal state it does not see (the law's T_ref).
     if (const auto* loop = dynamic_cast<const ClosedLoop*>(sc.plant.get()); loop && loop->compensator()) {
       const ContactEnvironment& e = sc.options.environments[0];
-      sc.plant = loop->with_conditions(CompensationConditions{.load = e.load, .temperature = e.temperature});
+      sc.plant = loop->with_conditions(
+          CompensationConditions{.load = e.load, .temperature = e.temperature, .temperature_log = e.temperature_log});
     }
     // The temperatures the run starts at must lie in the law's range (it would stop at t = 0).
     const ContactEnvironment& env = sc.options.environments[0];
-    const std::optional<double> T0 = env.temperature ? env.temperature
-                                     : env.thermal  ? std::optional<double>(env.thermal->T0.value_or(env.thermal->T_ambient))
-                                                    : std::nullopt;
+    const std::optional<double> T0 = env.thermal ? std::optional<double>(env.thermal->T0.value_or(env.thermal->T_ambient))
+                                                 : env.temperature_at(0.0);
     if (T0) {
-      const char* key = env.temperature ? "temperature" : "thermal";
+      const char* key = env.thermal ? "thermal" : "temperature";
       try {
         Conditions c;
         c.temperature = *T0;

@@ -32,7 +32,8 @@ CompensatorInput ClosedLoop::measured(double t, std::span<const double> x, const
   in.position = x[0];
   in.velocity = x[1];
   in.load = conditions_.load.at(t, x.first(static_cast<std::size_t>(n_inner_)));
-  in.temperature = conditions_.temperature;
+  in.temperature = conditions_.temperature_log ? std::optional<double>(conditions_.temperature_log->at(t).value)
+                                               : conditions_.temperature;
   if (pid_.params().loop == ControlLoop::position) {
     in.reference = r.value;
     in.reference_rate = r.rate;

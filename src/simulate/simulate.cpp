@@ -376,7 +376,7 @@ class Engine {
       if (b.temp >= 0) {
         c.temperature = y[b.temp];
       } else {
-        c.temperature = b.env->temperature;
+        c.temperature = b.env->temperature_at(t);
       }
     }
     return c;
@@ -871,8 +871,10 @@ class Engine {
     for (const InputSignal& in : inputs_)
       if (in.max_step() > 0) hmax = hmax > 0 ? std::min(hmax, in.max_step()) : in.max_step();
     for (const Body& b : bodies_)
-      if (b.env && b.env->load.signal && b.env->load.signal->max_step() > 0)
-        hmax = hmax > 0 ? std::min(hmax, b.env->load.signal->max_step()) : b.env->load.signal->max_step();
+      if (b.env)
+        for (const auto* signal : {b.env->load.signal ? &*b.env->load.signal : nullptr,
+                                   b.env->temperature_log ? &*b.env->temperature_log : nullptr})
+          if (signal && signal->max_step() > 0) hmax = hmax > 0 ? std::min(hmax, signal->max_step()) : signal->max_step();
     if (hmax > 0) CVodeSetMaxStep(sd_.mem, hmax);
     if (nroots_ > 0) {
       if (CVodeRootInit(sd_.mem, nroots_, &Engine::roots_cb) != CV_SUCCESS) fail(0.0, "CVodeRootInit: " + error_);
@@ -971,8 +973,11 @@ class Engine {
     for (const InputSignal& in : inputs_)
       for (double c : in.breakpoints(0.0, o_.duration)) all.emplace_back(c, 0);
     for (const Body& b : bodies_)  // a load's corners (steps of a load profile) too
-      if (b.env && b.env->load.signal)
-        for (double c : b.env->load.signal->breakpoints(0.0, o_.duration)) all.emplace_back(c, 0);
+      if (b.env)
+        for (const auto* signal : {b.env->load.signal ? &*b.env->load.signal : nullptr,
+                                   b.env->temperature_log ? &*b.env->temperature_log : nullptr})
+          if (signal)
+            for (double c : signal->breakpoints(0.0, o_.duration)) all.emplace_back(c, 0);
     if (sample_period_ > 0) {
       for (long k = 1;; ++k) {
         const double ts = static_cast<double>(k) * sample_period_;  // same product as a table built as k * dt

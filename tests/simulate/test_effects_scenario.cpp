@@ -147,3 +147,49 @@ duration: 0.1
   c.temperature = 35.0;
   EXPECT_NEAR(loop->compensation(0.0, x, r), sc.law.sliding(0.2, c), 1e-12);
 }
+
+// A temperature over time (a log's column, here a table) is replayed: the law's viscous level at
+// each row is the one at the logged temperature, a compensator sees the same temperature, and the
+// temperature column of the run is the log's.
+TEST(EffectsScenario, ALoggedTemperatureIsReplayedAsTheRunGoes) {
+  const std::string head = R"(
+plant: {type: axis, M: 1.0}
+friction: {law: viscous, Fv: 1, T_ref: 20, Fv_per_K: -0.01, T_max: 80}
+input: {type: constant, value: 0}
+initial: {velocity: 1}
+duration: 2
+output_rate: 10
+)";
+  const Trajectory tr = simulate(parse(head + "environment: {temperature: {type: table, times: [0, 2], values: [20, 60]}}\n"));
+  constexpr double kRel = 1e-6;  // CVODE at rtol 1e-8 over 2 s of a smooth decay
+  for (std::size_t i = 0; i < tr.rows(); ++i) {
+    const double T = 20 + 20 * tr.time[i];
+    EXPECT_NEAR(tr.temperature[i], T, 1e-12 * T) << "t = " << tr.time[i];
+    const double Fv = 1 - 0.01 * (T - 20);
+    EXPECT_NEAR(tr.friction[i], Fv * tr.velocity[i], kRel * std::abs(Fv * tr.velocity[i])) << "t = " << tr.time[i];
+  }
+  // The velocity decays as dv/dt = -Fv(t) v with Fv = 1 - 0.2 t: v = exp(-(t - 0.1 t^2)).
+  EXPECT_NEAR(tr.velocity.back(), std::exp(-(2.0 - 0.4)), kRel * std::exp(-1.6));
+  // Refused: a log that starts beyond the law's T_max; a log beside a thermal model.
+  expect_refused(head + "environment: {temperature: {type: table, times: [0, 1], values: [95, 20]}}\n",
+                 "environment.temperature", "T_max");
+  expect_refused(head + "environment: {temperature: {type: constant, value: 30}, thermal: {tau: 1, R: 1}}\n",
+                 "environment.thermal", "not both");
+  const Scenario comp = parse(R"(
+plant: {type: axis, M: 1.0}
+friction: {law: coulomb-viscous, Fc: 1, Fv: 0.4, T_ref: 20, Fv_per_K: -0.01}
+controller: {loop: position, Kp: 100, Kd: 20, compensation: {type: feedforward, band: 0.001}}
+environment: {temperature: {type: ramp, initial: 20, rate: 10}}
+input: {type: ramp, rate: 0.2}
+duration: 0.1
+)");
+  const auto* loop = dynamic_cast<const ClosedLoop*>(comp.plant.get());
+  ASSERT_NE(loop, nullptr);
+  ASSERT_TRUE(loop->conditions().temperature_log.has_value());
+  std::vector<double> x(static_cast<std::size_t>(loop->num_states()), 0.0);
+  InputValue r;
+  r.rate = 0.2;
+  Conditions c;
+  c.temperature = 20 + 10 * 1.5;
+  EXPECT_NEAR(loop->compensation(1.5, x, r), comp.law.sliding(0.2, c), 1e-12);
+}

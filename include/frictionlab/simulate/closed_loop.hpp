@@ -25,6 +25,8 @@ struct CompensationConditions {
   /// A measured temperature (degC or K); none = the law's T_ref (the compensation does not see a
   /// thermal state of the run, only a temperature it is given).
   std::optional<double> temperature;
+  /// or a measured temperature over time (degC or K; a log's column), in place of `temperature`.
+  std::optional<InputSignal> temperature_log;
 };
 
 /// A PID (control/pid.hpp) closed around `inner` (a 1-DOF plant). States: the inner plant's, then

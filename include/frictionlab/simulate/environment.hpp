@@ -58,19 +58,29 @@ struct ThermalModel {
   double rate(double T, double P) const { return (P * R - (T - T_ambient)) / tau; }
 };
 
-/// One contact's conditions. A fixed `temperature` and a `thermal` model exclude each other.
+/// One contact's conditions. The temperature comes in one of three forms, which exclude each
+/// other: a fixed `temperature`, a `temperature_log` over time, or a `thermal` model.
 struct ContactEnvironment {
   LoadSource load;
   std::optional<double> temperature;   ///< a fixed temperature (degC or K)
+  /// or a temperature over time (degC or K): an input, e.g. a log's temperature column (a data
+  /// input), replayed as the run goes; its corners are corners of the run
+  std::optional<InputSignal> temperature_log;
   std::optional<ThermalModel> thermal; ///< or the temperature as a state of the run
 
-  bool empty() const { return !load.given() && !temperature && !thermal; }
-  /// \throws std::invalid_argument when both temperature forms are given, a fixed temperature is
-  ///         not finite, or the thermal model breaks its rules (naming the parameter).
+  bool empty() const { return !load.given() && !temperature && !temperature_log && !thermal; }
+  /// The temperature (degC or K) at time t of a fixed value or a log; none without either.
+  std::optional<double> temperature_at(double t) const {
+    if (temperature_log) return temperature_log->at(t).value;
+    return temperature;
+  }
+  /// \throws std::invalid_argument when two temperature forms are given, a fixed temperature is
+  ///         not finite, or the thermal model or an input breaks its rules (naming the parameter).
   void validate() const {
-    if (temperature && thermal)
-      throw std::invalid_argument("environment: give a fixed temperature or a thermal model, not both");
+    if ((temperature ? 1 : 0) + (temperature_log ? 1 : 0) + (thermal ? 1 : 0) > 1)
+      throw std::invalid_argument("environment: give one of a fixed temperature, a temperature over time or a thermal model");
     if (temperature) detail::require(std::isfinite(*temperature), "environment", "temperature", *temperature, "finite (degC or K)");
+    if (temperature_log) temperature_log->validate("temperature");
     if (thermal) thermal->validate();
     if (load.signal) load.signal->validate("load");
   }
