@@ -171,7 +171,10 @@ prefix: prefix of every C name (a C identifier).
 Functions in the header (SI units; N m, rad/s on a rotary axis): PREFIX_friction(v); static laws
 PREFIX_friction_stuck(v, applied); dynamic laws PREFIX_state, PREFIX_init(&s), PREFIX_update(&s, v, dt);
 and the compensation's PREFIX_feedforward(vr), PREFIX_feedback(v), PREFIX_lugre_observer_update(&s, x, v, r, dt)
-or PREFIX_disturbance_observer_update(&s, v, drive, dt).
+or PREFIX_disturbance_observer_update(&s, v, drive, dt). A law with load, temperature or ripple terms adds
+PREFIX_friction_at(v[, q][, load][, T]) and PREFIX_feedforward_at(vr[, q][, load][, T]) /
+PREFIX_feedback_at(v[, q][, load][, T]), whose ripple r(q) is taken at the reference (feedforward) or
+measured (feedback) position q.
 Raises ValueError naming the argument for a compensation that does not fit the law, a bad parameter or prefix.)doc");
 
   m.def("export_mjcf", &export_mjcf, py::arg("model"), py::arg("path") = py::none(), py::arg("inertia") = py::none(),

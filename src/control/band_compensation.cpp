@@ -12,7 +12,7 @@ void BandCompensation::initial_states(const CompensatorInput& in, std::span<doub
 
 double BandCompensation::output(const CompensatorInput& in, std::span<const double> z) const {
   const double s = speed(in);
-  return force_in(detail::band_region_held(z[0], s, band_), s, conditions(in));
+  return force_in(detail::band_region_held(z[0], s, band_), s, conditions(in)) + law_.ripple(ripple_position(in));
 }
 
 void BandCompensation::events(const CompensatorInput& in, std::span<const double>, std::span<double> g) const {
@@ -28,7 +28,7 @@ void BandCompensation::on_event(const CompensatorInput& in, std::span<double> z,
 double BandCompensation::update(const CompensatorInput& in, std::span<double> z, double) const {
   const double s = speed(in);
   z[0] = detail::band_region(s, band_);
-  return force_in(z[0], s, conditions(in));
+  return force_in(z[0], s, conditions(in)) + law_.ripple(ripple_position(in));
 }
 
 }  // namespace frictionlab

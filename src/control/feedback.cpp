@@ -47,6 +47,7 @@ bool FeedbackCompensation::jacobian(const CompensatorInput& in, std::span<const 
   if (!slope) return false;
   std::fill(doutput.begin(), doutput.end(), 0.0);
   std::fill(dderiv.begin(), dderiv.end(), 0.0);
+  doutput[0] = law_.effects().ripple ? law_.effects().ripple->slope(in.position) : 0.0;
   doutput[1] = *slope;  // w = (position, velocity, drive, region)
   return true;
 }

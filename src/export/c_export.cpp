@@ -571,6 +571,7 @@ struct ConditionArgs;
 void feedforward_at(Writer& w, const ConditionArgs& a);
 void feedback_at(Writer& w, const ConditionArgs& a);
 bool moves(const ConditionArgs& a);
+bool compensation_at(const ConditionArgs& a);
 
 void feedforward(Writer& w, const FrictionLaw& law, const FeedforwardParams& p, const ConditionArgs& a) {
   const FeedforwardCompensation check(law, p);  // validates the band
@@ -584,7 +585,8 @@ static inline REAL @_feedforward(REAL vr) {
   if (vr > @_ff_band || vr < -@_ff_band) return @_friction(vr);
   return @_ff_at_minus + (@_ff_at_plus - @_ff_at_minus) * (vr + @_ff_band) / (2.0_r * @_ff_band);
 }
-)");  if (moves(a)) feedforward_at(w, a);
+)");
+  if (compensation_at(a)) feedforward_at(w, a);
 }
 
 void feedback(Writer& w, const FrictionLaw& law, const FeedbackParams& p, const ConditionArgs& a) {
@@ -597,7 +599,8 @@ static inline REAL @_feedback(REAL v) {
   if (v > @_fb_dead_band || v < -@_fb_dead_band) return @_friction(v);
   return 0.0_r;
 }
-)");  if (moves(a)) feedback_at(w, a);
+)");
+  if (compensation_at(a)) feedback_at(w, a);
 }
 
 void lugre_observer(Writer& w, const FrictionLaw& law, const LuGreObserverParams& p) {
@@ -746,32 +749,53 @@ void conditions(Writer& w, const LawEffects& e, const ConditionArgs& a) {
 }
 
 bool moves(const ConditionArgs& a) { return a.load || a.temperature; }
+// A compensation gets its form at the conditions (PREFIX_feedforward_at, _feedback_at) when the law
+// has a term that takes an argument: load, temperature or the ripple's position.
+bool compensation_at(const ConditionArgs& a) { return moves(a) || a.ripple; }
 
 // The comment over a compensation at the conditions: which arguments it takes, in which units.
-std::string conditions_comment(const std::string& what, const ConditionArgs& a) {
-  return "/* The " + what + " at load" + std::string(a.load ? " `load` (N or N m, measured or estimated)" : " 0") +
+// `position` names the position the ripple is taken at (the reference's or the measured one).
+std::string conditions_comment(const std::string& what, const ConditionArgs& a, const std::string& position) {
+  std::string s = "/* The " + what;
+  if (moves(a))
+    s += " at load" + std::string(a.load ? " `load` (N or N m, measured or estimated)" : " 0") +
          (a.temperature ? " and temperature `T` (degC or K, measured; pass T_ref when none is measured)" : "") +
-         ": the law with its levels moved. */\n";
+         ": the law with its levels moved";
+  if (a.ripple)
+    s += std::string(moves(a) ? ",\n   plus" : ": the compensation plus") + " the ripple r(q) at the " + position +
+         " `q` (m or rad), inside the band as outside it";
+  return s + ". */\n";
 }
+
+// The compensation's value f at the conditions, then the ripple at q added to it, as the library
+// adds law.ripple(q) to the band's force (control/band_compensation.cpp): the same operations.
+std::string compensation_return(const ConditionArgs& a) { return a.ripple ? "  return f + @_ripple(q);\n}\n" : "  return f;\n}\n"; }
 
 // The compensations at the measured (or estimated) load and temperature (control/feedforward.cpp,
 // feedback.cpp with CompensatorInput::load, ::temperature): the band's ends move with the levels.
 void feedforward_at(Writer& w, const ConditionArgs& a) {
-  w.code(conditions_comment("feedforward", a) +
-         "static inline REAL @_feedforward_at(REAL vr" + a.decl() + ") {\n"
-         "  REAL dFc, dFs, dFv, plus, minus;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n"
-         "  if (vr > @_ff_band || vr < -@_ff_band) return @_friction_moved(vr, dFc, dFs, dFv);\n"
-         "  plus = @_friction_moved(@_ff_band, dFc, dFs, dFv);\n"
-         "  minus = @_friction_moved(-@_ff_band, dFc, dFs, dFv);\n"
-         "  return minus + (plus - minus) * (vr + @_ff_band) / (2.0_r * @_ff_band);\n}\n");
+  std::string body;
+  if (moves(a))
+    body = "  REAL dFc, dFs, dFv, plus, minus, f;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n"
+           "  if (vr > @_ff_band || vr < -@_ff_band) {\n    f = @_friction_moved(vr, dFc, dFs, dFv);\n  } else {\n"
+           "    plus = @_friction_moved(@_ff_band, dFc, dFs, dFv);\n"
+           "    minus = @_friction_moved(-@_ff_band, dFc, dFs, dFv);\n"
+           "    f = minus + (plus - minus) * (vr + @_ff_band) / (2.0_r * @_ff_band);\n  }\n";
+  else
+    body = "  const REAL f = @_feedforward(vr);\n";
+  w.code(conditions_comment("feedforward", a, "reference position") + "static inline REAL @_feedforward_at(REAL vr" +
+         (a.ripple ? ", REAL q" : "") + a.decl() + ") {\n" + body + compensation_return(a));
 }
 
 void feedback_at(Writer& w, const ConditionArgs& a) {
-  w.code(conditions_comment("feedback", a) +
-         "static inline REAL @_feedback_at(REAL v" + a.decl() + ") {\n"
-         "  REAL dFc, dFs, dFv;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n"
-         "  if (v > @_fb_dead_band || v < -@_fb_dead_band) return @_friction_moved(v, dFc, dFs, dFv);\n"
-         "  return 0.0_r;\n}\n");
+  std::string body;
+  if (moves(a))
+    body = "  REAL dFc, dFs, dFv, f = 0.0_r;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n"
+           "  if (v > @_fb_dead_band || v < -@_fb_dead_band) f = @_friction_moved(v, dFc, dFs, dFv);\n";
+  else
+    body = "  const REAL f = @_feedback(v);\n";
+  w.code(conditions_comment("feedback", a, "measured position") + "static inline REAL @_feedback_at(REAL v" +
+         (a.ripple ? ", REAL q" : "") + a.decl() + ") {\n" + body + compensation_return(a));
 }
 
 void check_prefix(const std::string& prefix) {
@@ -802,13 +826,9 @@ std::string c_header(const FrictionLaw& law, const CExportOptions& options) {
                          ": the header's state update runs on fixed levels and does not move them with the load or "
                          "temperature; export the law without them, or a static law (stribeck, ...) with them",
                      {.key = effects.load ? "mu_load" : "T_ref"});
+  // A position ripple goes into the feedforward and feedback as PREFIX_feedforward_at(vr, q, ...),
+  // PREFIX_feedback_at(v, q, ...); the observers run as the library's do (see their comments).
   const std::optional<PositionRipple> ripple_effect = law.effects().ripple;
-  if (ripple_effect && options.compensation.index() != 0)
-    throw InputError(errc::law_parameter,
-                     "export: law '" + law.name() +
-                         "' carries a position ripple, which the compensations do not take yet; export the law alone "
-                         "(its header has PREFIX_ripple(q)) or without the ripple",
-                     {.key = "ripple_period"});
   Writer w(options.prefix, options.single_precision);
   const std::string type = compensation_type(options.compensation);
   const std::string guard = upper(options.prefix) + "_FRICTION_H";

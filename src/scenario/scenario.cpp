@@ -239,9 +239,10 @@ struct CompensationContext {
 };
 
 // The law with every parameter that carries newtons (forces, viscous coefficients, stiffnesses,
-// force rates, a table's forces, GMS's element stiffnesses) multiplied by `scale`: its force is
-// then scale times the original's for every velocity history (the states, in m or rad, and the
-// velocities are the same), so scale 1.2 models a 20 % over-estimated friction.
+// force rates, a table's forces, GMS's element stiffnesses, a ripple's amplitudes) multiplied by
+// `scale`: its force is then scale times the original's for every velocity history and position
+// (the states, in m or rad, and the velocities are the same), so scale 1.2 models a 20 %
+// over-estimated friction.
 FrictionLaw scaled_law(const FrictionLaw& law, double scale) {
   LawSpec spec = law.to_spec();
   for (const Parameter& p : law.parameters()) {
@@ -249,7 +250,9 @@ FrictionLaw scaled_law(const FrictionLaw& law, double scale) {
                          p.quantity == Quantity::stiffness || p.quantity == Quantity::force_rate;
     if (newtons && spec.scalars.count(p.name)) spec.scalars[p.name] *= scale;
   }
-  for (const char* name : {"force", "k"})  // table forces (N), GMS element stiffnesses (N/m)
+  // Table forces (N), GMS element stiffnesses (N/m), the ripple's amplitudes (N): a compensation
+  // that carries the ripple scales it with the rest.
+  for (const char* name : {"force", "k", "ripple_a", "ripple_b"})
     if (spec.arrays.count(name))
       for (double& v : spec.arrays[name]) v *= scale;
   return FrictionLaw::from_spec(spec);

@@ -48,6 +48,31 @@ expect 0 "" export "$tmp/lugre.json" --c "$tmp/obs.h" --compensation lugre-obser
 printf '#include "obs.h"\nint main(void) { friction_state s; friction_lugre_observer_state o; friction_init(&s);\n friction_lugre_observer_init(&o, 0.0); return friction_update(&s, 0.01, 1e-3) > 0 && friction_lugre_observer_update(&o, 0.0, 0.0, 0.0, 1e-3) == 0 ? 0 : 1; }\n' > "$tmp/obs.c"
 cc -std=c99 -Wall -Wextra -Werror -pedantic -o "$tmp/obs" "$tmp/obs.c" -lm && "$tmp/obs" || fail "lugre header"
 
+# A law with a position ripple and a compensation: PREFIX_feedforward_at(vr, q) and
+# PREFIX_feedback_at(v, q) add PREFIX_ripple(q) (at the reference and at the measured position),
+# inside the band as outside it, in double and float. Coulomb-viscous Fc = 1, Fv = 0.4 and the
+# ripple 0.6 sin(2 pi q / 0.02) - 0.4 cos(2 pi q / 0.02): r(0.005) = 0.6, r(0.01) = 0.4, r(0) = -0.4 N.
+printf '{"law": "coulomb-viscous", "Fc": 1.0, "Fv": 0.4, "ripple_period": 0.02, "ripple_a": [0.6], "ripple_b": [-0.4]}\n' \
+  > "$tmp/ripple.json"
+for precision in double float; do
+  flag=""; [ "$precision" = float ] && flag="--float"
+  expect 0 "" export "$tmp/ripple.json" --c "$tmp/rff_$precision.h" --compensation feedforward --band 0.002 $flag
+  expect 0 "" export "$tmp/ripple.json" --c "$tmp/rfb_$precision.h" --compensation feedback --dead-band 0.001 $flag
+  for kind in rff rfb; do
+    fn=friction_feedforward_at; [ "$kind" = rfb ] && fn=friction_feedback_at
+    printf '#include <stdio.h>\n#include "%s_%s.h"\nint main(void) {\n  printf("%%.9g %%.9g %%.9g\\n", (double)%s(0.5, 0.005), (double)%s(0.0, 0.01), (double)%s(-0.5, 0.0));\n  return 0;\n}\n' \
+      "$kind" "$precision" "$fn" "$fn" "$fn" > "$tmp/$kind.c"
+    cc -std=c99 -Wall -Wextra -Werror -pedantic -o "$tmp/$kind" "$tmp/$kind.c" -lm ||
+      fail "$kind header ($precision) does not compile strictly"
+    # F(0.5) + 0.6 = 1.8; at rest F = 0 (the feedforward band's midpoint, the feedback's dead band)
+    # + 0.4; F(-0.5) + r(0) = -1.2 - 0.4 = -1.6; to float's precision (1e-6 of about 1 N).
+    "$tmp/$kind" | awk -v what="$kind $precision" '{
+      split("1.8 0.4 -1.6", w, " ")
+      for (i = 1; i <= 3; ++i) { d = $i - w[i]; if (d < 0) d = -d; if (d > 1e-6) { print what ": " $0; exit 1 } } }' ||
+      fail "$kind header ($precision) does not add the ripple at the position"
+  done
+done
+
 # --help names the command's units.
 "$exe" export --help > "$tmp/help.txt"
 grep -q 'm/s or rad/s' "$tmp/help.txt" || fail "--help lacks units"

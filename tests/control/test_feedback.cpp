@@ -116,5 +116,54 @@ TEST(Feedback, RejectsABadDeadBand) {
             "feedback: dead_band = nan must be > 0 (m/s or rad/s)");
 }
 
+// A Stribeck law with a two-harmonic ripple of period 0.02 m (a_1 = 0.6, a_2 = 0.15, b_1 = -0.4 N).
+FrictionLaw rippled_stribeck() {
+  LawEffects e;
+  e.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}};
+  return FrictionLaw(stribeck()).with_effects(e);
+}
+
+// r(q) written out in the test, independent of PositionRipple::force.
+double ripple_by_hand(double q) {
+  const double w = 2 * M_PI * q / 0.02;
+  return 0.6 * std::sin(w) + 0.15 * std::sin(2 * w) - 0.4 * std::cos(w);
+}
+
+// The feedback adds the ripple at the MEASURED position, outside the dead band and inside it (a
+// stuck axis still meets the ripple), in output() and update(); the reference position does not
+// enter; the Jacobian's position entry is the ripple's slope dr/dx.
+TEST(Feedback, AddsTheRippleAtTheMeasuredPositionInAndOutsideTheDeadBand) {
+  const FrictionLaw law = rippled_stribeck();
+  const double db = 2e-3;
+  const FeedbackCompensation fb(law, {.dead_band = db});
+  constexpr double kSumTol = 4e-14;  // a few rounded terms of about 1 N: a few ulps
+  // Positions away from 0: the Jacobian check's difference step is relative to |x|.
+  for (double x : {-0.013, 0.0009, 0.005, 0.0071, 0.0123, 0.31}) {
+    for (double v : {-0.3, -0.0021, -1e-3, 0.0, 1e-6, 0.0019, 0.0021, 0.3}) {
+      SCOPED_TRACE("x " + std::to_string(x) + " v " + std::to_string(v));
+      CompensatorInput in;
+      in.position = x;
+      in.velocity = v;
+      in.reference = x - 0.004;  // not what the feedback reads
+      std::vector<double> z(1);
+      fb.initial_states(in, z);
+      const double velocity_part = std::abs(v) > db ? law.sliding(v) : 0.0;
+      EXPECT_NEAR(fb.output(in, z), velocity_part + ripple_by_hand(x), kSumTol);
+      EXPECT_EQ(fb.output(in, z), fb.force(v) + law.ripple(x));  // the same operations
+      EXPECT_EQ(fb.update(in, z, 1e-3), fb.force(v) + law.ripple(x));
+      constexpr double kFdRelTol = 1e-6;  // central differences of smooth curves, step 1e-6: ~1e-9
+      testing::expect_jacobian_matches(fb, in, z, kFdRelTol);
+    }
+  }
+  // At rest, inside the dead band, the output is the ripple alone: a_1 = 0.6 N at x = P/4.
+  CompensatorInput in;
+  in.position = 0.005;
+  std::vector<double> z{0.0}, dy(4), df(4);
+  EXPECT_NEAR(fb.output(in, z), 0.6, 1e-12);
+  ASSERT_TRUE(fb.jacobian(in, z, dy, df));
+  // dr/dx at P/4: 2 pi / P (0.6 cos(pi/2) + 0.3 cos(pi) + 0.4 sin(pi/2)) = 100 pi * 0.1 N/m.
+  EXPECT_NEAR(dy[0], 100 * M_PI * (-0.3 + 0.4), 1e-9);
+}
+
 }  // namespace
 }  // namespace frictionlab

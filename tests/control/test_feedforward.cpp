@@ -222,5 +222,54 @@ TEST(Feedforward, TakesTheInputsLoadAndTemperature) {
   EXPECT_FALSE(ff.jacobian(in, std::vector<double>{1.0}, dout, dder));
 }
 
+// A Stribeck law with a two-harmonic ripple of period 0.02 m (a_1 = 0.6, a_2 = 0.15, b_1 = -0.4 N).
+FrictionLaw rippled_stribeck() {
+  LawEffects e;
+  e.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}};
+  return FrictionLaw(Stribeck{1.0, 1.5, 0.01, 2.0, 0.4}).with_effects(e);
+}
+
+// r(q) written out in the test, independent of PositionRipple::force.
+double ripple_by_hand(double q) {
+  const double w = 2 * M_PI * q / 0.02;
+  return 0.6 * std::sin(w) + 0.15 * std::sin(2 * w) - 0.4 * std::cos(w);
+}
+
+// The feedforward adds the ripple at the REFERENCE position, outside the band and inside it
+// (where the velocity part is the band's straight line), in output() and update(); the measured
+// position does not enter, and the Jacobian stays zero (the reference has no entry).
+TEST(Feedforward, AddsTheRippleAtTheReferencePosition) {
+  const FrictionLaw law = rippled_stribeck();
+  const double b = 1e-3;
+  const FeedforwardCompensation ff(law, {.band = b});
+  // Sums of a few rounded terms: equal to the hand-written ripple to a few ulps of the force.
+  constexpr double kSumTol = 1e-14;
+  // At q = P/4 the ripple is a_1 = 0.6 N (sin = 1, cos = 0, the second harmonic's sine 0).
+  EXPECT_NEAR(ripple_by_hand(0.005), 0.6, 1e-15);
+  for (double q : {-0.013, 0.0, 0.005, 0.0071, 0.0123, 0.31}) {
+    for (double vr : {-0.5, -0.02, -2e-3, -5e-4, 0.0, 3e-4, 2e-3, 0.5}) {
+      SCOPED_TRACE("q " + std::to_string(q) + " vr " + std::to_string(vr));
+      CompensatorInput in;
+      in.reference = q;
+      in.reference_rate = vr;
+      in.position = q + 0.004;  // the measured position lags: not what the feedforward reads
+      std::vector<double> z(1);
+      ff.initial_states(in, z);
+      const double velocity_part = std::abs(vr) > b ? law.sliding(vr) : ff.force(vr);
+      EXPECT_NEAR(ff.output(in, z), velocity_part + ripple_by_hand(q), kSumTol * 4.0);
+      EXPECT_EQ(ff.output(in, z), ff.force(vr) + law.ripple(q));  // the same operations
+      EXPECT_EQ(ff.update(in, z, 1e-3), ff.force(vr) + law.ripple(q));
+    }
+  }
+  // The ripple does move the output (a test that passed with it ignored would be none).
+  CompensatorInput in;
+  in.reference = 0.005;
+  std::vector<double> z{0.0};
+  EXPECT_NEAR(ff.output(in, z) - ff.force(0.0), 0.6, 1e-12);
+  std::vector<double> dout(4, 1.0), dder(4, 1.0);
+  ASSERT_TRUE(ff.jacobian(in, z, dout, dder));
+  for (double d : dout) EXPECT_EQ(d, 0.0);
+}
+
 }  // namespace
 }  // namespace frictionlab

@@ -454,8 +454,7 @@ namespace {
 // A law with a position ripple (two harmonics, the second with a zero cosine amplitude): the
 // header's PREFIX_ripple(q) and PREFIX_friction_at(v, q) (prefix "friction": friction_ripple,
 // friction_friction_at) against the library's ripple(q) and sliding(v) + ripple(q) over positions
-// across several periods, both precisions; load and temperature effects are refused naming their
-// key, and so is a compensation with a ripple.
+// across several periods, both precisions; a dynamic law's load term is refused naming its key.
 class RippleExport : public ::testing::TestWithParam<bool> {};
 
 FrictionLaw rippled_stribeck() {
@@ -485,6 +484,88 @@ TEST_P(RippleExport, RippleAndFrictionAtMatchLibrary) {
   for (double x : q) lib.push_back(law.ripple(as_real(x, single)));
   for (std::size_t i = 0; i < q.size(); ++i) lib.push_back(law.sliding(as_real(v[i], single)) + law.ripple(as_real(q[i], single)));
   expect_close(out, lib, single, "rippled stribeck");
+}
+
+// The feedforward and feedback of a law with a ripple: PREFIX_feedforward_at(vr, q[, load][, T])
+// adds the ripple at the reference position q, PREFIX_feedback_at(v, q[, load][, T]) at the
+// measured one, inside the band as outside it, against the library compensators' output() at the
+// same inputs (reference = q for the feedforward, position = q for the feedback); a ripple alone
+// and a ripple with load and temperature terms; both precisions, to expect_close's tolerances.
+TEST_P(RippleExport, CompensationsAddTheRippleAtTheirPositionAsTheLibrary) {
+  const bool single = GetParam();
+  const std::string type = single ? "float" : "double";
+  LawEffects with_conditions;
+  with_conditions.load = LoadDependence{0.08, 0.05};
+  TemperatureDependence t;
+  t.T_ref = 30.0;
+  t.Fc_per_K = -0.004;
+  t.Fv_per_K = -0.006;
+  t.T_min = 10.0;
+  t.T_max = 60.0;
+  with_conditions.temperature = t;
+  with_conditions.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}};
+  const FrictionLaw both = FrictionLaw(Stribeck{1.0, 1.5, 0.001, 1.0, 0.4}).with_effects(with_conditions);
+  // Velocities through both bands (2e-3 and 5e-4 m/s) and beyond; positions across five periods;
+  // loads of both signs; temperatures inside [T_min, T_max].
+  std::vector<double> v, q, load, T;
+  for (int i = 0; i < 61; ++i) {
+    v.push_back((i % 2 ? -1.0 : 1.0) * std::pow(10.0, -5.0 + 4.5 * i / 60.0));
+    q.push_back(-0.05 + 0.0017 * i);
+    load.push_back(-40.0 + 1.3 * i);
+    T.push_back(12.0 + 0.75 * i);
+  }
+  for (double b : {2e-3, -2e-3, 5e-4, -5e-4, 0.0}) {
+    v.push_back(b);
+    q.push_back(0.005);
+    load.push_back(3.0);
+    T.push_back(30.0);
+  }
+  const FeedforwardParams ff{2e-3};
+  const FeedbackParams fb{5e-4};
+  for (const FrictionLaw& law : {rippled_stribeck(), both}) {
+    const bool moves = law.effects().moves_levels();
+    SCOPED_TRACE(moves ? "ripple, load and temperature" : "ripple alone");
+    const std::string extra = moves ? ", lg[i], tg[i]" : "";
+    CExportOptions o;
+    o.single_precision = single;
+    const std::string arrays = c_array(type.c_str(), "vg", v) + c_array(type.c_str(), "qg", q) +
+                               c_array(type.c_str(), "lg", load) + c_array(type.c_str(), "tg", T);
+    // The library with the bands as the float header holds them (an edge falls on the same side).
+    const FeedforwardCompensation lib_ff(law, FeedforwardParams{as_real(ff.band, single)});
+    const FeedbackCompensation lib_fb(law, FeedbackParams{as_real(fb.dead_band, single)});
+    std::vector<double> want_ff, want_fb;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      CompensatorInput in;
+      in.reference = in.position = as_real(q[i], single);
+      in.reference_rate = in.velocity = as_real(v[i], single);
+      if (moves) {
+        in.load = as_real(load[i], single);
+        in.temperature = as_real(T[i], single);
+      }
+      std::vector<double> z(1);
+      lib_ff.initial_states(in, z);
+      want_ff.push_back(lib_ff.output(in, z));
+      lib_fb.initial_states(in, z);
+      want_fb.push_back(lib_fb.output(in, z));
+    }
+    for (const bool feedforward : {true, false}) {
+      o.compensation = feedforward ? CompensationParams(ff) : CompensationParams(fb);
+      const std::string header = c_header(law, o);
+      const std::string fn = feedforward ? "friction_feedforward_at" : "friction_feedback_at";
+      EXPECT_THAT(header, ::testing::HasSubstr(fn + "(" + type + (feedforward ? " vr, " : " v, ") + type + " q"));
+      TempDir dir;
+      const std::vector<double> out = compile_and_run(
+          dir, header,
+          arrays + "int main(void) {\n  unsigned i;\n  (void)lg; (void)tg;\n"
+                   "  for (i = 0; i < sizeof vg / sizeof vg[0]; ++i) printf(\"%.17g\\n\", (double)" + fn +
+              "(vg[i], qg[i]" + extra + "));\n  return 0;\n}\n");
+      expect_close(out, feedforward ? want_ff : want_fb, single, fn);
+    }
+    // The ripple is in the output (the grid's last point: at rest, q = P/4, inside both bands).
+    const double ripple_at_rest = law.ripple(as_real(0.005, single));
+    EXPECT_NEAR(want_fb.back(), ripple_at_rest, 1e-12);
+    EXPECT_GT(std::abs(ripple_at_rest), 0.5);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(BothPrecisions, RippleExport, ::testing::Bool());
@@ -626,7 +707,7 @@ TEST_P(EffectsExport, ArgumentsFollowTheTermsAndCompensationsTakeLoadAndTemperat
 
 INSTANTIATE_TEST_SUITE_P(BothPrecisions, EffectsExport, ::testing::Bool());
 
-TEST(CExportErrors, DynamicLawWithLoadAndRippleWithCompensationAreRefusedSayingWhy) {
+TEST(CExportErrors, DynamicLawWithLoadIsRefusedSayingWhy) {
   using testing::error_of;
   LawEffects load;
   load.load = LoadDependence{0.05, 0.05};
@@ -634,9 +715,6 @@ TEST(CExportErrors, DynamicLawWithLoadAndRippleWithCompensationAreRefusedSayingW
               ::testing::HasSubstr("the header's state update runs on fixed levels"));
   EXPECT_THAT(error_of([&] { c_header(FrictionLaw(LuGre{}).with_effects(load)); }), ::testing::HasSubstr("mu_load"));
   CExportOptions o;
-  o.compensation = FeedforwardParams{};
-  EXPECT_THAT(error_of([&] { c_header(rippled_stribeck(), o); }),
-              ::testing::HasSubstr("carries a position ripple, which the compensations do not take yet"));
   o.compensation = LuGreObserverParams{};
   EXPECT_THAT(error_of([&] { c_header(FrictionLaw(LuGre{}).with_effects(load), o); }),
               ::testing::HasSubstr("mu_load"));

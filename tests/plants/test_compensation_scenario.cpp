@@ -224,3 +224,38 @@ TEST(CompensationScenario, EmpsLoopFeedforwardRemovesTheFrictionPartOfTheTrackin
   EXPECT_LT(part_comp, kRemainingShare * part_plain);
   EXPECT_LT(rms(comp, zero), rms(plain, zero));
 }
+
+// A scenario law with a position ripple: the controller's feedforward of the exact model carries
+// the ripple at the reference position, the feedback at the measured one, and `scale` scales the
+// ripple's amplitudes with the law's other forces.
+TEST(CompensationScenario, RippleOfTheScenarioLawIsCompensatedAndScaled) {
+  auto loop = [](const std::string& comp) {
+    return "plant: {type: axis, M: 1.0}\n"
+           "friction: {law: coulomb-viscous, Fc: 1.0, Fv: 0.4, ripple_period: 0.01, ripple_a: [0.8]}\n"
+           "input: {type: ramp, rate: 0.005}\nduration: 1\n"
+           "controller: {Kp: 400, Kd: 40, compensation: " + comp + "}\n";
+  };
+  const Scenario sc = read(loop("{type: feedforward}"));
+  const Compensator* ff = compensator_of(sc);
+  ASSERT_NE(ff, nullptr);
+  CompensatorInput in;
+  in.reference = 0.0025;  // m: a quarter period, r = 0.8 N
+  in.reference_rate = 0.005;
+  in.position = 0.0;  // r(0) = 0: the feedforward reads the reference, not this
+  std::vector<double> z(1);
+  ff->initial_states(in, z);
+  constexpr double kRelTol = 1e-14;  // a sum and a product of a few rounded terms
+  const double expected = sc.law.sliding(0.005) + 0.8;
+  EXPECT_NEAR(ff->output(in, z), expected, kRelTol * expected);
+  const Scenario over = read(loop("{type: feedforward, scale: 1.2}"));
+  ff = compensator_of(over);
+  ASSERT_NE(ff, nullptr);
+  EXPECT_NEAR(ff->output(in, z), 1.2 * expected, kRelTol * expected);
+  const Scenario fb = read(loop("{type: feedback}"));
+  ASSERT_NE(compensator_of(fb), nullptr);
+  in.position = 0.0025;
+  in.reference = 0.0;
+  in.velocity = 0.0;  // at rest, inside the dead band: the ripple alone
+  compensator_of(fb)->initial_states(in, z);
+  EXPECT_NEAR(compensator_of(fb)->output(in, z), 0.8, kRelTol);
+}

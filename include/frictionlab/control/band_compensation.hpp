@@ -20,7 +20,9 @@ namespace frictionlab FRICTIONLAB_API {
 /// of s itself, so the output is right before the first event. update() takes the region from s.
 /// A law with load or temperature terms is evaluated at the input's load and temperature
 /// (CompensatorInput::load, ::temperature; no temperature = the law's T_ref), both inside and
-/// outside the band; a position ripple is not part of the output (the law's velocity part only).
+/// outside the band. A law with a position ripple adds r(q) at the derived class's position q
+/// (ripple_position: the reference's or the measured one) inside the band as well as outside it,
+/// since the ripple acts whether the contact slides or sticks: output = force(s, c) + r(q).
 class BandCompensation : public Compensator {
  public:
   int num_states() const override { return 1; }
@@ -31,8 +33,9 @@ class BandCompensation : public Compensator {
   void on_event(const CompensatorInput& in, std::span<double> z, int k) const override;
   double update(const CompensatorInput& in, std::span<double> z, double dt) const override;
 
-  /// The compensation force (N or N m) at velocity s (m/s or rad/s), the region taken from s, at
-  /// conditions `c` (load N or N m, temperature degC or K; the position is not used).
+  /// The velocity part of the compensation force (N or N m) at velocity s (m/s or rad/s), the
+  /// region taken from s, at conditions `c` (load N or N m, temperature degC or K; the position is
+  /// not used): output() is this plus the law's ripple r(q), law().ripple(q), at ripple_position.
   /// \throws InputError (law.parameter) when the temperature lies outside the law's [T_min, T_max]
   ///         or makes a coefficient negative.
   double force(double s, const Conditions& c = {}) const;
@@ -43,6 +46,8 @@ class BandCompensation : public Compensator {
   BandCompensation(FrictionLaw law, double band) : law_(std::move(law)), band_(band) {}
   /// The velocity s the output switches on (m/s or rad/s).
   virtual double speed(const CompensatorInput& in) const = 0;
+  /// The position q the ripple r(q) is taken at (m or rad).
+  virtual double ripple_position(const CompensatorInput& in) const = 0;
   /// The sign of ds/dt where known, else 0.
   virtual double speed_direction(const CompensatorInput&) const { return 0.0; }
   /// The output inside the band (N or N m) at conditions c.

@@ -19,7 +19,9 @@ struct FeedbackParams {
 
 /// Output = F(v), the law at the measured velocity, for |v| > dead_band; 0 inside the dead band (a
 /// jump at its edges, as drive firmware does). The band's region is the one own state
-/// (BandCompensation); an edge event crosses the edge.
+/// (BandCompensation); an edge event crosses the edge. A law with a position ripple adds r(x), its
+/// ripple at the measured position (CompensatorInput::position), in and outside the dead band: the
+/// ripple acts on a stuck axis as on a sliding one, and depends on the position, not on noise in v.
 class FeedbackCompensation : public BandCompensation {
  public:
   /// \throws std::invalid_argument "feedback: dead_band = VALUE must be > 0 (m/s or rad/s)" when the
@@ -28,7 +30,8 @@ class FeedbackCompensation : public BandCompensation {
 
   std::string type() const override { return "feedback"; }
   /// d output / d velocity = the law's slope dF/dv at the measured velocity (N s/m or N m s/rad)
-  /// outside the dead band (in the region the state holds), 0 inside it; every other entry 0 (the
+  /// outside the dead band (in the region the state holds), 0 inside it; d output / d position =
+  /// the ripple's slope dr/dx (N/m or N m/rad; 0 without a ripple); every other entry 0 (the
   /// region is discrete). The slope comes from forward-mode automatic differentiation of the law's
   /// sliding formula, so it is exact. Static laws only: for a dynamic law (whose output is the
   /// steady-state force) it returns false, writing nothing.
@@ -38,6 +41,7 @@ class FeedbackCompensation : public BandCompensation {
 
  protected:
   double speed(const CompensatorInput& in) const override { return in.velocity; }
+  double ripple_position(const CompensatorInput& in) const override { return in.position; }
   double inside(double, const Conditions&) const override { return 0.0; }
 
  private:

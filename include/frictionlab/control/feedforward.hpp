@@ -26,6 +26,8 @@ struct FeedforwardParams {
 /// (BandCompensation); an edge event takes its direction from the reference's acceleration.
 /// A law with load or temperature terms is evaluated at the input's load (measured, or estimated
 /// from the plant's known load function by the loop) and temperature (measured; none = T_ref).
+/// A law with a position ripple adds r(q) at q = the reference position (CompensatorInput::
+/// reference), in and outside the band: the force the axis meets where the reference puts it.
 class FeedforwardCompensation : public BandCompensation {
  public:
   /// \throws std::invalid_argument "feedforward: band = VALUE must be > 0 (m/s or rad/s)" when the
@@ -33,8 +35,8 @@ class FeedforwardCompensation : public BandCompensation {
   explicit FeedforwardCompensation(FrictionLaw law, FeedforwardParams p = {});
 
   std::string type() const override { return "feedforward"; }
-  /// The output depends on the reference only: every entry is 0. Returns false (no analytic form)
-  /// for a law with load or temperature terms, whose load may follow the plant's state.
+  /// The output depends on the reference only (its ripple too): every entry is 0. Returns false
+  /// (no analytic form) for a law with load or temperature terms, whose load may follow the plant's state.
   bool jacobian(const CompensatorInput& in, std::span<const double> z, std::span<double> doutput,
                 std::span<double> dderiv) const override;
   const FeedforwardParams& params() const { return p_; }
@@ -42,6 +44,7 @@ class FeedforwardCompensation : public BandCompensation {
  protected:
   double speed(const CompensatorInput& in) const override { return in.reference_rate; }
   double speed_direction(const CompensatorInput& in) const override { return in.reference_accel; }
+  double ripple_position(const CompensatorInput& in) const override { return in.reference; }
   double inside(double vr, const Conditions& c) const override;
 
  private:
