@@ -34,16 +34,28 @@ class Writer {
   /// A C literal of `x` with full round-trip precision (%.17g), as a float literal in float mode.
   /// \throws std::invalid_argument for a value the target type cannot hold: not finite (a
   /// band of 1e307 gives -inf), or beyond float's range in float mode (a C compiler refuses the
-  /// literal with -Werror=overflow).
-  std::string number(double x) const {
+  /// literal with -Werror=overflow), or nonzero and below float's smallest magnitude in float
+  /// mode (the literal would round to 0).
+  /// `name` (the constant's, without the prefix) is named in the messages when given.
+  std::string number(double x, const std::string& name = "") const {
+    const std::string which = name.empty() ? "" : " (" + prefix_ + "_" + name + ")";
     if (!std::isfinite(x))
       throw std::invalid_argument("export: a constant of the header would be " + std::string(std::isnan(x) ? "NaN" : x > 0 ? "inf" : "-inf") +
-                                  " (a parameter or option too large or too small for double arithmetic); expected finite values");
+                                  which + " (a parameter or option too large or too small for double arithmetic); expected finite values");
     if (single_ && std::abs(x) > static_cast<double>(std::numeric_limits<float>::max())) {
       char v[40];
       std::snprintf(v, sizeof v, "%.6g", x);
       throw std::invalid_argument(std::string("--float: a constant of the header is ") + v +
-                                  ", beyond float's range (3.4e+38); export without --float (double)");
+                                  ", beyond float's range (3.4e+38)" + which + "; export without --float (double)");
+    }
+    // Below float's smallest subnormal a literal rounds to 0 (a C compiler says so with
+    // -Werror=overflow), and a 0 the law divides by (vs, a table's speed) would give inf.
+    if (single_ && x != 0 && static_cast<float>(x) == 0.0f) {
+      char v[40];
+      std::snprintf(v, sizeof v, "%.6g", x);
+      throw std::invalid_argument(std::string("--float: a constant of the header is ") + v +
+                                  ", below float's smallest magnitude (1.4e-45)" + which +
+                                  ": float holds it as 0; export without --float (double)");
     }
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.17g", x);
@@ -91,12 +103,13 @@ class Writer {
   /// static const REAL PREFIX_name = value;  /* unit */
   void constant(const std::string& name, double value, const std::string& what) {
     text_ += "static const " + std::string(single_ ? "float" : "double") + " " + prefix_ + "_" + name + " = " +
-             number(value) + ";" + (what.empty() ? "" : "  /* " + what + " */") + "\n";
+             number(value, name) + ";" + (what.empty() ? "" : "  /* " + what + " */") + "\n";
   }
   void array(const std::string& name, const std::vector<double>& values, const std::string& what) {
     text_ += "static const " + std::string(single_ ? "float" : "double") + " " + prefix_ + "_" + name + "[" +
              std::to_string(values.size()) + "] = {";
-    for (std::size_t i = 0; i < values.size(); ++i) text_ += (i ? ", " : "") + number(values[i]);
+    for (std::size_t i = 0; i < values.size(); ++i)
+      text_ += (i ? ", " : "") + number(values[i], name + "[" + std::to_string(i) + "]");
     text_ += "};" + (what.empty() ? std::string() : "  /* " + what + " */") + "\n";
   }
 
@@ -582,7 +595,8 @@ void feedforward(Writer& w, const FrictionLaw& law, const FeedforwardParams& p, 
    rad/s): F(vr) outside |vr| <= band, a straight line from F(-band) to F(+band) inside. */
 static inline REAL @_feedforward(REAL vr) {
   if (vr > @_ff_band || vr < -@_ff_band) return @_friction(vr);
-  return @_ff_at_minus + (@_ff_at_plus - @_ff_at_minus) * (vr + @_ff_band) / (2.0_r * @_ff_band);
+  const REAL t = 0.5_r + 0.5_r * (vr / @_ff_band);
+  return @_ff_at_minus * (1.0_r - t) + @_ff_at_plus * t;
 }
 )");  if (moves(a)) feedforward_at(w, a);
 }
@@ -759,11 +773,11 @@ std::string conditions_comment(const std::string& what, const ConditionArgs& a) 
 void feedforward_at(Writer& w, const ConditionArgs& a) {
   w.code(conditions_comment("feedforward", a) +
          "static inline REAL @_feedforward_at(REAL vr" + a.decl() + ") {\n"
-         "  REAL dFc, dFs, dFv, plus, minus;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n"
+         "  REAL dFc, dFs, dFv, plus, minus, t;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n"
          "  if (vr > @_ff_band || vr < -@_ff_band) return @_friction_moved(vr, dFc, dFs, dFv);\n"
          "  plus = @_friction_moved(@_ff_band, dFc, dFs, dFv);\n"
          "  minus = @_friction_moved(-@_ff_band, dFc, dFs, dFv);\n"
-         "  return minus + (plus - minus) * (vr + @_ff_band) / (2.0_r * @_ff_band);\n}\n");
+         "  t = 0.5_r + 0.5_r * (vr / @_ff_band);\n  return minus * (1.0_r - t) + plus * t;\n}\n");
 }
 
 void feedback_at(Writer& w, const ConditionArgs& a) {
