@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "frictionlab/format.hpp"
 #include "frictionlab/version.hpp"
 #include "../models/table_knots.hpp"
 
@@ -823,6 +824,22 @@ std::string c_header(const FrictionLaw& law, const CExportOptions& options) {
                          "' carries a position ripple, which the compensations do not take yet; export the law alone "
                          "(its header has PREFIX_ripple(q)) or without the ripple",
                      {.key = "ripple_period"});
+  // The float form of the library's rule for bristle laws (FrictionLaw::validate: sigma0 / Fc at
+  // most 1e150 in double): the rate sigma0 |v| / Fc overflows float at a finite speed when
+  // sigma0 / Fc is far beyond 1e15 (sigma0 = 2.1e38 gave -inf friction at 10 m/s in a float
+  // header). Real contacts are 1e2 to 1e9 per unit of Fc.
+  if (options.single_precision) {
+    double sigma0 = NAN, Fc = NAN;
+    for (const Parameter& p : law.parameters()) {
+      if (p.name == "sigma0") sigma0 = p.value;
+      if (p.name == "Fc") Fc = p.value;
+    }
+    constexpr double kMaxFloatStiffnessRatio = 1e15;
+    if (std::isfinite(sigma0) && !(sigma0 / Fc <= kMaxFloatStiffnessRatio))
+      throw std::invalid_argument("--float: sigma0 / Fc = " + format_number(sigma0 / Fc) +
+                                  " (1/m or 1/rad) exceeds 1e+15, where the bristle rate sigma0 |v| / Fc leaves "
+                                  "float's range at a finite speed; export without --float (double)");
+  }
   Writer w(options.prefix, options.single_precision);
   const std::string type = compensation_type(options.compensation);
   const std::string guard = upper(options.prefix) + "_FRICTION_H";

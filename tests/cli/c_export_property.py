@@ -84,14 +84,21 @@ def draw(rng):
     leaves = [("law", k) for k, v in law.items() if k != "law" and not isinstance(v, list)]
     leaves += [("law-list", k) for k, v in law.items() if isinstance(v, list)]
     leaves += [("option", k) for k in opts]
+    # Half the draws keep a value's sign and scale it (the laws' rules ask for positive values: a
+    # refused sign tests less), half are any extreme value.
+    def draw_value(old):
+        if old != 0 and rng.random() < 0.5:
+            return old * 10.0 ** rng.uniform(-300, 300)
+        return extreme(rng)
     for _ in range(rng.randint(1, 3)):
         kind, key = rng.choice(leaves)
         if kind == "law":
-            law[key] = extreme(rng)
+            law[key] = draw_value(law[key])
         elif kind == "law-list":
-            law[key][rng.randrange(len(law[key]))] = extreme(rng)
+            k = rng.randrange(len(law[key]))
+            law[key][k] = draw_value(law[key][k])
         else:
-            opts[key] = extreme(rng)
+            opts[key] = draw_value(opts[key])
     single = rng.random() < 0.5
     return law, comp, opts, single
 

@@ -69,6 +69,9 @@ cat > "$tmp/tiny.json" <<'JSON'
 JSON
 expect_fail "below float's smallest magnitude (1.4e-45) (friction_Fc)" export "$tmp/tiny.json" --c "$tmp/t.h" --float
 [ ! -e "$tmp/t.h" ] || fail "--float header of a constant that rounds to 0 written"
+# A LuGre law whose sigma0 / Fc is 2.1e38 in a float header: once -inf friction at 10 m/s.
+printf '{"law": "lugre", "sigma0": 2.1488698622776785e+38, "sigma1": 316.2, "sigma2": 0.4, "Fc": 1, "Fs": 1.5, "vs": 0.001}\n' > "$tmp/stiff.json"
+expect_fail "--float: sigma0 / Fc = 2.14887e+38 (1/m or 1/rad) exceeds 1e+15" export "$tmp/stiff.json" --c "$tmp/s.h" --float
 printf '{"law": "viscous", "Fv": 0.4}\n' > "$tmp/viscous.json"
 expect 0 "" export "$tmp/viscous.json" --c "$tmp/ff.h" --float --compensation feedforward --band 7.707630533480257e+27
 printf '#include <stdio.h>\n#include "ff.h"\nint main(void) { printf("%%.9g %%.9g\\n", (double)friction_feedforward(0.0f), (double)friction_feedforward(1e27f)); return 0; }\n' > "$tmp/ff.c"
