@@ -4,7 +4,8 @@
 # Others: make build, make docs (the documentation site in $(BUILD)/docs/html), make sanitize (tests under
 # ASan+UBSan), make bench, make install-test,
 # make coverage (the whole coverage table of idim's standard deviations, docs/coverage.md),
-# make fuzz (the libFuzzer targets of tests/fuzz, FUZZ_SECONDS each), make fuzz-merge, make clean.
+# make fuzz (the libFuzzer targets of tests/fuzz, FUZZ_SECONDS each, and the seeded property tests with
+# FUZZ_PROPERTY_CASES cases: make fuzz-properties), make fuzz-merge, make clean.
 
 BUILD      ?= build
 JOBS       ?= $(shell nproc)
@@ -19,9 +20,9 @@ export CCACHE_BASEDIR ?= $(CURDIR)
 FUZZ_BUILD        ?= build-fuzz
 FUZZ_SECONDS      ?= 600
 FUZZ_TEST_SECONDS ?= 15
-FUZZERS            = fuzz_csv fuzz_mat fuzz_scenario fuzz_law fuzz_merge
+FUZZERS            = fuzz_csv fuzz_mat fuzz_scenario fuzz_law fuzz_merge fuzz_simulate
 
-.PHONY: all deps build test docs demo sanitize bench install-test coverage gallery clean fuzz-build fuzz fuzz-test fuzz-merge
+.PHONY: all deps build test docs demo sanitize bench install-test coverage gallery clean fuzz-build fuzz fuzz-test fuzz-merge fuzz-properties
 
 all: build
 
@@ -79,9 +80,19 @@ fuzz-build: deps
 	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzzers
 
 # Replays every kept regression input, then fuzzes each target FUZZ_SECONDS (crashing inputs are
-# copied into tests/fuzz/regressions/ to be committed with the fix).
-fuzz: fuzz-build
+# copied into tests/fuzz/regressions/ to be committed with the fix); then the seeded property tests
+# of the numerics at extreme values and of the C export with many more cases than make test runs.
+fuzz: fuzz-build fuzz-properties
 	@bash tests/fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(JOBS) keep
+
+# identify.ExtremeValues.* (tests/identify/test_extreme_values.cpp) with FUZZ_PROPERTY_CASES cases,
+# and the C export property (tests/cli/contract_c_export_property.sh) with a twentieth of them, on a
+# seed drawn from the clock (printed; FRICTIONLAB_PROPERTY_SEED=N repeats a run).
+FUZZ_PROPERTY_CASES ?= 20000
+fuzz-properties: build
+	@FRICTIONLAB_PROPERTY_CASES=$(FUZZ_PROPERTY_CASES) $(BUILD)/tests/test_identify --gtest_filter='ExtremeValues.*'
+	@FRICTIONLAB_C_EXPORT_CASES=$$(( $(FUZZ_PROPERTY_CASES) / 20 )) FRICTIONLAB_PROPERTY_SEED=$${FRICTIONLAB_PROPERTY_SEED:-$$(date +%s)} \
+	  bash tests/cli/contract_c_export_property.sh $(BUILD)/app/frictionlab $(CURDIR)
 
 # The short run of make test: the regression inputs and the corpus replayed, then a few thousand
 # fixed-seed inputs per target (at most FUZZ_TEST_SECONDS each), one PASS/FAIL line each.

@@ -10,9 +10,11 @@
 #include <set>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 #include "frictionlab/io/json_text.hpp"
 #include "frictionlab/format.hpp"
+#include "finite_output.hpp"
 #include "io/atomic_write.hpp"
 #include "report/figure.hpp"
 #include "io/sha256.hpp"
@@ -402,6 +404,9 @@ int run_identify_batch(const std::vector<std::string>& data, const BatchOptions&
   std::vector<BatchRow> rows = run_batch(jobs, o.jobs, identify, o.date_from, date_of_column);
   std::size_t ok = 0;
   for (auto& r : rows) {
+    // Numbers or an error, never both (finite_output.hpp): a file whose figures are not finite is
+    // an error row, not an ok row with empty cells.
+    r.result = finite_or_error(std::move(r.result), "");
     ok += r.result.ok();
     if (r.result.method.empty()) r.result.method = o.method;
   }

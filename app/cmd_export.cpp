@@ -260,9 +260,12 @@ Handler register_export(CLI::App& app) {
     try {
       text = c_header(m.law, o);
     } catch (const std::invalid_argument& e) {
+      // The compensation's own refusals are named as its; a constant out of the header type's
+      // range (--float, export:) may come from the law as well.
       const std::string what = e.what();
       const bool prefix = what.rfind("prefix", 0) == 0;
-      throw std::invalid_argument(prefix ? "--" + what : a->model + ": --compensation " + what);
+      const bool constant = what.rfind("--float", 0) == 0 || what.rfind("export:", 0) == 0;
+      throw std::invalid_argument(prefix ? "--" + what : a->model + (constant ? ": " : ": --compensation ") + what);
     }
     if (a->output == "-") {
       std::cout << text;

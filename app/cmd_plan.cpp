@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "frictionlab/analysis/plan/plan.hpp"
 #include "frictionlab/format.hpp"
+#include "finite_output.hpp"
 #include "io/atomic_write.hpp"
 #include "frictionlab/scenario/plan_files.hpp"
 #include "output.hpp"
@@ -98,6 +99,14 @@ int run(const PlanArgs& a) {
                          "current=2e-4,velocity=0.5");
   const std::string text = text_of(r);
   const std::string json = plan_to_json(r, o, a.profile) + "\n";
+  // Numbers or an error, never both (finite_output.hpp): the text, the profile and the JSON.
+  std::string profile;
+  if (r.ok) {
+    profile = r.profile.to_csv();
+    require_finite_output(text, "");
+    require_finite_output(profile, a.profile);
+    require_finite_output(json, a.json);
+  }
   (a.json == "-" ? std::cerr : std::cout) << text;
   if (!r.ok) {
     if (a.json == "-") std::cout << plan_to_json(r, o, a.profile, -1) << "\n";
@@ -105,7 +114,7 @@ int run(const PlanArgs& a) {
     print_error(r.message);
     return 2;
   }
-  write_file_atomic(a.profile, r.profile.to_csv(), {a.overwrite});
+  write_file_atomic(a.profile, profile, {a.overwrite});
   if (a.json == "-") std::cout << plan_to_json(r, o, a.profile, -1) << "\n";
   else if (!a.json.empty()) write_file_atomic(a.json, json, {a.overwrite});
   return 0;

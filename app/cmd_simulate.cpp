@@ -11,6 +11,7 @@
 #include "figures.hpp"
 #include "report/figure.hpp"
 #include "output.hpp"
+#include "finite_output.hpp"
 #include "io/atomic_write.hpp"
 #include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/simulate/output_size.hpp"
@@ -150,13 +151,19 @@ Handler register_simulate(CLI::App& app) {
       std::cerr << "figure     " << files.figure << " (data " << files.data << ", script " << files.script << ")\n";
     }
     progress_stop();
+    // Numbers or an error, never both: simulate() refuses non-finite columns itself; this is the
+    // check every writer of numbers runs (finite_output.hpp).
+    const std::string text = summary(args->scenario, sc, tr);
+    require_finite_output(text, "");
     if (args->output.empty()) {
-      std::cout << summary(args->scenario, sc, tr);
+      std::cout << text;
     } else {
+      const std::string csv = tr.to_csv();
+      require_finite_output(csv, args->output);
       AtomicWriteOptions w;
       w.overwrite = args->overwrite;
-      write_file_atomic(args->output, tr.to_csv(), w);
-      std::cerr << summary(args->scenario, sc, tr) << "wrote      " << args->output << "\n";
+      write_file_atomic(args->output, csv, w);
+      std::cerr << text << "wrote      " << args->output << "\n";
     }
     return 0;
   };

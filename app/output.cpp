@@ -23,6 +23,7 @@
 #include "frictionlab/error.hpp"
 #include "frictionlab/io/json_text.hpp"
 #include "frictionlab/scenario/scenario.hpp"
+#include "finite_output.hpp"
 #include "io/atomic_write.hpp"
 #include "report/figure.hpp"
 #include "report/report.hpp"
@@ -715,7 +716,8 @@ std::string result_text(const Result& r) {
   for (const auto& p : r.parameters) w = std::max(w, p.name.size());
   for (const auto& p : r.parameters) {
     s << "  " << std::left << std::setw(static_cast<int>(w)) << p.name << " = " << std::right << std::setw(12)
-      << format_number(p.value, 6) << "  +- " << std::left << std::setw(10) << format_number(p.std, 3) << " " << p.unit
+      << format_number(p.value, 6) << "  +- " << std::left << std::setw(10)
+      << (std::isfinite(p.std) ? format_number(p.std, 3) : std::string("n/a")) << " " << p.unit
       << (p.flag.empty() ? "" : "  (" + p.flag + ")") << "\n";
   }
   // The fitted signal's unit comes with the result (set by its method: identify/method.hpp).
@@ -730,7 +732,7 @@ std::string result_text(const Result& r) {
     s << "condition number " << format_number(r.diagnostics.condition_number, 4) << "\n";
   for (const auto& [name, group] : r.diagnostics.groups) {
     s << name << ":";
-    for (const auto& [k, v] : group) s << " " << k << " = " << format_number(v, 6);
+    for (const auto& [k, v] : group) s << " " << k << " = " << (std::isnan(v) ? std::string("n/a") : format_number(v, 6));
     s << "\n";
   }
   for (const auto& [name, word] : r.diagnostics.texts) s << name << ": " << word << "\n";
@@ -738,9 +740,13 @@ std::string result_text(const Result& r) {
   return s.str();
 }
 
-int emit(const Result& r, const OutputOptions& o, const std::string& text_override,
+int emit(const Result& result, const OutputOptions& o, const std::string& text_override,
          const std::vector<ReportFigure>* figures) {
   progress_stage("writing results");
+  // Numbers or an error, never both: a figure or a word of the text that is not finite makes the
+  // result an error before anything is written (finite_output.hpp).
+  const std::string text = text_override.empty() ? result_text(result) : text_override;
+  const Result r = finite_or_error(result, text);
   std::ostream& note = o.json == "-" ? std::cerr : std::cout;
   if (!r.ok()) {
     // The data gave no answer: one error line (naming the data file), then the JSON and the
@@ -750,7 +756,7 @@ int emit(const Result& r, const OutputOptions& o, const std::string& text_overri
     if (!o.report.empty()) write_report(r, {}, report_info(r, o), o.report, o.overwrite);
   } else {
     // Text goes to stderr when stdout carries the JSON.
-    (o.json == "-" ? std::cerr : std::cout) << (text_override.empty() ? result_text(r) : text_override);
+    (o.json == "-" ? std::cerr : std::cout) << text;
     // The figure and the report first: they run gnuplot and may fail; the JSON, written last,
     // then never says ok for a run that failed (the error JSON replaces it, see fail()).
     // The method's figures (app/methods/), or the ones the command drew itself.

@@ -2,9 +2,9 @@
 // The work and memory budget: every command computes, before it starts, the memory its largest
 // allocation needs (bytes) and the work it will do (work units: samples, solver steps, runs, grid
 // points, bytes read), and refuses input that exceeds the budget with an InputError naming the key
-// or option and the size (code budget.memory or budget.work; the CLI exits 2). The budget is
-// counted in work, never in seconds, so the same input is accepted or refused on every machine
-// with the same memory.
+// or option and the size (code budget.memory or budget.work, in the table of error.hpp; the CLI
+// exits 2). The budget is counted in work, never in seconds, so the same input is accepted or
+// refused on every machine with the same memory.
 //
 // Defaults: memory, half of what this process may use (the cgroup's memory.max when there is one,
 // else the physical memory); work, 1e9 units per command (a simulation of 1e9 output rows or solver
@@ -20,14 +20,6 @@
 
 #include "frictionlab/export.hpp"
 namespace frictionlab FRICTIONLAB_API {
-
-/// The error codes of a refusal (InputError, exit status 2), beside the table of error.hpp:
-/// | budget.memory | the run would need more memory than the budget | file, key, option, value |
-/// | budget.work   | the run would do more work (samples, steps, runs, nodes, bytes) than the budget | file, key, option, value |
-namespace errc {
-inline constexpr const char* budget_memory = "budget.memory";
-inline constexpr const char* budget_work = "budget.work";
-}  // namespace errc
 
 /// The default work budget (work units) of one command at factor 1.
 inline constexpr double kDefaultWorkBudget = 1e9;

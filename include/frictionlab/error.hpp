@@ -48,6 +48,9 @@
 // |                        | unwritable directory, a block device or socket, a link without       |        |
 // |                        | --overwrite                                                          |        |
 // | output.write_failed    | (InternalError) writing an output failed: disk full, I/O error       | file |
+// | budget.memory          | the run would need more memory than the memory budget (budget.hpp)   | file, key, option, value |
+// | budget.work            | the run would do more work (samples, solver steps, runs, YAML nodes, | file, key, option, value |
+// |                        | bytes read) than the work budget (budget.hpp)                         |        |
 //
 // Field meanings: `file` the file the fault is in (for output.* the output path); `row` the
 // 1-based line of a CSV file, or the 1-based sample when the data has no lines; `column` a
@@ -93,6 +96,8 @@ inline constexpr const char* output_is_input = "output.is_input";
 inline constexpr const char* output_duplicate = "output.duplicate";
 inline constexpr const char* output_not_writable = "output.not_writable";
 inline constexpr const char* output_write_failed = "output.write_failed";
+inline constexpr const char* budget_memory = "budget.memory";
+inline constexpr const char* budget_work = "budget.work";
 }  // namespace errc
 
 /// Where an error lies. Empty strings and an empty row mean "does not apply".

@@ -72,16 +72,21 @@ std::optional<std::array<double, 3>> circle_fit(std::span<const double> x, std::
   double mx = 0, my = 0;
   for (Eigen::Index i = 0; i < n; ++i) mx += x[i], my += y[i];
   mx /= static_cast<double>(n), my /= static_cast<double>(n);
+  // And in units of the points' spread, so that the fit does not depend on the unit: without it a
+  // circle of radius 1e48 m had a column of ones 1e-48 of the others and counted as a line, and
+  // u^2 + v^2 overflowed for radii beyond 1e154.
+  double scale = 0;
+  for (Eigen::Index i = 0; i < n; ++i) scale = std::max({scale, std::abs(x[i] - mx), std::abs(y[i] - my)});
+  if (!(scale > 0) || !std::isfinite(scale)) return std::nullopt;
   Eigen::MatrixXd A(n, 3);
   Eigen::VectorXd b(n);
   for (Eigen::Index i = 0; i < n; ++i) {
-    const double u = x[i] - mx, v = y[i] - my;
+    const double u = (x[i] - mx) / scale, v = (y[i] - my) / scale;
     A.row(i) << u, v, 1.0;
     b(i) = -(u * u + v * v);
   }
   // Points on a line leave the x and y columns dependent up to roundoff: a pivot below 1e-10 of
-  // the largest counts as zero (a circle of radius R m below 1 m has pivots about R / sqrt(2) of the
-  // largest, the column of ones: far above for any machine's circle).
+  // the largest counts as zero (scaled, a circle's columns have pivots of order 1).
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A.rows(), A.cols());
   qr.setThreshold(1e-10);
   qr.compute(A);
@@ -89,7 +94,7 @@ std::optional<std::array<double, 3>> circle_fit(std::span<const double> x, std::
   const Eigen::Vector3d p = qr.solve(b);
   const double cu = -p(0) / 2, cv = -p(1) / 2, r2 = cu * cu + cv * cv - p(2);
   if (!(r2 > 0)) return std::nullopt;
-  return std::array<double, 3>{cu + mx, cv + my, std::sqrt(r2)};
+  return std::array<double, 3>{cu * scale + mx, cv * scale + my, std::sqrt(r2) * scale};
 }
 
 }  // namespace

@@ -17,7 +17,11 @@ double FeedforwardCompensation::inside(double vr, const Conditions& c) const {
   const bool moves = law_.effects().moves_levels();
   const double plus = moves ? law_.sliding(p_.band, c) : at_plus_;
   const double minus = moves ? law_.sliding(-p_.band, c) : at_minus_;
-  return minus + (plus - minus) * (vr + p_.band) / (2.0 * p_.band);
+  // The share t of the way from -band to +band, then the two ends weighted by it: no product or
+  // difference of the ends that could overflow where both ends and the band are finite (a band of
+  // 7.7e27 once gave inf at vr = 0 in a float header).
+  const double t = 0.5 + 0.5 * (vr / p_.band);
+  return minus * (1.0 - t) + plus * t;
 }
 
 bool FeedforwardCompensation::jacobian(const CompensatorInput&, std::span<const double>, std::span<double> doutput,

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "frictionlab/format.hpp"
 #include "frictionlab/version.hpp"
 #include "../models/table_knots.hpp"
 
@@ -34,16 +35,28 @@ class Writer {
   /// A C literal of `x` with full round-trip precision (%.17g), as a float literal in float mode.
   /// \throws std::invalid_argument for a value the target type cannot hold: not finite (a
   /// band of 1e307 gives -inf), or beyond float's range in float mode (a C compiler refuses the
-  /// literal with -Werror=overflow).
-  std::string number(double x) const {
+  /// literal with -Werror=overflow), or nonzero and below float's smallest magnitude in float
+  /// mode (the literal would round to 0).
+  /// `name` (the constant's, without the prefix) is named in the messages when given.
+  std::string number(double x, const std::string& name = "") const {
+    const std::string which = name.empty() ? "" : " (" + prefix_ + "_" + name + ")";
     if (!std::isfinite(x))
       throw std::invalid_argument("export: a constant of the header would be " + std::string(std::isnan(x) ? "NaN" : x > 0 ? "inf" : "-inf") +
-                                  " (a parameter or option too large or too small for double arithmetic); expected finite values");
+                                  which + " (a parameter or option too large or too small for double arithmetic); expected finite values");
     if (single_ && std::abs(x) > static_cast<double>(std::numeric_limits<float>::max())) {
       char v[40];
       std::snprintf(v, sizeof v, "%.6g", x);
       throw std::invalid_argument(std::string("--float: a constant of the header is ") + v +
-                                  ", beyond float's range (3.4e+38); export without --float (double)");
+                                  ", beyond float's range (3.4e+38)" + which + "; export without --float (double)");
+    }
+    // Below float's smallest subnormal a literal rounds to 0 (a C compiler says so with
+    // -Werror=overflow), and a 0 the law divides by (vs, a table's speed) would give inf.
+    if (single_ && x != 0 && static_cast<float>(x) == 0.0f) {
+      char v[40];
+      std::snprintf(v, sizeof v, "%.6g", x);
+      throw std::invalid_argument(std::string("--float: a constant of the header is ") + v +
+                                  ", below float's smallest magnitude (1.4e-45)" + which +
+                                  ": float holds it as 0; export without --float (double)");
     }
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.17g", x);
@@ -91,12 +104,13 @@ class Writer {
   /// static const REAL PREFIX_name = value;  /* unit */
   void constant(const std::string& name, double value, const std::string& what) {
     text_ += "static const " + std::string(single_ ? "float" : "double") + " " + prefix_ + "_" + name + " = " +
-             number(value) + ";" + (what.empty() ? "" : "  /* " + what + " */") + "\n";
+             number(value, name) + ";" + (what.empty() ? "" : "  /* " + what + " */") + "\n";
   }
   void array(const std::string& name, const std::vector<double>& values, const std::string& what) {
     text_ += "static const " + std::string(single_ ? "float" : "double") + " " + prefix_ + "_" + name + "[" +
              std::to_string(values.size()) + "] = {";
-    for (std::size_t i = 0; i < values.size(); ++i) text_ += (i ? ", " : "") + number(values[i]);
+    for (std::size_t i = 0; i < values.size(); ++i)
+      text_ += (i ? ", " : "") + number(values[i], name + "[" + std::to_string(i) + "]");
     text_ += "};" + (what.empty() ? std::string() : "  /* " + what + " */") + "\n";
   }
 
@@ -583,7 +597,8 @@ void feedforward(Writer& w, const FrictionLaw& law, const FeedforwardParams& p, 
    rad/s): F(vr) outside |vr| <= band, a straight line from F(-band) to F(+band) inside. */
 static inline REAL @_feedforward(REAL vr) {
   if (vr > @_ff_band || vr < -@_ff_band) return @_friction(vr);
-  return @_ff_at_minus + (@_ff_at_plus - @_ff_at_minus) * (vr + @_ff_band) / (2.0_r * @_ff_band);
+  const REAL t = 0.5_r + 0.5_r * (vr / @_ff_band);
+  return @_ff_at_minus * (1.0_r - t) + @_ff_at_plus * t;
 }
 )");
   if (compensation_at(a)) feedforward_at(w, a);
@@ -776,11 +791,11 @@ std::string compensation_return(const ConditionArgs& a) { return a.ripple ? "  r
 void feedforward_at(Writer& w, const ConditionArgs& a) {
   std::string body;
   if (moves(a))
-    body = "  REAL dFc, dFs, dFv, plus, minus, f;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n"
+    body = "  REAL dFc, dFs, dFv, plus, minus, t, f;\n  @_level_shifts(" + a.pass() + ", &dFc, &dFs, &dFv);\n"
            "  if (vr > @_ff_band || vr < -@_ff_band) {\n    f = @_friction_moved(vr, dFc, dFs, dFv);\n  } else {\n"
            "    plus = @_friction_moved(@_ff_band, dFc, dFs, dFv);\n"
            "    minus = @_friction_moved(-@_ff_band, dFc, dFs, dFv);\n"
-           "    f = minus + (plus - minus) * (vr + @_ff_band) / (2.0_r * @_ff_band);\n  }\n";
+           "    t = 0.5_r + 0.5_r * (vr / @_ff_band);\n    f = minus * (1.0_r - t) + plus * t;\n  }\n";
   else
     body = "  const REAL f = @_feedforward(vr);\n";
   w.code(conditions_comment("feedforward", a, "reference position") + "static inline REAL @_feedforward_at(REAL vr" +
@@ -829,6 +844,22 @@ std::string c_header(const FrictionLaw& law, const CExportOptions& options) {
   // A position ripple goes into the feedforward and feedback as PREFIX_feedforward_at(vr, q, ...),
   // PREFIX_feedback_at(v, q, ...); the observers run as the library's do (see their comments).
   const std::optional<PositionRipple> ripple_effect = law.effects().ripple;
+  // The float form of the library's rule for bristle laws (FrictionLaw::validate: sigma0 / Fc at
+  // most 1e150 in double): the rate sigma0 |v| / Fc overflows float at a finite speed when
+  // sigma0 / Fc is far beyond 1e15 (sigma0 = 2.1e38 gave -inf friction at 10 m/s in a float
+  // header). Real contacts are 1e2 to 1e9 per unit of Fc.
+  if (options.single_precision) {
+    double sigma0 = NAN, Fc = NAN;
+    for (const Parameter& p : law.parameters()) {
+      if (p.name == "sigma0") sigma0 = p.value;
+      if (p.name == "Fc") Fc = p.value;
+    }
+    constexpr double kMaxFloatStiffnessRatio = 1e15;
+    if (std::isfinite(sigma0) && !(sigma0 / Fc <= kMaxFloatStiffnessRatio))
+      throw std::invalid_argument("--float: sigma0 / Fc = " + format_number(sigma0 / Fc) +
+                                  " (1/m or 1/rad) exceeds 1e+15, where the bristle rate sigma0 |v| / Fc leaves "
+                                  "float's range at a finite speed; export without --float (double)");
+  }
   Writer w(options.prefix, options.single_precision);
   const std::string type = compensation_type(options.compensation);
   const std::string guard = upper(options.prefix) + "_FRICTION_H";

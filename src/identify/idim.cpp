@@ -12,6 +12,7 @@
 #include "frictionlab/error.hpp"
 #include "frictionlab/identify/adequacy.hpp"
 #include "frictionlab/identify/covariance.hpp"
+#include "frictionlab/identify/finite_result.hpp"
 #include "frictionlab/identify/method.hpp"
 #include "idim_stribeck.hpp"
 #include "method_support.hpp"
@@ -990,7 +991,9 @@ Result identify_idim(const IdimData& data, const IdimOptions& options) {
   return identify_idim(data, options, workspace);
 }
 
-Result identify_idim(const IdimData& data, const IdimOptions& options_in, IdimWorkspace& workspace) {
+namespace {
+
+Result identify_idim_unchecked(const IdimData& data, const IdimOptions& options_in, IdimWorkspace& workspace) {
   const double dt = checked_step(data);
   if (options_in.iv.enabled) detail::check_idim_iv_inputs(data, options_in);
   const IdimOptions options = resolved(options_in, data, dt);
@@ -1049,6 +1052,14 @@ Result identify_idim(const IdimData& data, const IdimOptions& options_in, IdimWo
     describe_conditions(r, data, o);
   }
   return r;
+}
+
+}  // namespace
+
+// Numbers or an error, never both (identify/finite_result.hpp): sums that overflow or underflow
+// in double precision make an error, not an ok result with inf in its std or figures.
+Result identify_idim(const IdimData& data, const IdimOptions& options, IdimWorkspace& workspace) {
+  return finite_or_error(identify_idim_unchecked(data, options, workspace));
 }
 
 namespace detail {

@@ -1,4 +1,5 @@
 #include "frictionlab/identify/sweep.hpp"
+#include "frictionlab/identify/finite_result.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -345,9 +346,7 @@ void add_sweep_adequacy(Result& r, const SweepData& d, const std::vector<SweepPo
                                    std::string(unit(Quantity::velocity, o.axis)), ao));
 }
 
-}  // namespace
-
-Result identify_sweep(const SweepData& d, const SweepOptions& o) {
+Result identify_sweep_unchecked(const SweepData& d, const SweepOptions& o) {
   const auto points = sweep_points(d, o);
   const std::string model = model_name(o.fit.model);
   Result r = make_result(MethodId::sweep, model, o.axis);
@@ -494,5 +493,11 @@ Result identify_sweep(const SweepData& d, const SweepOptions& o) {
   r.diagnostics.numbers["min_speed"] = v.cwiseAbs().minCoeff();
   return r;
 }
+
+}  // namespace
+
+// Numbers or an error, never both (identify/finite_result.hpp): figures that overflow double
+// precision (the residual of a force offset of 1e153) make an error, not an ok result with inf.
+Result identify_sweep(const SweepData& d, const SweepOptions& o) { return finite_or_error(identify_sweep_unchecked(d, o)); }
 
 }  // namespace frictionlab

@@ -51,7 +51,8 @@ done
 
 "$exe" identify sweep "$tmp/fast.csv" --json "$tmp/fast.json" > "$tmp/fast.txt"
 grep -q "Stribeck part is not determined by the data" "$tmp/fast.txt" || { echo "FAIL: no warning"; cat "$tmp/fast.txt"; exit 1; }
-grep -Eq "^  vs .*nan .*\((undetermined|at bound)\)" "$tmp/fast.txt" || { echo "FAIL: vs not marked"; cat "$tmp/fast.txt"; exit 1; }
+grep -Eq "^  vs .*n/a .*\((undetermined|at bound)\)" "$tmp/fast.txt" || { echo "FAIL: vs not marked"; cat "$tmp/fast.txt"; exit 1; }
+! grep -Eqiw "[-+]?(nan|inf)" "$tmp/fast.txt" || { echo "FAIL: nan or inf in the text of an ok run"; cat "$tmp/fast.txt"; exit 1; }
 /usr/bin/python3 - "$tmp/fast.json" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))

@@ -13,7 +13,7 @@ set -uo pipefail
 
 build=$1 seconds=$2 jobs=${3:-1} keep=${4:-}
 here=$(cd "$(dirname "$0")" && pwd)
-targets=(fuzz_csv fuzz_mat fuzz_scenario fuzz_law fuzz_merge)
+targets=(fuzz_csv fuzz_mat fuzz_scenario fuzz_law fuzz_merge fuzz_simulate)
 out="$build/fuzz"
 mkdir -p "$out"
 
@@ -40,6 +40,7 @@ fixed_runs() {
     fuzz_scenario) echo 4000 ;;
     fuzz_law) echo 3500 ;;
     fuzz_merge) echo 3000 ;;
+    fuzz_simulate) echo 1500 ;;
   esac
 }
 

@@ -1,0 +1,31 @@
+#pragma once
+// Numbers or an error, never both (docs/guarantees.md): an identification whose status is ok has
+// a finite number for every figure it reports. Values or scales beyond what double precision holds
+// (a force offset of 1e167, whose squares overflow the fit's sums; forces of 1e-162, whose squares
+// underflow) can make a fit's covariance or its residual figures overflow while its estimates stay
+// finite; such a result is an error that names the figure, not an ok result with inf in it.
+//
+// What may be NaN in an ok result, as "not determined" or "not defined" (JSON null, text "n/a"):
+// a parameter's std (undetermined or at a bound), the condition number (no regressor matrix), a
+// diagnostics number or group entry (the autocorrelation of a zero residual). inf is never one.
+
+#include <string>
+
+#include "frictionlab/identify/result.hpp"
+
+#include "frictionlab/export.hpp"
+namespace frictionlab FRICTIONLAB_API {
+
+/// The first figure of an ok result that is not a finite number where one belongs, in words
+/// ("parameter Fc = inf", "std(M) = inf", "fit rmse = nan", "diagnostics adequacy.residual_std =
+/// inf"): the parameters' values and std, the fit and validation figures (when they count
+/// samples), diagnostics numbers, groups and lists (inf only, see above). Empty when there is
+/// none, or when the status is error. Never throws.
+std::string non_finite_figure(const Result& r);
+
+/// `r` with status error and a message naming the figure ("FILE: METHOD: std(M) = inf is not a
+/// finite number (values or scales beyond what double precision holds); the data cannot give an
+/// answer") when it is ok and non_finite_figure(r) finds one; `r` as it is otherwise.
+Result finite_or_error(Result r);
+
+}  // namespace frictionlab
