@@ -451,6 +451,21 @@ TEST(CExportErrors, CompensationThatDoesNotFitAndBadParametersNameTheKey) {
 namespace frictionlab {
 namespace {
 
+// Load terms (one coefficient or two) and a temperature term over [10, 60] degC, for the exports
+// at conditions.
+LawEffects load_and_temperature(bool two_load_coefficients) {
+  LawEffects e;
+  e.load = LoadDependence{two_load_coefficients ? 0.08 : 0.05, 0.05};
+  TemperatureDependence t;
+  t.T_ref = 30.0;
+  t.Fc_per_K = -0.004;
+  t.Fv_per_K = -0.006;
+  t.T_min = 10.0;
+  t.T_max = 60.0;
+  e.temperature = t;
+  return e;
+}
+
 // A law with a position ripple (two harmonics, the second with a zero cosine amplitude): the
 // header's PREFIX_ripple(q) and PREFIX_friction_at(v, q) (prefix "friction": friction_ripple,
 // friction_friction_at) against the library's ripple(q) and sliding(v) + ripple(q) over positions
@@ -494,15 +509,7 @@ TEST_P(RippleExport, RippleAndFrictionAtMatchLibrary) {
 TEST_P(RippleExport, CompensationsAddTheRippleAtTheirPositionAsTheLibrary) {
   const bool single = GetParam();
   const std::string type = single ? "float" : "double";
-  LawEffects with_conditions;
-  with_conditions.load = LoadDependence{0.08, 0.05};
-  TemperatureDependence t;
-  t.T_ref = 30.0;
-  t.Fc_per_K = -0.004;
-  t.Fv_per_K = -0.006;
-  t.T_min = 10.0;
-  t.T_max = 60.0;
-  with_conditions.temperature = t;
+  LawEffects with_conditions = load_and_temperature(true);
   with_conditions.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}};
   const FrictionLaw both = FrictionLaw(Stribeck{1.0, 1.5, 0.001, 1.0, 0.4}).with_effects(with_conditions);
   // Velocities through both bands (2e-3 and 5e-4 m/s) and beyond; positions across five periods;
@@ -576,19 +583,6 @@ INSTANTIATE_TEST_SUITE_P(BothPrecisions, RippleExport, ::testing::Bool());
 // FeedforwardCompensation / FeedbackCompensation::force(v, c), both precisions, to expect_close's
 // tolerances (kRelTol, kFloatTol: the same formulas in the same order as the plain laws').
 class EffectsExport : public ::testing::TestWithParam<bool> {};
-
-LawEffects load_and_temperature(bool two_load_coefficients) {
-  LawEffects e;
-  e.load = LoadDependence{two_load_coefficients ? 0.08 : 0.05, 0.05};
-  TemperatureDependence t;
-  t.T_ref = 30.0;
-  t.Fc_per_K = -0.004;
-  t.Fv_per_K = -0.006;
-  t.T_min = 10.0;
-  t.T_max = 60.0;
-  e.temperature = t;
-  return e;
-}
 
 struct EffectsGrid {
   std::vector<double> v, q, load, T;
