@@ -226,8 +226,6 @@ class Engine {
     g_prev_.assign(static_cast<std::size_t>(ne_), 0.0);
     g_now_.assign(static_cast<std::size_t>(ne_), 0.0);
     for (int e = 0; e < ne_; ++e) any_guard_ = any_guard_ || plant.guard_event(e);
-    // Guards (a force between bodies) may depend on the friction: it is computed for them.
-    events_need_friction_ = any_guard_;
     // The states that are no contact's position or velocity (integrated by explicit Euler in
     // fixed-step mode, unless the plant's fixed_step_update rewrites them).
     for (int i = 0; i < np_; ++i) {
@@ -431,6 +429,13 @@ class Engine {
     return b.law->sliding(v, c) + r;
   }
 
+  // The signals of body b's environment that are inputs of the run (a load over time, a
+  // temperature log), null where it has none: their corners and step limits are the run's too.
+  static std::array<const InputSignal*, 2> condition_signals(const Body& b) {
+    if (!b.env) return {nullptr, nullptr};
+    return {b.env->load.signal ? &*b.env->load.signal : nullptr, b.env->temperature_log ? &*b.env->temperature_log : nullptr};
+  }
+
   // The breakaway levels of body b (positive, negative) at time t and effective state x.
   std::pair<double, double> levels(const Body& b, double t, std::span<const double> x, const double* y) const {
     if (!b.cond) return {b.fbp, b.fbn};
@@ -526,7 +531,8 @@ class Engine {
       }
     }
     if (ne_ > 0) {
-      if (events_need_friction_)
+      // Guards (a force between bodies) may depend on the friction: it is computed for them.
+      if (any_guard_)
         for (std::size_t k = 0; k < contacts<One>(); ++k) friction_[k] = friction_of(bodies_[k], t, x, y);
       plant_.events(t, x, u_, friction_, std::span<double>(g + (hybrid_ ? 2 * nc_ : 0), static_cast<std::size_t>(ne_)));
     }
@@ -871,10 +877,8 @@ class Engine {
     for (const InputSignal& in : inputs_)
       if (in.max_step() > 0) hmax = hmax > 0 ? std::min(hmax, in.max_step()) : in.max_step();
     for (const Body& b : bodies_)
-      if (b.env)
-        for (const auto* signal : {b.env->load.signal ? &*b.env->load.signal : nullptr,
-                                   b.env->temperature_log ? &*b.env->temperature_log : nullptr})
-          if (signal && signal->max_step() > 0) hmax = hmax > 0 ? std::min(hmax, signal->max_step()) : signal->max_step();
+      for (const InputSignal* signal : condition_signals(b))
+        if (signal && signal->max_step() > 0) hmax = hmax > 0 ? std::min(hmax, signal->max_step()) : signal->max_step();
     if (hmax > 0) CVodeSetMaxStep(sd_.mem, hmax);
     if (nroots_ > 0) {
       if (CVodeRootInit(sd_.mem, nroots_, &Engine::roots_cb) != CV_SUCCESS) fail(0.0, "CVodeRootInit: " + error_);
@@ -972,12 +976,10 @@ class Engine {
     std::vector<std::pair<double, char>> all;
     for (const InputSignal& in : inputs_)
       for (double c : in.breakpoints(0.0, o_.duration)) all.emplace_back(c, 0);
-    for (const Body& b : bodies_)  // a load's corners (steps of a load profile) too
-      if (b.env)
-        for (const auto* signal : {b.env->load.signal ? &*b.env->load.signal : nullptr,
-                                   b.env->temperature_log ? &*b.env->temperature_log : nullptr})
-          if (signal)
-            for (double c : signal->breakpoints(0.0, o_.duration)) all.emplace_back(c, 0);
+    for (const Body& b : bodies_)  // a load's and a temperature log's corners too
+      for (const InputSignal* signal : condition_signals(b))
+        if (signal)
+          for (double c : signal->breakpoints(0.0, o_.duration)) all.emplace_back(c, 0);
     if (sample_period_ > 0) {
       for (long k = 1;; ++k) {
         const double ts = static_cast<double>(k) * sample_period_;  // same product as a table built as k * dt
@@ -1071,15 +1073,13 @@ class Engine {
     for (int round = 0;; ++round) {
       follow_velocity_jumps(tr, t, y);
       if (!any_guard_ || round == kMaxGuardRounds) break;
-      bool fired = false;
       const std::vector<int> negative = negative_guards(t, y);
-      if (!negative.empty()) remember_velocities(y);
+      if (negative.empty()) break;
+      remember_velocities(y);
       for (int e : negative) {
         plant_.on_event(t, std::span<double>(y, static_cast<std::size_t>(np_)), u_, e);
         tr.plant_events.push_back({t, e});
-        fired = true;
       }
-      if (!fired) break;
     }
     settle_stuck(tr, t, y);
   }
@@ -1289,7 +1289,6 @@ class Engine {
   bool any_cond_ = false;    // some body's friction depends on conditions (load, temperature, ripple)
   bool kinematic_ = false;   // the plant imposes the velocity (plant_.kinematic(), asked once)
   bool any_guard_ = false;   // some plant event is a guard (Plant::guard_event)
-  bool events_need_friction_ = false;  // the plant's events are given the contacts' friction
   std::vector<double> velocities_before_;  // each contact's velocity before the plant's events
   // Rounds of guards fired at one instant before the engine goes on (an impact, then the
   // separation it cannot hold, then nothing more).
