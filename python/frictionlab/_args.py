@@ -32,7 +32,7 @@ def _nan(function, name, x):
 
 def _option_table(method):
     """The option table of ``method`` (a list of dicts: name, keyword, type, unit, default, help,
-    expected, required, deprecated), as the library declares it (frictionlab/identify/method.hpp)."""
+    expected, required, deprecated, applies), as the library declares it (frictionlab/identify/method.hpp)."""
     for m in _core._methods():
         if m["name"] == method:
             return m["options"]
@@ -82,10 +82,13 @@ def _method_options(method, function, options, stacklevel=3):
 
 def _options_doc(method):
     """The options part of a method function's docstring, from the option table."""
-    lines = ["", "    Options (keyword: meaning [unit; default]; from the option table, as the command line's flags):"]
+    lines = ["", "    Options (keyword: meaning [unit; default; when it applies]; from the option table, as the "
+                 "command line's flags):"]
     for o in _option_table(method):
+        # "applies with iv=True": the table's conditions in the words `frictionlab identify METHOD
+        # --help` prints, keywords for flags (applies_text, identify/option_applies.hpp).
         notes = [x for x in (o["unit"], "required" if o["required"] else
-                             (f"default {o['default']}" if o["default"] is not None else "")) if x]
+                             (f"default {o['default']}" if o["default"] is not None else ""), o["applies"]) if x]
         lines.append(f"      {o['keyword']}: {o['help']}" + (f" [{'; '.join(notes)}]" if notes else ""))
         if o["deprecated"]:
             lines.append(f"        (formerly {', '.join(o['deprecated'])}: still accepted, deprecated)")

@@ -3,6 +3,7 @@
 // are result.cpp; the keyword API is python/frictionlab/identify.py.
 #include "cancellable.hpp"
 #include "frictionlab/identify/method.hpp"
+#include "frictionlab/identify/option_applies.hpp"
 #include "frictionlab/identify/static_fit.hpp"
 #include "methods/method.hpp"
 #include "result.hpp"
@@ -102,6 +103,9 @@ void init_identify(py::module_& m) {
         od["expected"] = o.expected();
         od["required"] = o.required;
         od["deprecated"] = o.deprecated_keywords;
+        // When it applies, from the table's conditions: the words the CLI's --help prints, with
+        // keywords for flags ("applies with iv=True"); "" when always.
+        od["applies"] = applies_text(o, info.options, AppliesStyle::python);
         options.append(od);
       }
       d["options"] = options;

@@ -88,7 +88,7 @@ std::string options_markdown() {
       if (!o.required && o.default_value) def = std::string("`").append(option_text(*o.default_value)).append("`");
       md << "| `--" << o.name << "` | `" << o.keyword() << "` | " << to_string(o.type) << (o.repeatable ? ", repeatable" : "")
          << " | " << cell(o.unit_text()) << " | " << cell(def) << " | " << cell(o.expected()) << " | " << cell(o.help);
-      const std::string applies = applies_text(o, m.options, true);
+      const std::string applies = applies_text(o, m.options, AppliesStyle::markdown);
       if (!applies.empty()) md << " (" << cell(applies) << ")";
       if (!o.deprecated_keywords.empty()) {
         md << " (Python, deprecated:";

@@ -240,7 +240,12 @@ TEST(Options, AppliesTextSaysTheConditions) {
             "applies when --model is stribeck or stribeck-asymmetric");  // a text
   EXPECT_EQ(applies_text(*sweep.option("noise-band"), sweep.options),
             "applies without --segment and without --reference");
-  EXPECT_EQ(applies_text(*idim.option("kp"), idim.options, true), "applies with `--iv`");
+  EXPECT_EQ(applies_text(*idim.option("kp"), idim.options, AppliesStyle::markdown), "applies with `--iv`");
+  // The docstrings' wording: Python keywords, a flag True or False, words as Python strings.
+  EXPECT_EQ(applies_text(*idim.option("kp"), idim.options, AppliesStyle::python), "applies with iv=True");
+  EXPECT_EQ(applies_text(*idim.option("vs"), idim.options, AppliesStyle::python), "applies when terms holds 'stribeck'");
+  EXPECT_EQ(applies_text(*sweep.option("noise-band"), sweep.options, AppliesStyle::python),
+            "applies when segment is not given and when reference is not given");
   OptionSpec lost;
   lost.name = "x";
   lost.applies_if = {when_given("no-such-option")};
@@ -254,7 +259,7 @@ TEST(Options, AppliesTextSaysTheConditions) {
         const std::size_t section = md.find("\n## " + m.name + "\n");  // idim and sweep both have --delta
         const std::size_t row = md.find("| `--" + o.name + "` | `" + o.keyword() + "` | ", section);
         ASSERT_NE(row, std::string::npos) << m.name << " --" << o.name;
-        EXPECT_NE(md.substr(row, md.find('\n', row) - row).find("(" + applies_text(o, m.options, true) + ")"),
+        EXPECT_NE(md.substr(row, md.find('\n', row) - row).find("(" + applies_text(o, m.options, AppliesStyle::markdown) + ")"),
                   std::string::npos)
             << m.name << " --" << o.name;
       }

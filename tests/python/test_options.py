@@ -4,6 +4,8 @@ former keyword still works with a DeprecationWarning and gives the same result, 
 TypeError, values are checked by the table (ValueError naming the option), the docstrings list
 the table, and a result records the options that shaped it (its JSON "options")."""
 import json
+import re
+import subprocess
 import warnings
 
 import numpy as np
@@ -47,6 +49,60 @@ def test_docstrings_list_the_option_table():
         for keyword, o in table(method).items():
             assert f"      {keyword}: {o['help']}" in function.__doc__, (method, keyword)
     assert "1e-3 max" not in fl.identify_sweep.__doc__  # the drifted default of the former docstring
+
+
+def _python_words(cli_text, method):
+    """The CLI's "applies ..." text as a docstring says it: keywords for flags, a flag True or
+    False, any other option given or not, words as Python strings (the same conditions)."""
+    options = {o["name"]: o for o in {m.name: m for m in fl.methods()}[method].options}
+    parts = []
+    for part in cli_text[len("applies "):].split(" and "):
+        m = re.fullmatch(r"(with|without) --([\w-]+)", part)
+        if m:
+            o = options[m.group(2)]
+            if o["type"] == "flag":
+                parts.append(f"with {o['keyword']}={m.group(1) == 'with'}")
+            else:
+                parts.append(f"when {o['keyword']} is {'given' if m.group(1) == 'with' else 'not given'}")
+            continue
+        m = re.fullmatch(r"when --([\w-]+) (holds|is|does not hold|is not) (.+)", part)
+        assert m, part
+        words = re.split(r", | or ", m.group(3))
+        quoted = [f"'{w}'" for w in words]
+        listed = quoted[0] if len(quoted) == 1 else ", ".join(quoted[:-1]) + " or " + quoted[-1]
+        parts.append(f"when {options[m.group(1)]['keyword']} {m.group(2)} {listed}")
+    return "applies " + " and ".join(parts)
+
+
+def test_docstrings_say_when_an_option_applies_as_the_command_line(cli):
+    """help(fl.identify_idim) says "applies with iv=True" where `frictionlab help` says "applies
+    with --iv": both from the table's conditions, for every option of every method."""
+    text = subprocess.run([cli, "help"], capture_output=True, text=True, check=True).stdout
+    cli_applies, method = {}, None
+    for line in text.splitlines():
+        if not line.startswith(" "):
+            method = line.split(":", 1)[0]
+        elif line.startswith("  --"):
+            name = line[4:].split(" ", 1)[0]
+            at = line.rfind("(applies ")
+            cli_applies[(method, name)] = line[at + 1:-1] if at >= 0 and line.endswith(")") else ""
+    functions = {m.name: getattr(fl, m.function) for m in fl.methods() if m.function and m.function.startswith("identify_")}
+    assert set(functions) >= {"idim", "sweep", "lugre", "auto", "breakaway", "decay"}
+    conditional = 0
+    for method, function in functions.items():
+        doc = function.__doc__.splitlines()
+        for o in table(method).values():
+            line = next(x for x in doc if x.startswith(f"      {o['keyword']}: "))
+            m = re.search(r"(?:\[|; )(applies [^;\]]*)\]$", line)
+            shown = m.group(1) if m else ""
+            expected = cli_applies[(method, o["name"])]
+            assert shown == (_python_words(expected, method) if expected else ""), (method, o["name"], line, expected)
+            conditional += bool(expected)
+    assert conditional >= 20  # idim's IV, Stribeck, ripple, load, temperature options; sweep's; lugre's; auto's
+    doc = fl.identify_idim.__doc__
+    assert re.search(r"\n      kp: .*applies with iv=True\]\n", doc)
+    assert re.search(r"\n      vs: .*applies when terms holds 'stribeck'\]\n", doc)
+    assert "applies when segment is not given and when reference is not given]" in fl.identify_sweep.__doc__
 
 
 def test_deprecated_keywords_warn_and_give_the_same_result():
