@@ -50,6 +50,7 @@ Handler register_identify(CLI::App& app) {
       if (!is_batch(io.inputs, io.batch)) {
         io.data = io.inputs.front();
         io.output.values = &options;  // the report lists the defaults that applied
+        io.output.data = &io.columns;  // and the columns the run took by default
         check_outputs(io.output, command_inputs(c.cmd));
         return emit(run(io), io.output);
       }

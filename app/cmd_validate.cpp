@@ -200,6 +200,11 @@ int run_two_axis(const ValidateArgs& a, const OptionValues& options, const std::
                  const std::shared_ptr<const Dataset>& data, const std::string& data_file, const std::string& data_sha256) {
   MultiAxisValidationData v;
   v.time = time_column(*data, a.columns);
+  // The report lists the columns taken by default.
+  a.columns.columns_read["--x"] = a.x;
+  a.columns.columns_read["--y"] = a.y;
+  if (a.x_force_given || data->has_column(a.x_force)) a.columns.columns_read["--x-force"] = a.x_force;
+  if (a.y_force_given || data->has_column(a.y_force)) a.columns.columns_read["--y-force"] = a.y_force;
   v.axes.push_back({"x", finite_signal(*data, a.x, "--x"), optional_force(*data, a.x_force, a.x_force_given, "--x-force")});
   v.axes.push_back({"y", finite_signal(*data, a.y, "--y"), optional_force(*data, a.y_force, a.y_force_given, "--y-force")});
   v.file = data->file;
@@ -221,6 +226,8 @@ int run_two_axis(const ValidateArgs& a, const OptionValues& options, const std::
 
 int run(ValidateArgs& a) {
   const OptionValues options = a.given();
+  a.output.values = &options;  // the report lists the options that applied, with units
+  a.output.data = &a.columns;  // and the columns the run took by default
   a.scenario = options.text("scenario");
   a.x = options.text("x");
   a.y = options.text("y");

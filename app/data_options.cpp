@@ -192,7 +192,20 @@ void require_finite(const Dataset& d, const Eigen::VectorXd& x, const std::strin
                         .column = column});
 }
 
+std::string data_option_unit(const std::string& flag, Axis axis) {
+  const bool rotary = axis == Axis::rotary;
+  if (flag == "--time" || flag == "--resample" || flag == "--max-gap") return "s";
+  if (flag == "--position") return rotary ? "rad" : "m";
+  if (flag == "--velocity") return rotary ? "rad/s" : "m/s";
+  if (flag == "--force") return rotary ? "N m" : "N";
+  if (flag == "--current") return "A";
+  if (flag == "--kt") return "N m/A";
+  if (flag == "--gain") return rotary ? "N m per unit of --input" : "N per unit of --input";
+  return "";
+}
+
 Eigen::VectorXd time_column(const Dataset& d, const DataOptions& o) {
+  o.columns_read["--time"] = o.time;
   const Eigen::VectorXd& t = select_column(d, o.time, "--time");
   try {
     check_time(d, t);
@@ -216,8 +229,12 @@ Eigen::VectorXd force_column(const Dataset& d, const DataOptions& o) {
   const bool force_given = o.force_opt && o.force_opt->count() > 0;
   const bool input_given = (o.input_opt && o.input_opt->count() > 0) || !o.gain.empty();
   const bool current_given = (o.current_opt && o.current_opt->count() > 0) || !o.kt.empty();
-  if (force_given || (!input_given && !current_given && d.has_column(o.force))) return finite_signal(d, o.force, "--force");
+  if (force_given || (!input_given && !current_given && d.has_column(o.force))) {
+    o.columns_read["--force"] = o.force;
+    return finite_signal(d, o.force, "--force");
+  }
   if (input_given || (!current_given && d.has_column(o.input))) {
+    o.columns_read["--input"] = o.input;
     if (o.gain.empty())
       throw InputError(errc::option_invalid,
                        d.where() + "--gain is needed to turn the drive input '" + o.input +
@@ -226,6 +243,7 @@ Eigen::VectorXd force_column(const Dataset& d, const DataOptions& o) {
     return resolve_constant(d, o.gain, "--gain") * finite_signal(d, o.input, "--input");
   }
   if (d.has_column(o.current) || current_given) {
+    o.columns_read["--current"] = o.current;
     if (o.kt.empty())
       throw InputError(errc::option_invalid,
                        d.where() + "--kt is needed to turn the current '" + o.current +
@@ -240,8 +258,14 @@ Eigen::VectorXd force_column(const Dataset& d, const DataOptions& o) {
                    {.file = d.file, .column = o.force, .option = "--force"});
 }
 
-Eigen::VectorXd velocity_column(const Dataset& d, const DataOptions& o) { return finite_signal(d, o.velocity, "--velocity"); }
+Eigen::VectorXd velocity_column(const Dataset& d, const DataOptions& o) {
+  o.columns_read["--velocity"] = o.velocity;
+  return finite_signal(d, o.velocity, "--velocity");
+}
 
-Eigen::VectorXd position_column(const Dataset& d, const DataOptions& o) { return finite_signal(d, o.position, "--position"); }
+Eigen::VectorXd position_column(const Dataset& d, const DataOptions& o) {
+  o.columns_read["--position"] = o.position;
+  return finite_signal(d, o.position, "--position");
+}
 
 }  // namespace frictionlab::cli

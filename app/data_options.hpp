@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include <Eigen/Core>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +42,11 @@ struct DataOptions {
   // Which column options the user gave explicitly (they take precedence over defaults).
   CLI::Option *force_opt = nullptr, *input_opt = nullptr, *current_opt = nullptr, *velocity_opt = nullptr,
               *position_opt = nullptr;
+  /// The column options whose column the run read, and the column (or expression) each read:
+  /// "--velocity" -> "velocity" when the default was taken. Filled by time_column, force_column,
+  /// velocity_column and position_column (which take the options const: a record of the run, not
+  /// an option), for the report's Options table, which lists a column default only when it was read.
+  mutable std::map<std::string, std::string> columns_read;
 
   Axis parsed_axis() const { return parse_axis(axis); }
 };
@@ -90,6 +96,12 @@ Eigen::VectorXd velocity_column(const Dataset& d, const DataOptions& o);
 
 /// The position column (m or rad). \throws std::invalid_argument listing the file's columns.
 Eigen::VectorXd position_column(const Dataset& d, const DataOptions& o);
+
+/// The unit of the value of a data option (add_data_options, add_read_options) on `axis`:
+/// "--time" s, "--position" m or rad, "--velocity" m/s or rad/s, "--force" N or N m, "--current" A,
+/// "--kt" N m/A, "--gain" "N per unit of --input" (N m on a rotary axis), "--resample" and "--max-gap"
+/// s; "" for the others (--input is in the drive's own unit).
+std::string data_option_unit(const std::string& flag, Axis axis);
 
 /// Checks every sample of `x` is finite, naming the row and column otherwise.
 void require_finite(const Dataset& d, const Eigen::VectorXd& x, const std::string& column);

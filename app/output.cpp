@@ -1,5 +1,7 @@
 #include "output.hpp"
 
+#include "data_options.hpp"
+
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -14,6 +16,7 @@
 #include <cerrno>
 #include <cstring>
 #include <optional>
+#include <set>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -185,21 +188,21 @@ const OptionSpec* table_option(const OutputOptions& o, const std::string& name) 
   return nullptr;
 }
 
-// A method option's value with its unit when it is a number ("0.001 m/s"; a word such as
-// "search" or a scalar's name as given).
-std::string with_unit(const OptionSpec* spec, const std::string& value, bool rotary) {
-  if (!spec || (spec->type != OptionType::number && spec->type != OptionType::integer)) return value;
-  const std::string& unit = spec->unit_on(rotary);
-  char* end = nullptr;
-  const bool number = !value.empty() && (std::strtod(value.c_str(), &end), *end == '\0');
-  return number && !unit.empty() ? value + " " + unit : value;
+// The unit of an option's value on the run's axis: a method option's from its table, a data
+// option's from data_option_unit ("" for others and for a flag).
+std::string option_unit(const OptionSpec* spec, const std::string& name, bool rotary) {
+  if (spec) return spec->type == OptionType::flag ? "" : spec->unit_on(rotary);
+  return data_option_unit(name, rotary ? Axis::rotary : Axis::linear);
 }
 
 // The command line (as given, options in their declared order) and the options that applied to
-// the run: every option given, with its value; a method option not given, with its default when
-// it has one and applies (OptionSpec::applies_if: --iv-iterations only with --iv); a command-line
-// option not given, with its default unless that is empty or "none" (an output not asked for).
-// The batch options are left out unless given: a report is of one file's run.
+// the run, each with its unit: every option given, with its value; a method option not given,
+// with its default when it has one and applies (OptionSpec::applies_if: --iv-iterations only with
+// --iv); a data column option not given, with the column the run took by default (--velocity
+// 'velocity' when the run read velocity, none when it read the position; DataOptions::columns_read),
+// as a column option of the method's table not given (validate's --x); a command-line option not
+// given, with its default unless that is empty or "none" (an output not asked for). The batch
+// options are left out unless given: a report is of one file's run.
 ReportInfo report_info(const Result& r, const OutputOptions& o) {
   ReportInfo info;
   info.version = kVersion;
@@ -213,15 +216,24 @@ ReportInfo report_info(const Result& r, const OutputOptions& o) {
     const CLI::Option* opt = o.command->get_option_no_throw(name);
     return opt && opt->count() > 0;
   };
-  // The force comes from one of --force, --input (with --gain) or --current (with --kt)
-  // (force_column, data_options.cpp): once one is given, the others' defaults are not used.
+  // Without the record of the columns read: the force comes from one of --force, --input (with
+  // --gain) or --current (with --kt) (force_column, data_options.cpp); once one is given, the
+  // others' defaults are not used.
   const bool force_source_given = given("--force") || given("--input") || given("--gain") || given("--current") ||
                                   given("--kt");
+  const auto read = [&o](const std::string& name) -> const std::string* {
+    if (!o.data) return nullptr;
+    const auto it = o.data->columns_read.find(name);
+    return it == o.data->columns_read.end() ? nullptr : &it->second;
+  };
+  static const std::set<std::string> kColumns = {"--time", "--position", "--velocity", "--current", "--force", "--input"};
   std::string line = info.title;
   for (const CLI::Option* opt : o.command->get_options()) {
     const std::string name = opt->get_name(false, true);
     if (name == "--help" || name == "-h" || name.empty()) continue;
     const bool flag = opt->get_expected_min() == 0 && opt->get_type_size_max() == 0;
+    const OptionSpec* spec = table_option(o, name);
+    const std::string unit = flag ? "" : option_unit(spec, name, rotary);
     if (opt->count() > 0) {
       std::string joined;
       for (const auto& v : opt->results()) {
@@ -229,15 +241,18 @@ ReportInfo report_info(const Result& r, const OutputOptions& o) {
         joined += (joined.empty() ? "" : ", ") + v;
       }
       if (flag) line += " " + name;
-      info.options.emplace_back(name, flag ? "yes" : with_unit(table_option(o, name), joined, rotary));
-    } else if (const OptionSpec* spec = table_option(o, name)) {
-      if (spec->default_value && o.values->applies(spec->name)) {
-        info.options.emplace_back(name, with_unit(spec, option_text(*spec->default_value), rotary) + " (default)");
-      }
+      info.options.push_back({name, flag ? "yes" : joined, unit});
+    } else if (spec && spec->type == OptionType::column && o.data) {
+      if (const std::string* column = read(name)) info.options.push_back({name, *column + " (default)", unit});
+    } else if (spec) {
+      if (spec->default_value && o.values->applies(spec->name))
+        info.options.push_back({name, option_text(*spec->default_value) + " (default)", unit});
+    } else if (o.data && kColumns.count(name)) {
+      if (const std::string* column = read(name)) info.options.push_back({name, *column + " (default)", unit});
     } else if (const std::string d = opt->get_default_str();
                !d.empty() && d != "none" && opt->get_group().rfind("Batch", 0) != 0 &&  // kBatchGroup
                !(force_source_given && (name == "--force" || name == "--input" || name == "--current"))) {
-      info.options.emplace_back(name, d + " (default)");
+      info.options.push_back({name, d + " (default)", unit});
     }
   }
   info.command_line = line;

@@ -18,6 +18,8 @@
 
 namespace frictionlab::cli {
 
+struct DataOptions;
+
 struct OutputOptions {
   std::string json;        ///< file, "-" for stdout, empty for none
   std::string plot;        ///< figure file (.svg, .png, .pdf), empty for none
@@ -28,6 +30,10 @@ struct OutputOptions {
   /// the method's table that was not given only when it has a default and applies to the run
   /// (OptionSpec::applies_if). Null: such options are listed only when given.
   const OptionValues* values = nullptr;
+  /// The run's data options (set before emit): the report lists a data column option not given
+  /// only when the run read its column (DataOptions::columns_read), with the column taken. Null:
+  /// the column defaults are listed as declared.
+  const DataOptions* data = nullptr;
 };
 
 /// Adds --json, --plot, --report and --overwrite to `cmd` (identify methods and validate), and

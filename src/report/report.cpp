@@ -302,8 +302,10 @@ std::string report_html(const Result& r, const std::vector<std::pair<std::string
 
   if (!info.options.empty()) {
     h << "<h2 id=\"options\">Options</h2>\n";
-    table_head(h, {"option", "value"});
-    for (const auto& [k, v] : info.options) h << "<tr><td><code>" << esc(k) << "</code></td><td>" << esc(v) << "</td></tr>\n";
+    table_head(h, {"option", "value", "unit"});
+    for (const ReportOption& o : info.options)
+      h << "<tr><td><code>" << esc(o.name) << "</code></td><td>" << esc(o.value) << "</td><td>" << esc(o.unit)
+        << "</td></tr>\n";
     h << "</tbody></table>\n";
   }
 

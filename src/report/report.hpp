@@ -22,12 +22,19 @@ struct ReportFigure {
   Figure figure;
 };
 
+/// A row of the report's Options table.
+struct ReportOption {
+  std::string name;   ///< "--kp", "--velocity", "DATA"
+  std::string value;  ///< as given, or the default the run used with " (default)"
+  std::string unit;   ///< of the value on the run's axis ("1/s", "rad/s" for a velocity column); "" when none
+};
+
 /// What the report says about how it was made.
 struct ReportInfo {
   std::string title;         ///< e.g. "frictionlab identify idim"; empty: from the result's method
   std::string command_line;  ///< the command that produced the result, as typed
-  /// The method's options and their values (given or default), in display order.
-  std::vector<std::pair<std::string, std::string>> options;
+  /// The options that applied to the run and their values (given or default), in display order.
+  std::vector<ReportOption> options;
   std::string version;       ///< tool version
 };
 

@@ -246,7 +246,7 @@ TEST(Report, HtmlHasTheTablesEscapedText) {
   ReportInfo info;
   info.title = "frictionlab identify idim";
   info.command_line = "frictionlab identify idim run.mat --gain 'a b'";
-  info.options = {{"--cutoff", "100 (default)"}};
+  info.options = {{"--cutoff", "100 (default)", "Hz"}};
   const std::string h = report_html(sample_result(), {{"Fit & residual", "<svg id=\"x\"></svg>"}}, info);
   EXPECT_NE(h.find("id=\"parameter-table\""), std::string::npos);
   EXPECT_NE(h.find(">95.10<"), std::string::npos);  // value to the std's precision
@@ -259,6 +259,7 @@ TEST(Report, HtmlHasTheTablesEscapedText) {
   EXPECT_NE(h.find("Fit &amp; residual"), std::string::npos);
   EXPECT_NE(h.find("<svg id=\"x\">"), std::string::npos);
   EXPECT_NE(h.find("--cutoff"), std::string::npos);
+  EXPECT_NE(h.find("<td>100 (default)</td><td>Hz</td>"), std::string::npos);  // the unit in a column of its own
   EXPECT_NE(h.find("points (30 records)"), std::string::npos);
   EXPECT_NE(h.find("5 more records"), std::string::npos);  // long lists are summarised
   EXPECT_NE(h.find("2.213 N"), std::string::npos);
