@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Every command of the documentation runs: each page of docs/ has its ```sh and ```python blocks
 run in the order they stand, in a scratch directory of its own that sees the checkout's examples/,
-data/ and tests/ and the build as build/ (so `build/app/frictionlab` and `PYTHONPATH=build/python`
+data/, tests/ and bench/ and the build as build/ (so `build/app/frictionlab` and `PYTHONPATH=build/python`
 work as written), with the built tool first on PATH and the built Python package importable. A
 page's commands make their own inputs or run the example that does.
 
@@ -21,11 +21,25 @@ that block printed, line by line:
   (state why beside the block);
 - a line `...` stands for any number of lines (none included) that the page leaves out;
 - trailing blank lines and trailing spaces do not count; stderr is not compared.
-`doc_commands.py --self-test` checks that the comparison refuses a wrong quoted output (ctest
-docs.quoted_outputs_checked).
+Quoted numbers in prose and tables: an HTML comment (invisible on the page) marks the table or
+paragraph right after it with the command whose output its numbers quote:
+    <!-- numbers: COMMAND -->                      every number of the paragraph or table's rows
+    <!-- numbers in column 3: COMMAND -->          a table's third column (columns 2,3: both)
+    <!-- numbers in row 2, column 3: COMMAND -->   one cell (rows 1,4: those rows)
+    <!-- numbers in each row, column 4: COMMAND {1} -->  COMMAND once per row, {N} the row's Nth cell
+Rows count from the first below the header. COMMAND runs with bash in the page's scratch directory
+at that place of the page (after the blocks above it). The numbers of the text marked, in reading
+order, must be printed by it in that order (other printed numbers in between are passed over), each
+to the digits the page shows as for ```text output; a number inside parentheses is a remark and is
+not compared, nor are link targets, nor digits inside a word ("lag-1", "x86_64"). Several comments
+may stand before one table, one per column or row.
+`doc_commands.py --self-test` checks that the comparison refuses a wrong quoted output and a wrong
+quoted number (ctest docs.quoted_outputs_checked).
 
 Usage: doc_commands.py SOURCE_DIR BUILD_DIR [PAGE ...]   (pages by file name; default all)
        doc_commands.py --self-test
+       doc_commands.py --numbers-of PAGE   (in the directory where the page's commands ran: its
+                                            marked numbers only; tests/cli/readme_commands.sh)
 """
 import functools
 import os
@@ -133,6 +147,170 @@ def compare_output(expected_text, actual_text, rel=0.0):
     return (f"{where}\n--- quoted\n" + "\n".join(expected) + "\n--- printed\n" + "\n".join(actual))
 
 
+# A marking comment: <!-- numbers[ in SELECTION]: COMMAND -->, possibly over several lines.
+NUMBERS_MARK = re.compile(r"^<!--\s*numbers(?:\s+in\s+([^:]*?))?\s*:\s*(.*?)\s*-->[ \t]*$", re.M | re.S)
+# A number in prose: not part of a word, a unit's power or a longer number ("lag-1", "x86_64",
+# "2-sigma", "kg m^2"); a sentence's full stop after it is not its decimal point.
+PROSE_NUMBER = re.compile(r"(?<![\w.\-+^])([-+]?(?:\d+(?:\.\d+)?|\.\d+)(?:[eE][-+]?\d+)?)(?!\w|\.\d|-\w)")
+LINK_TARGET = re.compile(r"\]\([^)]*\)")
+
+
+def _parenthesised_removed(text):
+    """`text` without its parenthesised remarks (nested ones too)."""
+    out, depth = [], 0
+    for c in text:
+        if c == "(":
+            depth += 1
+        elif c == ")" and depth:
+            depth -= 1
+        elif depth == 0:
+            out.append(c)
+    return "".join(out)
+
+
+def prose_numbers(text):
+    """The numbers quoted in a piece of Markdown, as written, in reading order: link targets and
+    parenthesised remarks left out."""
+    return PROSE_NUMBER.findall(_parenthesised_removed(LINK_TARGET.sub("]", text)))
+
+
+def _cell_text(cell):
+    """A table cell as plain text: code spans and emphasis unmarked, parenthesised remarks left out."""
+    return " ".join(_parenthesised_removed(cell).replace("`", "").replace("**", "").split())
+
+
+def parse_selection(words):
+    """{'rows': set or None, 'columns': set or None, 'each_row': bool} of a comment's 'in ...'
+    words ('column 3', 'row 2, column 3', 'each row, columns 3,4'). ValueError when malformed."""
+    sel = {"rows": None, "columns": None, "each_row": False}
+    if not words:
+        return sel
+    for part in re.split(r",\s*(?=[a-z])", words.strip()):
+        m = re.fullmatch(r"(rows?|columns?)\s+(\d+(?:\s*,\s*\d+)*)", part.strip())
+        if part.strip() == "each row":
+            sel["each_row"] = True
+        elif m:
+            sel["rows" if m.group(1).startswith("row") else "columns"] = {int(x) for x in m.group(2).split(",")}
+        else:
+            raise ValueError(f"'{part.strip()}' in a numbers comment: expected 'row N', 'column N' (N or N,M,...) "
+                             f"or 'each row'")
+    return sel
+
+
+def marked_region(text, end):
+    """(first line number, lines) of the paragraph or table after position `end` of a page: the
+    lines up to the next blank line, blank lines and further marking comments before it skipped."""
+    rest = text[end:]
+    while True:
+        stripped = rest.lstrip("\n")
+        m = NUMBERS_MARK.match(stripped.lstrip(" \t"))
+        if m and stripped.lstrip(" \t").startswith("<!--"):
+            rest = stripped.lstrip(" \t")[m.end():]
+            continue
+        rest = stripped
+        break
+    first = text.count("\n", 0, len(text) - len(rest)) + 1
+    lines = []
+    for line in rest.split("\n"):
+        if not line.strip():
+            break
+        lines.append(line)
+    return first, lines
+
+
+def region_pieces(lines, sel):
+    """[(row cells or None, text)] of the marked text: the whole paragraph, or per selected table
+    row the selected cells joined. ValueError for a row or column selection of a paragraph, or one
+    beyond the table."""
+    if not lines:
+        raise ValueError("the comment marks nothing: a paragraph or a table must follow it")
+    if not lines[0].lstrip().startswith("|"):
+        if sel["rows"] or sel["columns"] or sel["each_row"]:
+            raise ValueError("rows and columns select in a table; a paragraph follows the comment")
+        return [(None, " ".join(lines))]
+    rows = [[c for c in line.strip().strip("|").split("|")] for line in lines[2:]]
+    pieces = []
+    for r in sorted(sel["rows"]) if sel["rows"] else range(1, len(rows) + 1):
+        if r > len(rows):
+            raise ValueError(f"row {r}: the table has {len(rows)} rows")
+        cells = rows[r - 1]
+        cols = sorted(sel["columns"]) if sel["columns"] else range(1, len(cells) + 1)
+        for c in cols:
+            if c > len(cells):
+                raise ValueError(f"column {c}: row {r} has {len(cells)} cells")
+        pieces.append(([_cell_text(x) for x in cells], " ; ".join(cells[c - 1] for c in cols)))
+    return pieces
+
+
+def match_numbers(quoted, printed):
+    """'' when the quoted numbers (text as written) are printed in that order, each to the digits
+    shown (other printed numbers between them passed over), else which one is not."""
+    values = [float(x) for x in printed]
+    j = 0
+    for k, q in enumerate(quoted):
+        want, allowed = float(q), 0.5 * _resolution(q) * (1 + 1e-9)
+        while j < len(values) and not abs(values[j] - want) <= allowed:
+            j += 1
+        if j == len(values):
+            before = f" after {quoted[k - 1]}" if k else ""
+            return f"{q} (number {k + 1} of {len(quoted)}) is not printed{before} (to the digits shown, +-{allowed:.3g})"
+        j += 1
+    return ""
+
+
+def check_marked_numbers(text, mark, run, where):
+    """Failures (strings) of one marking comment `mark` (a NUMBERS_MARK match on `text`): its
+    command run by `run(command) -> (exit status, stdout)` for the text it marks, or per row."""
+    try:
+        sel = parse_selection(mark.group(1))
+        line, lines = marked_region(text, mark.end())
+        pieces = region_pieces(lines, sel)
+    except ValueError as e:
+        return [f"{where}: {e}"], 0
+    command = mark.group(2).strip()
+    if sel["each_row"]:
+        jobs = [(re.sub(r"\{(\d+)\}", lambda m: cells[int(m.group(1)) - 1], command), [piece])
+                for cells, piece in pieces]
+    else:
+        jobs = [(command, [piece for _, piece in pieces])]
+    failures, compared = [], 0
+    for cmd, texts in jobs:
+        quoted = [n for t in texts for n in prose_numbers(t)]
+        if not quoted:
+            failures.append(f"{where}: the text marked (line {line}) quotes no number")
+            continue
+        code, out = run(cmd)
+        if code != 0:
+            failures.append(f"{where}: `{cmd}` failed (exit {code}):\n{out[-3000:]}")
+            continue
+        compared += 1
+        why = match_numbers(quoted, NUMBER.findall(out))
+        if why:
+            failures.append(f"{where}: the numbers of line {line} ff. against `{cmd}`: {why}\n--- quoted\n"
+                            f"{' '.join(quoted)}\n--- printed\n{out[-3000:]}")
+    return failures, compared
+
+
+def check_page_numbers(text, where, cwd, env):
+    """(failures, comparisons) of every marking comment of a page's `text` (outside its fences),
+    each command run with bash in `cwd`: for a page whose blocks a test of its own runs first (the
+    README, tests/cli/readme_commands.sh). `where` names the page in messages."""
+    fences = [(m.start(), m.end()) for m in FENCE.finditer(text)]
+
+    def run(command):
+        p = subprocess.run(["bash", "-c", "set -euo pipefail\n" + command], cwd=cwd, env=env, capture_output=True,
+                           text=True, timeout=300)
+        return p.returncode, p.stdout + ("" if p.returncode == 0 else "\n--- stderr\n" + p.stderr)
+
+    failures, compared = [], 0
+    for m in NUMBERS_MARK.finditer(text):
+        if not any(a <= m.start() < b for a, b in fences):
+            why, n = check_marked_numbers(text, m, run, f"{where}:{text.count(chr(10), 0, m.start()) + 1}")
+            failures += why
+            compared += n
+    return failures, compared
+
+
 def run_pages(src, build, names=None, log=print):
     """Runs the blocks of the pages of SRC/docs (all, or those in `names`) and checks their quoted
     outputs; returns (failures, blocks run, outputs compared)."""
@@ -144,19 +322,42 @@ def run_pages(src, build, names=None, log=print):
     for name in sorted(os.listdir(docs)):
         if not name.endswith(".md") or name in SKIP_PAGES or (names and name not in names):
             continue
-        found = list(blocks(os.path.join(docs, name)))
+        path = os.path.join(docs, name)
+        text = open(path, encoding="utf-8").read()
+        found = list(blocks(path))
+        fences = [(m.start(), m.end()) for m in FENCE.finditer(text)]
+        marks = [m for m in NUMBERS_MARK.finditer(text) if not any(a <= m.start() < b for a, b in fences)]
         for lang, info, _, line in found:
             if lang not in RUN | SHOWN:
                 failures.append(f"docs/{name}:{line}: a fence of language '{lang or '(none)'}': "
                                 f"use sh or python (run) or one of {', '.join(sorted(SHOWN))} (shown only)")
-        if not any(lang in RUN or output_spec(lang, info) is not None for lang, info, _, _ in found):
+        if not marks and not any(lang in RUN or output_spec(lang, info) is not None for lang, info, _, _ in found):
             continue
+        # The fences and the marking comments in the order they stand.
+        events = sorted([(a, "fence", f) for (a, _), f in zip(fences, found)] + [(m.start(), "mark", m) for m in marks],
+                        key=lambda e: e[0])
         with tempfile.TemporaryDirectory(prefix=f"doc_{name[:-3]}_") as tmp:
-            for link in ("examples", "data", "tests"):
+            for link in ("examples", "data", "tests", "bench"):
                 os.symlink(os.path.join(src, link), os.path.join(tmp, link))
             os.symlink(build, os.path.join(tmp, "build"))
+
+            def run_marked(command):
+                p = subprocess.run(["bash", "-c", "set -euo pipefail\n" + command], cwd=tmp, env=env,
+                                   capture_output=True, text=True, timeout=300)
+                return p.returncode, p.stdout + ("" if p.returncode == 0 else "\n--- stderr\n" + p.stderr)
+
             previous = None  # (language, line, stdout) of the fence before this one, when it ran
-            for lang, info, body, line in found:
+            for pos, kind, item in events:
+                if kind == "mark":
+                    line = text.count("\n", 0, pos) + 1
+                    start = time.monotonic()
+                    why, n = check_marked_numbers(text, item, run_marked, f"docs/{name}:{line}")
+                    compared += n
+                    log(f"== docs/{name}:{line} (quoted numbers, {time.monotonic() - start:.1f} s): "
+                        f"{'differ' if why else 'same'}")
+                    failures += why
+                    continue
+                lang, info, body, line = item
                 try:
                     rel = output_spec(lang, info)
                 except ValueError as e:
@@ -206,6 +407,25 @@ SELF_TEST_PAGES = {
     "extra_line.md": ("```sh\nprintf 'a 1\\nb 2\\nc 3\\n'\n```\n\n```text output\na 1\nb 2\n```\n", False),
     "not_after_run.md": ("```shell\necho hi\n```\n\n```text output\nhi\n```\n", False),
     "bad_info.md": ("```sh\necho hi\n```\n\n```text output tol=1\nhi\n```\n", False),
+    # Numbers quoted in tables and prose, marked with the command that prints them.
+    "numbers_table.md": ("<!-- numbers in column 2: printf 'M 95.1007 +- 0.253 kg\\nFv 203.547 N s/m\\n' -->\n"
+                         "| parameter | value (2019) |\n|---|---|\n| `M` (kg) | 95.10 ± 0.25 |\n| `Fv` | 203.5 |\n", True),
+    "numbers_wrong.md": ("<!-- numbers in column 2: printf 'M 95.1007 +- 0.253 kg\\nFv 203.547 N s/m\\n' -->\n"
+                         "| parameter | value |\n|---|---|\n| `M` (kg) | 95.10 ± 0.25 |\n| `Fv` | 203.6 |\n", False),
+    "numbers_order.md": ("<!-- numbers: echo 'M 95.1 Fv 203.5' -->\nFv 203.5 and M 95.1.\n", False),
+    "numbers_prose.md": ("Before.\n\n<!-- numbers: echo 'period 6.363 s, slip 0.3698 m/s'; echo 'lag 0.644' -->\n"
+                         "The period is 6.36 s (lag-1 test, 2 cores, [x](a1.md)) and the slip 0.370 m/s, lag\n"
+                         "correlation 0.64.\n", True),
+    "numbers_each_row.md": ("<!-- numbers in each row, column 2: echo \"delay {1}: $(( {1} + 3 )).0 %\" -->\n\n"
+                            "| delay | error % |\n|---|---|\n| 1 | 4.0 |\n| **2** | 5 |\n", True),
+    "numbers_each_row_wrong.md": ("<!-- numbers in each row, column 2: echo \"delay {1}: $(( {1} + 3 )).0 %\" -->\n\n"
+                                  "| delay | error % |\n|---|---|\n| 1 | 4.0 |\n| 2 | 4.0 |\n", False),
+    "numbers_row.md": ("<!-- numbers in row 2, column 3: echo 6.016 -->\n| a | b | c |\n|---|---|---|\n"
+                       "| x | 1 | 7 |\n| y | 2 | 6.02 |\n", True),
+    "numbers_failing_command.md": ("<!-- numbers: false -->\nM 95.1\n", False),
+    "numbers_nothing_marked.md": ("<!-- numbers: echo 1 -->\n", False),
+    "numbers_bad_selection.md": ("<!-- numbers in line 2: echo 1 -->\n| a |\n|---|\n| 1 |\n", False),
+    "numbers_beyond_table.md": ("<!-- numbers in column 3: echo 1 -->\n| a |\n|---|\n| 1 |\n", False),
 }
 
 
@@ -232,6 +452,14 @@ def self_test():
 def main():
     if sys.argv[1:] == ["--self-test"]:
         return self_test()
+    if len(sys.argv) == 3 and sys.argv[1] == "--numbers-of":
+        page = sys.argv[2]
+        failures, compared = check_page_numbers(open(page, encoding="utf-8").read(), os.path.basename(page),
+                                                os.getcwd(), dict(os.environ))
+        for f in failures:
+            print("FAIL " + f)
+        print(f"{os.path.basename(page)}: {compared} marked texts compared, {len(failures)} failures")
+        return 1 if failures or not compared else 0
     src, build = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
     failures, ran, compared = run_pages(src, build, set(sys.argv[3:]))
     for f in failures:
