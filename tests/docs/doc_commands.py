@@ -153,6 +153,8 @@ NUMBERS_MARK = re.compile(r"^<!--\s*numbers(?:\s+in\s+([^:]*?))?\s*:\s*(.*?)\s*-
 # "2-sigma", "kg m^2"); a sentence's full stop after it is not its decimal point.
 PROSE_NUMBER = re.compile(r"(?<![\w.\-+^])([-+]?(?:\d+(?:\.\d+)?|\.\d+)(?:[eE][-+]?\d+)?)(?!\w|\.\d|-\w)")
 LINK_TARGET = re.compile(r"\]\([^)]*\)")
+# Any comment that starts like one: a misspelt marking comment is refused, not skipped.
+NUMBERS_LIKE = re.compile(r"^<!--\s*numbers\b", re.M)
 
 
 def _parenthesised_removed(text):
@@ -291,6 +293,14 @@ def check_marked_numbers(text, mark, run, where):
     return failures, compared
 
 
+def misspelt_marks(text, marks, where):
+    """Failures for the comments of `text` that start like a marking comment but are not one."""
+    starts = {m.start() for m in marks}
+    return [f"{where}:{text.count(chr(10), 0, m.start()) + 1}: a comment starting '<!-- numbers' that is not "
+            f"'<!-- numbers[ in SELECTION]: COMMAND -->' on lines of its own"
+            for m in NUMBERS_LIKE.finditer(text) if m.start() not in starts]
+
+
 def check_page_numbers(text, where, cwd, env):
     """(failures, comparisons) of every marking comment of a page's `text` (outside its fences),
     each command run with bash in `cwd`: for a page whose blocks a test of its own runs first (the
@@ -302,12 +312,12 @@ def check_page_numbers(text, where, cwd, env):
                            text=True, timeout=300)
         return p.returncode, p.stdout + ("" if p.returncode == 0 else "\n--- stderr\n" + p.stderr)
 
-    failures, compared = [], 0
-    for m in NUMBERS_MARK.finditer(text):
-        if not any(a <= m.start() < b for a, b in fences):
-            why, n = check_marked_numbers(text, m, run, f"{where}:{text.count(chr(10), 0, m.start()) + 1}")
-            failures += why
-            compared += n
+    marks = [m for m in NUMBERS_MARK.finditer(text) if not any(a <= m.start() < b for a, b in fences)]
+    failures, compared = misspelt_marks(text, marks, where), 0
+    for m in marks:
+        why, n = check_marked_numbers(text, m, run, f"{where}:{text.count(chr(10), 0, m.start()) + 1}")
+        failures += why
+        compared += n
     return failures, compared
 
 
@@ -327,6 +337,7 @@ def run_pages(src, build, names=None, log=print):
         found = list(blocks(path))
         fences = [(m.start(), m.end()) for m in FENCE.finditer(text)]
         marks = [m for m in NUMBERS_MARK.finditer(text) if not any(a <= m.start() < b for a, b in fences)]
+        failures += misspelt_marks(text, marks, f"docs/{name}")
         for lang, info, _, line in found:
             if lang not in RUN | SHOWN:
                 failures.append(f"docs/{name}:{line}: a fence of language '{lang or '(none)'}': "
@@ -425,6 +436,7 @@ SELF_TEST_PAGES = {
     "numbers_failing_command.md": ("<!-- numbers: false -->\nM 95.1\n", False),
     "numbers_nothing_marked.md": ("<!-- numbers: echo 1 -->\n", False),
     "numbers_bad_selection.md": ("<!-- numbers in line 2: echo 1 -->\n| a |\n|---|\n| 1 |\n", False),
+    "numbers_misspelt.md": ("<!-- numbers on column 2: echo 1 -->\n| a | b |\n|---|---|\n| x | 2 |\n", False),
     "numbers_beyond_table.md": ("<!-- numbers in column 3: echo 1 -->\n| a |\n|---|\n| 1 |\n", False),
 }
 
