@@ -531,6 +531,7 @@ struct Seen {
   double equilibrium = 0;        // position the oscillation centres on (m or rad)
   double stiffness = 0, stiffness_std = 0;  // presliding: initial slope of force against displacement
   double limit = 0;                         // presliding: the force the deflection saturates at
+  double start_force = 0;                   // presliding: the force read at the start (an offset)
   Vec presliding_model;                     // presliding: the curve's force at each sample
 };
 
@@ -570,20 +571,28 @@ Vec ranks(const Vec& x) {
 // The steady presliding curve of the bristle models (LuGre at vanishing speed):
 //   f = A (1 - exp(-sigma0 x / A)),
 // with f the force and x the displacement from the start, both in the direction of the largest
-// force; sigma0 the bristles' stiffness (the curve's initial slope), A the force they saturate at
+// force, f less the force read at the start (the mean of its first kStartSamples samples): the
+// curve starts with relaxed bristles, so what a sensor reads there is its offset (a drive's
+// current offset would otherwise bend the curve's start: +8 % on sigma0 for a 0.1 N offset on the
+// presliding log of tests/rigs/experiment_logs.py); sigma0 the bristles' stiffness (the curve's initial slope), A the force they saturate at
 // (LuGre's g(0) = Fs when the ramp reaches it). For each A the exponent is linear in x (-ln(1 -
 // f/A) = (sigma0/A) x, least squares through the origin over the samples with f < A); A by a
 // golden-section search of the force residual over [1.001, 100] times the largest f (at the upper
 // end the curve is a straight line). The std of sigma0: Newey-West (identify/covariance.hpp) on the
 // curve's Jacobian at the optimum.
+constexpr Eigen::Index kStartSamples = 5;
+
 struct PreslidingFit {
   bool ok = false;
   double stiffness = 0, stiffness_std = 0, limit = 0;
+  double start_force = 0;  // N or N m: the force read at the start, taken as the offset
   Vec model;  // the curve's force at each sample (N or N m, the data's sign)
 };
 
-PreslidingFit presliding_fit(const Vec& F, const Vec& position) {
+PreslidingFit presliding_fit(const Vec& F_read, const Vec& position) {
   PreslidingFit out;
+  out.start_force = F_read.head(std::min(kStartSamples, F_read.size())).mean();
+  const Vec F = F_read.array() - out.start_force;
   Eigen::Index top = 0;
   F.cwiseAbs().maxCoeff(&top);
   const double dir = F(top) > 0 ? 1.0 : -1.0;
@@ -620,7 +629,7 @@ PreslidingFit presliding_fit(const Vec& F, const Vec& position) {
     J(i, 1) = 1 - ex - sigma0 * xi / A * ex;
     e(i) = f(i) - A * (1 - ex);
   }
-  out.model = dir * (f - e);
+  out.model = (dir * (f - e)).array() + out.start_force;
   if (!J.allFinite() || !e.allFinite() || f.size() <= 2) return out;
   const HacCovariance hac = hac_covariance(J, e);
   out.ok = true;
@@ -730,6 +739,7 @@ Seen look_at(const IdimData& d, Axis axis) {
         s.stiffness = fit.stiffness;
         s.stiffness_std = fit.stiffness_std;
         s.limit = fit.limit;
+        s.start_force = fit.start_force;
         s.presliding_model = fit.model;
         const double xspan = s.position.maxCoeff() - s.position.minCoeff();
         s.text = "presliding: the displacement (" + format_number(xspan, 3) + " " + xu +
@@ -920,6 +930,8 @@ Result auto_by_experiment(const IdimData& data, const AutoOptions& options) {
       inner.diagnostics.texts["covariance"] = "newey-west";
       // The force the deflection saturates at: LuGre's Fs when the ramp came near it, else a bound.
       inner.diagnostics.numbers["presliding_limit"] = seen.limit;
+      // The force read at the start, taken as the sensor's offset and subtracted (relaxed bristles).
+      inner.diagnostics.numbers["presliding_start_force"] = seen.start_force;
       set_fit(inner, data.force, seen.presliding_model);
       inner.series["time"].assign(data.time.data(), data.time.data() + data.time.size());
       inner.series["force"].assign(data.force.data(), data.force.data() + data.force.size());

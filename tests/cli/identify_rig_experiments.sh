@@ -78,7 +78,8 @@ warns auto_decay_s.json "a rise at low speed (a Stribeck dip) biases both levels
 "$exe" identify breakaway breakaway.csv --velocity c4 "${cols[@]}" --json breakaway.json > /dev/null
 check_parameters breakaway.json "$(rel Fs 4.5 0.03) and $(rel Fc 3.0 0.02) and $(rel Fv 20.0 0.02) and $(rel M 2.0 0.05)"
 findings breakaway.json 0
-"$exe" identify auto breakaway.csv --position c2 "${cols[@]}" --json auto_breakaway.json > auto_breakaway.txt
+"$exe" identify auto breakaway.csv --position c2 "${cols[@]}" --json auto_breakaway.json --report rep > auto_breakaway.txt
+grep -q "candidate 2" rep/report.html || fail "the report lacks the runners-up"
 grep -q "^experiment: a slow ramp of force with stick" auto_breakaway.txt ||
   { cat auto_breakaway.txt; fail "auto did not see the breakaway ramp"; }
 check_parameters auto_breakaway.json "$(rel Fs 4.5 0.03) and $(rel Fc 3.0 0.02) and $(rel Fv 20.0 0.02) and $(rel M 2.0 0.05)"
@@ -108,12 +109,19 @@ warns breakaway_o.json "friction differs by direction"
 warns breakaway_s.json "the friction-velocity curve is not the model's shape"
 
 # --- Presliding: LuGre bristles (sigma0 1e5 N/m) under a ramp to 0.9 Fs, never sliding.
-# Tolerance: sigma0 10 %: the curve starts at zero force, so the 0.1 N current offset moves the
-# initial slope by about 8 % on this log (0.7 % without the offset).
+# Tolerance: sigma0 3 %: the steady presliding curve leaves out the bristle damping and the mass
+# (0.7 % on this log). The curve starts with relaxed bristles, so the force read at the start is
+# the current's offset (0.1 N) and is subtracted; taken as friction it moved sigma0 by +8 %.
 /usr/bin/python3 "$rig" presliding.csv --experiment presliding --seed 31
 "$exe" identify auto presliding.csv --position c2 "${cols[@]}" --json presliding.json > presliding.txt
 grep -q "^experiment: presliding: " presliding.txt || { cat presliding.txt; fail "auto did not see presliding"; }
-check_parameters presliding.json "$(rel sigma0 1.0e5 0.10) and 'Fc' not in p"
+check_parameters presliding.json "$(rel sigma0 1.0e5 0.03) and 'Fc' not in p"
+/usr/bin/python3 - presliding.json <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+f0 = j["diagnostics"]["presliding_start_force"]
+assert abs(f0 - 0.1) <= 0.01, f0  # the 0.1 N offset, within the current noise's 0.01 N over 5 samples
+PY
 
 # --- Sweep: constant speeds 2 to 200 mm/s both ways under a PI velocity loop (Stribeck friction:
 # Fs 4.5, Fc 3 N, vs 0.01 m/s, Fv 20 N s/m). The 0.1 N current offset raises the positive
