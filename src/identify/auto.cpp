@@ -51,6 +51,12 @@ MethodInfo detail::auto_method_info() {
       {.name = "validate", .type = OptionType::file,
        .help = "Second data file of the same axis: candidates are judged by their drive-force error on it instead "
                "of by the time blocks (Python: a dict with time, force and position or velocity)"},
+      [] {  // decay's own entry: the same name, unit and range
+        OptionSpec s = decay_stiffness_option();
+        s.help = "Restoring stiffness (m g l for a pendulum) of a free decay found in the record: decay then reports "
+                 "Fc and Fv in force units instead of Fc/k and zeta; not used by the other experiments";
+        return s;
+      }(),
   };
   return m;
 }
@@ -64,6 +70,7 @@ AutoOptions make_auto_options(const OptionValues& v) {
   o.idim.input_delay = static_cast<Eigen::Index>(v.integer("delay"));
   o.idim.skip_end = static_cast<Eigen::Index>(v.integer("skip-end"));
   o.sweep.min_duration = v.number("min-duration");
+  o.stiffness = v.number("stiffness");
   return o;
 }
 
@@ -288,7 +295,9 @@ void add_static_level(Result& r, Axis axis) {
 
 // The trajectory path: idim and sweep candidates chosen by held-out error; `seen` opens the
 // experiment text (what the record was checked for before).
-Result trajectory_choice(const IdimData& data, const AutoOptions& options, const std::vector<std::string>& seen) {
+// `out`, when given, receives the candidates with their verdicts (another experiment's runners-up).
+Result trajectory_choice(const IdimData& data, const AutoOptions& options, const std::vector<std::string>& seen,
+                         std::vector<SelectionCandidate>* out = nullptr) {
   const MethodInfo& idim = method_info(MethodId::idim);
   IdimOptions base = options.idim;
   base.axis = options.axis;
@@ -438,6 +447,7 @@ Result trajectory_choice(const IdimData& data, const AutoOptions& options, const
       c.refusal = "no held-out error: a training set could not be fitted (too few plateaus or samples outside a block)";
   }
   const std::optional<std::size_t> chosen = select_candidate(candidates);
+  if (out != nullptr) *out = candidates;
 
   Result r = chosen ? candidates[*chosen].result : Result{};
   const std::string model = chosen ? r.model : std::string("none");
@@ -521,6 +531,7 @@ struct Seen {
   double equilibrium = 0;        // position the oscillation centres on (m or rad)
   double stiffness = 0, stiffness_std = 0;  // presliding: initial slope of force against displacement
   double limit = 0;                         // presliding: the force the deflection saturates at
+  double start_force = 0;                   // presliding: the force read at the start (an offset)
   Vec presliding_model;                     // presliding: the curve's force at each sample
 };
 
@@ -560,20 +571,28 @@ Vec ranks(const Vec& x) {
 // The steady presliding curve of the bristle models (LuGre at vanishing speed):
 //   f = A (1 - exp(-sigma0 x / A)),
 // with f the force and x the displacement from the start, both in the direction of the largest
-// force; sigma0 the bristles' stiffness (the curve's initial slope), A the force they saturate at
+// force, f less the force read at the start (the mean of its first kStartSamples samples): the
+// curve starts with relaxed bristles, so what a sensor reads there is its offset (a drive's
+// current offset would otherwise bend the curve's start: +8 % on sigma0 for a 0.1 N offset on the
+// presliding log of tests/rigs/experiment_logs.py); sigma0 the bristles' stiffness (the curve's initial slope), A the force they saturate at
 // (LuGre's g(0) = Fs when the ramp reaches it). For each A the exponent is linear in x (-ln(1 -
 // f/A) = (sigma0/A) x, least squares through the origin over the samples with f < A); A by a
 // golden-section search of the force residual over [1.001, 100] times the largest f (at the upper
 // end the curve is a straight line). The std of sigma0: Newey-West (identify/covariance.hpp) on the
 // curve's Jacobian at the optimum.
+constexpr Eigen::Index kStartSamples = 5;
+
 struct PreslidingFit {
   bool ok = false;
   double stiffness = 0, stiffness_std = 0, limit = 0;
+  double start_force = 0;  // N or N m: the force read at the start, taken as the offset
   Vec model;  // the curve's force at each sample (N or N m, the data's sign)
 };
 
-PreslidingFit presliding_fit(const Vec& F, const Vec& position) {
+PreslidingFit presliding_fit(const Vec& F_read, const Vec& position) {
   PreslidingFit out;
+  out.start_force = F_read.head(std::min(kStartSamples, F_read.size())).mean();
+  const Vec F = F_read.array() - out.start_force;
   Eigen::Index top = 0;
   F.cwiseAbs().maxCoeff(&top);
   const double dir = F(top) > 0 ? 1.0 : -1.0;
@@ -610,7 +629,7 @@ PreslidingFit presliding_fit(const Vec& F, const Vec& position) {
     J(i, 1) = 1 - ex - sigma0 * xi / A * ex;
     e(i) = f(i) - A * (1 - ex);
   }
-  out.model = dir * (f - e);
+  out.model = (dir * (f - e)).array() + out.start_force;
   if (!J.allFinite() || !e.allFinite() || f.size() <= 2) return out;
   const HacCovariance hac = hac_covariance(J, e);
   out.ok = true;
@@ -720,6 +739,7 @@ Seen look_at(const IdimData& d, Axis axis) {
         s.stiffness = fit.stiffness;
         s.stiffness_std = fit.stiffness_std;
         s.limit = fit.limit;
+        s.start_force = fit.start_force;
         s.presliding_model = fit.model;
         const double xspan = s.position.maxCoeff() - s.position.minCoeff();
         s.text = "presliding: the displacement (" + format_number(xspan, 3) + " " + xu +
@@ -734,8 +754,11 @@ Seen look_at(const IdimData& d, Axis axis) {
 
 // A Result of one method chosen for what the record holds, stamped as auto's: the experiment, the
 // choice and the one candidate in the selection.
+// `others`: the trajectory candidates after it, runners-up (fitted and judged by their held-out
+// error) or refused with the reason they were not run or not admitted.
 Result single_choice(Result inner, const std::string& method, const std::string& name, const std::string& structure,
-                     const Seen& seen, const std::string& choice, const IdimData& data, Axis axis) {
+                     const Seen& seen, std::string choice, const IdimData& data, Axis axis,
+                     const std::vector<SelectionCandidate>& others = {}) {
   std::vector<SelectionCandidate> candidates(1);
   SelectionCandidate& c = candidates.front();
   c.method = method;
@@ -752,28 +775,93 @@ Result single_choice(Result inner, const std::string& method, const std::string&
   r.data_file = data.file;
   r.data_sha256 = data.sha256;
   r.diagnostics.texts["experiment"] = seen.text;
-  r.diagnostics.texts["choice"] = choice;
-  r.diagnostics.texts["candidate 1"] = c.name + " [" + structure + "]: " + (chosen ? "chosen" : "refused: " + c.refusal);
+  const std::string first_line = c.name + " [" + structure + "]: " + (chosen ? "chosen" : "refused: " + c.refusal);
   r.diagnostics.lists["selection"] = {{{"candidate", 1.0},
                                        {"heldout_error_percent", c.heldout_error_percent},
                                        {"training_error_percent", c.training_error_percent},
                                        {"chosen", chosen ? 1.0 : 0.0},
                                        {"refused", chosen ? 0.0 : 1.0}}};
+  r.diagnostics.texts["candidate 1"] = first_line;
+  std::string runners;
+  for (const SelectionCandidate& o : others) {
+    candidates.push_back(o);
+    const std::size_t i = candidates.size();
+    std::map<std::string, double> rec{{"candidate", static_cast<double>(i)},
+                                      {"heldout_error_percent", o.heldout_error_percent},
+                                      {"training_error_percent", o.training_error_percent},
+                                      {"chosen", 0.0},
+                                      {"refused", o.refused() ? 1.0 : 0.0}};
+    for (std::size_t k = 0; k < o.block_errors_percent.size(); ++k)
+      rec["block_" + std::to_string(k + 1) + "_percent"] = o.block_errors_percent[k];
+    r.diagnostics.lists["selection"].push_back(rec);
+    std::string line = o.name + " [" + o.structure + "]: ";
+    if (std::isfinite(o.heldout_error_percent) || std::isfinite(o.training_error_percent))
+      line += "held-out " + percent(o.heldout_error_percent) + ", training " + percent(o.training_error_percent) + ", ";
+    line += o.refused() ? "refused: " + o.refusal : "runner-up";
+    r.diagnostics.texts["candidate " + std::to_string(i)] = line;
+    if (!o.refused()) runners += (runners.empty() ? "" : ", ") + o.name + " " + percent(o.heldout_error_percent);
+  }
+  if (!runners.empty())
+    choice += "; runners-up (held-out drive-force error on the samples in motion; they cannot give what the chosen "
+              "method gives): " + runners;
+  r.diagnostics.texts["choice"] = choice;
   r.json_sections["diagnostics.selection"] = selection_json(candidates, chosen);
   return r;
 }
+
+// The trajectory candidates of a free decay, each with the reason it is not run: the drive force
+// does not drive the motion, so the inverse dynamic model and a sweep have no force to fit.
+std::vector<SelectionCandidate> not_run_on_decay(Axis axis) {
+  const std::string idim = method_info(MethodId::idim).name, sweep = method_info(MethodId::sweep).name;
+  const std::string why = "not run: the record is a free decay, its drive force does not drive the motion, so the "
+                          "inverse dynamic model has no force to fit";
+  std::vector<SelectionCandidate> out;
+  const auto add = [&](const std::string& name, const std::string& method, const std::string& structure,
+                       const std::string& reason) {
+    SelectionCandidate c;
+    c.name = name;
+    c.method = method;
+    c.structure = structure;
+    c.result = new_result(method_info(MethodId::automatic), "none", axis);
+    c.refusal = reason;
+    out.push_back(std::move(c));
+  };
+  add(idim + " coulomb-viscous", idim, joined(kCoulombViscous), why);
+  add(idim + " stribeck (vs searched)", idim, joined(kStribeck) + " (vs searched)", why);
+  add(idim + " asymmetric", idim, joined(kAsymmetric), why);
+  add(sweep + " laws + M", sweep, "a law on constant-speed plateaus",
+      "not run: a free decay passes every speed in a moment and holds none (no constant-speed plateaus)");
+  return out;
+}
+
+Result auto_by_experiment(const IdimData& data, const AutoOptions& options);
 
 }  // namespace
 
 Result identify_auto(const IdimData& data, const AutoOptions& options) {
   if (options.folds < 2)
     throw std::invalid_argument("identify auto: --folds = " + std::to_string(options.folds) + " must be at least 2");
+  if (std::isfinite(options.stiffness) && !(options.stiffness > 0))
+    throw std::invalid_argument("identify auto: --stiffness = " + format_number(options.stiffness) + " must be > 0 (" +
+                                std::string(unit(Quantity::stiffness, options.axis)) + ")");
+  Result r = auto_by_experiment(data, options);
+  if (std::isfinite(options.stiffness) && r.diagnostics.numbers.count("stiffness") == 0)
+    r.diagnostics.warnings.push_back("--stiffness = " + format_number(options.stiffness) + " " +
+                                     std::string(unit(Quantity::stiffness, options.axis)) +
+                                     " is not used: the record holds no free decay");
+  return r;
+}
+
+namespace {
+
+Result auto_by_experiment(const IdimData& data, const AutoOptions& options) {
   const Seen seen = look_at(data, options.axis);
   const Axis axis = options.axis;
   switch (seen.kind) {
     case Experiment::free_decay: {
       DecayOptions o;
       o.natural_frequency = seen.natural_frequency;
+      o.stiffness = options.stiffness;  // NaN unless given: then Fc and Fv in force units
       o.axis = axis;
       const std::string& name = method_info(MethodId::decay).name;
       // The centre enters the energy balance linearly (a column of signed half-cycle travel), so
@@ -810,14 +898,20 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
           format_number(misfit_of(is_pendulum ? spring : pendulum), 3) + " for the " +
           (is_pendulum ? "linear spring" : "pendulum");
       inner.diagnostics.numbers["decay_centre"] = centre;
+      const std::string given_k = std::isfinite(options.stiffness)
+                                      ? "with the stiffness given (--stiffness " + format_number(options.stiffness) + " " +
+                                            std::string(unit(Quantity::stiffness, axis)) +
+                                            ") Fc and Fv follow in force units (the centre (decay_centre) that fits the "
+                                            "balance best)"
+                                      : "without the stiffness only Fc/k and the damping ratio zeta follow (the natural "
+                                        "frequency from the oscillation's half periods, the centre (decay_centre) that "
+                                        "fits the balance best; --stiffness K gives Fc and Fv in force units)";
       return single_choice(
           std::move(inner), name, name + " coulomb-viscous", "coulomb-viscous energy balance per half cycle", seen,
-          name + ": the record is a free decay, where the energy lost between turning points measures the friction; "
-                 "without the stiffness only Fc/k and the damping ratio zeta follow (the natural frequency from the "
-                 "oscillation's half periods, the centre (decay_centre) that fits the balance best; run " + name +
-                 " --stiffness K, --pendulum for a pendulum, for Fc and Fv in force units). The trajectory methods are "
-                 "not run: with no drive force the inverse dynamic model has nothing to fit",
-          data, axis);
+          name + ": the record is a free decay, where the energy lost between turning points measures the friction; " +
+              given_k + ". The trajectory methods are not run: with no drive force the inverse dynamic model has "
+              "nothing to fit",
+          data, axis, not_run_on_decay(axis));
     }
     case Experiment::coast_down: {
       Result r = make_result(MethodId::automatic, "none", axis);
@@ -836,6 +930,8 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
       inner.diagnostics.texts["covariance"] = "newey-west";
       // The force the deflection saturates at: LuGre's Fs when the ramp came near it, else a bound.
       inner.diagnostics.numbers["presliding_limit"] = seen.limit;
+      // The force read at the start, taken as the sensor's offset and subtracted (relaxed bristles).
+      inner.diagnostics.numbers["presliding_start_force"] = seen.start_force;
       set_fit(inner, data.force, seen.presliding_model);
       inner.series["time"].assign(data.time.data(), data.time.data() + data.time.size());
       inner.series["force"].assign(data.force.data(), data.force.data() + data.force.size());
@@ -858,13 +954,28 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
       o.axis = axis;
       const std::string& name = method_info(MethodId::breakaway).name;
       Result inner = identify_breakaway(bd, o);
-      if (inner.ok())
+      if (inner.ok()) {
+        // The trajectory candidates on the same record, as runners-up: their held-out errors say how
+        // well the sliding part alone is described, but none of them sees the force at rest (Fs).
+        std::vector<SelectionCandidate> others;
+        try {
+          (void)trajectory_choice(data, options, {}, &others);
+        } catch (const std::invalid_argument& e) {
+          SelectionCandidate c;
+          c.name = method_info(MethodId::idim).name + " coulomb-viscous";
+          c.method = method_info(MethodId::idim).name;
+          c.structure = joined(kCoulombViscous);
+          c.result = new_result(method_info(MethodId::automatic), "none", axis);
+          c.refusal = std::string("not run: ") + e.what();
+          others.push_back(std::move(c));
+        }
         return single_choice(std::move(inner), name, name + " static-coulomb-viscous", "static-coulomb-viscous with M", seen,
                              name + ": the record is a breakaway experiment, and only its onset of motion shows the "
                                     "static level Fs (the force at which the stuck axis broke away); Fc, Fv and M are "
-                                    "fitted to the sliding samples. The trajectory methods are not run: they see no "
-                                    "force at rest, so no Fs",
-                             data, axis);
+                                    "fitted to the sliding samples. The trajectory candidates are fitted too, as "
+                                    "runners-up: they see no force at rest, so no Fs",
+                             data, axis, others);
+      }
       return trajectory_choice(data, options,
                                {seen.text + ", but " + name + " refused it (" + inner.message + ")"});
     }
@@ -873,5 +984,7 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
   }
   return trajectory_choice(data, options, {});
 }
+
+}  // namespace
 
 }  // namespace frictionlab

@@ -167,6 +167,11 @@ void add_decay_adequacy(Result& r, const DecayData& d, double dt, const DecayOpt
 // The table names only the fields an option sets (designated initializers).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+OptionSpec detail::decay_stiffness_option() {
+  return {.name = "stiffness", .type = OptionType::number, .unit = "N/m", .rotary_unit = "N m/rad",
+          .help = "Restoring stiffness (m g l for a pendulum); give it or --natural-frequency", .min = 0, .min_open = true};
+}
+
 MethodInfo detail::decay_method_info() {
   const DecayOptions d;  // every default of the table is the struct's
   MethodInfo m;
@@ -174,8 +179,7 @@ MethodInfo detail::decay_method_info() {
   m.fit_signal = "energy lost per half cycle";
   m.fit_quantity = Quantity::energy;
   m.options = {
-      {.name = "stiffness", .type = OptionType::number, .unit = "N/m", .rotary_unit = "N m/rad",
-       .help = "Restoring stiffness (m g l for a pendulum); give it or --natural-frequency", .min = 0, .min_open = true},
+      decay_stiffness_option(),
       {.name = "inertia", .type = OptionType::number, .unit = "kg", .rotary_unit = "kg m^2",
        .help = "Mass or inertia, with --natural-frequency: Fc and Fv in force units", .min = 0, .min_open = true},
       {.name = "natural-frequency", .type = OptionType::number, .unit = "rad/s",

@@ -10,6 +10,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -242,6 +243,15 @@ StaticPart static_part_of(const FrictionLaw& law, const LugreOptions& o) {
   return p;
 }
 
+// Near standstill for the position-noise estimate: |v| at most this share of the largest (the
+// residual check's standstill fraction).
+constexpr double kStandstillShare = 0.02;
+// Relaxation of the bristle state by the rectified position noise (sigma0 E|v_noise| / Fs times
+// the record's duration) above which the residual checks' findings are said to be unreliable.
+// Measured on the Canudas de Wit record (10 s): 1 nm of noise (0.4) leaves the checks quiet,
+// 10 nm (3.8) makes them warn on every record.
+constexpr double kLeastRelaxation = 1.0;
+
 // Adequacy of the fit (identify/adequacy.hpp) on the force: the friction the motion shows,
 // u - M a (a the position's second central difference), less the identified LuGre's along the
 // measured velocity (its bristle state integrated exactly over each sample with the velocity held,
@@ -286,6 +296,29 @@ void add_lugre_adequacy(Result& r, const LugreData& d, double M, const LuGre& lg
   ao.advice.standstill = false;   // presliding is the model's own: samples at rest belong to the fit
   add_adequacy(r, assess_residuals(velocity, position, time, e, std::string(unit(Quantity::force, axis)),
                                    std::string(unit(Quantity::velocity, axis)), ao));
+  // The bristle state above follows |v| of the differenced position, so the position's noise,
+  // rectified, relaxes it as a slow slide would (sigma0 E|v_noise| / g per second). Measured
+  // (docs/coverage.md): 10 nm of white position noise on the Canudas de Wit record makes the
+  // checks warn on every record. The noise: the second differences' median absolute value over
+  // the samples near standstill, where the motion's own is negligible.
+  std::vector<double> d2;
+  const double vmax = v.cwiseAbs().maxCoeff();
+  for (Eigen::Index i = 1; i + 1 < n; ++i)
+    if (std::abs(v[i]) <= kStandstillShare * vmax) d2.push_back(std::abs(d.position[i + 1] - 2 * d.position[i] + d.position[i - 1]));
+  if (d2.size() >= kAdequacyMinSamples && r.diagnostics.groups.count("adequacy") != 0) {
+    std::nth_element(d2.begin(), d2.begin() + static_cast<std::ptrdiff_t>(d2.size() / 2), d2.end());
+    const double noise = 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);               // m or rad per sample
+    const double rectified = std::sqrt(2.0 / std::numbers::pi) * noise / (std::sqrt(2.0) * dt);  // E|v_noise|
+    const double relaxation = lg.sigma0 * rectified / lg.Fs * (d.time[n - 1] - d.time[0]);
+    r.diagnostics.numbers["position_noise"] = noise;
+    if (relaxation > kLeastRelaxation)
+      r.diagnostics.warnings.push_back(
+          "the position's noise (about " + format_number(noise, 3) + " " + std::string(unit(Quantity::displacement, axis)) +
+          " per sample, from its second differences near standstill) relaxes the bristle state the residual checks "
+          "integrate along the measured velocity (sigma0 E|v_noise| / Fs over the record: " + format_number(relaxation, 3) +
+          "): their findings may be the noise's, not the model's (docs/coverage.md); the fit itself, on the position, is "
+          "not affected");
+  }
 }
 
 }  // namespace

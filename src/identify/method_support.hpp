@@ -19,6 +19,10 @@ namespace frictionlab::detail {
 FRICTIONLAB_METHODS(FRICTIONLAB_METHOD_INFO_DECL)
 #undef FRICTIONLAB_METHOD_INFO_DECL
 
+/// decay's --stiffness option (N/m or N m/rad), declared once: auto's table (identify/auto.hpp)
+/// holds the same entry, so a decay found by auto reports Fc and Fv in force units with it.
+OptionSpec decay_stiffness_option();
+
 /// An empty ok Result of `method` (identify/method.hpp) fitting `model` on `axis`: the axis and
 /// the fit's quantity and unit set (new_result).
 Result make_result(MethodId method, const std::string& model, Axis axis);

@@ -41,12 +41,19 @@ void expect_text(const fl::Result& r, const std::string& key, const std::string&
   EXPECT_TRUE(contains(r.diagnostics.texts.at(key), words)) << r.diagnostics.texts.at(key);
 }
 
-// The one candidate of the selection, chosen, named `name`.
-void expect_single_choice(const fl::Result& r, const std::string& name) {
+// The first candidate of the selection chosen, named `name`, and `others` after it, none chosen,
+// each a runner-up or refused with a reason.
+void expect_single_choice(const fl::Result& r, const std::string& name, std::size_t others = 0) {
   const auto sel = nlohmann::json::parse(r.json_sections.at("diagnostics.selection"));
-  ASSERT_EQ(sel.size(), 1u) << sel.dump();
+  ASSERT_EQ(sel.size(), 1u + others) << sel.dump();
   EXPECT_EQ(sel[0]["name"], name) << sel.dump();
   EXPECT_EQ(sel[0]["status"], "chosen") << sel.dump();
+  for (std::size_t i = 1; i < sel.size(); ++i) {
+    EXPECT_TRUE(sel[i]["status"] == "runner-up" || sel[i]["status"] == "refused") << sel[i].dump();
+    if (sel[i]["status"] == "refused") {
+      EXPECT_FALSE(sel[i]["reason"].get<std::string>().empty()) << sel[i].dump();
+    }
+  }
   EXPECT_EQ(r.method, "auto");
 }
 
@@ -64,7 +71,12 @@ TEST(AutoExperiments, SlowRampWithStickRunsBreakaway) {
   ASSERT_TRUE(r.ok()) << r.message;
   expect_text(r, "experiment", "a slow ramp of force with stick");
   expect_text(r, "choice", "only its onset of motion shows the static level Fs");
-  expect_single_choice(r, "breakaway static-coulomb-viscous");
+  // The trajectory candidates follow as runners-up (3 idim; the sweep's only with plateaus).
+  const auto sel = nlohmann::json::parse(r.json_sections.at("diagnostics.selection"));
+  ASSERT_GE(sel.size(), 4u) << sel.dump();
+  expect_single_choice(r, "breakaway static-coulomb-viscous", sel.size() - 1);
+  EXPECT_EQ(sel[1]["name"], "idim coulomb-viscous") << sel.dump();
+  EXPECT_TRUE(contains(r.diagnostics.texts.at("candidate 2"), "idim coulomb-viscous")) << r.diagnostics.texts.at("candidate 2");
   EXPECT_NEAR(r.value("Fs"), 0.0015, kRel * 0.0015);
   EXPECT_NEAR(r.value("Fc"), 0.0012, kRel * 0.0012);
   EXPECT_NEAR(r.value("Fv"), 2.85e-6, kRel * 2.85e-6);
@@ -86,11 +98,42 @@ TEST(AutoExperiments, FreeDecayRunsDecay) {
   ASSERT_TRUE(r.ok()) << r.message;
   expect_text(r, "experiment", "a free decay: the drive force is constant");
   expect_text(r, "choice", "decay: the record is a free decay");
-  expect_single_choice(r, "decay coulomb-viscous");
+  // The trajectory candidates follow, each with the reason it was not run.
+  expect_single_choice(r, "decay coulomb-viscous", 4);
+  expect_text(r, "candidate 2", "refused: not run: the record is a free decay");
   expect_text(r, "restoring_force", "pendulum, k sin(x)");
   const double wn = std::sqrt(9.81);
   EXPECT_NEAR(r.value("Fc_over_k"), 0.16 / 9.81, kRel * 0.16 / 9.81);
   EXPECT_NEAR(r.value("zeta"), 0.5 / (2 * wn), kRel * 0.5 / (2 * wn));
+  // With the stiffness (m g l = 9.81 N m/rad, decay's --stiffness) the same record gives Fc and Fv
+  // in force units: 0.16 N m and 0.5 N m s/rad, within the same 2 % (Fv, like zeta, carries the
+  // restoring force's fit; the natural frequency is no longer used).
+  fl::AutoOptions o;
+  o.stiffness = 9.81;
+  o.axis = fl::Axis::rotary;
+  const fl::Result k = fl::identify_auto(d, o);
+  ASSERT_TRUE(k.ok()) << k.message;
+  EXPECT_EQ(k.find("Fc_over_k"), nullptr);
+  EXPECT_NEAR(k.value("Fc"), 0.16, kRel * 0.16);
+  EXPECT_NEAR(k.value("Fv"), 0.5, kRel * 0.5);
+  EXPECT_EQ(k.find("Fc")->unit, "N m");
+  expect_text(k, "choice", "with the stiffness given (--stiffness 9.81 N m/rad)");
+}
+
+// --stiffness on a record without a decay is not used, and a warning says so.
+TEST(AutoExperiments, StiffnessWithoutADecayIsSaidUnused) {
+  const fl::Trajectory tr = fl::simulate(fl::load_scenario(example("craig_motor_trapezoid.yaml")));
+  fl::IdimData d = record(tr, 0.0141 * vec(tr.current), "trapezoid");
+  fl::AutoOptions o;
+  o.axis = fl::Axis::rotary;
+  o.stiffness = 2.0;
+  const fl::Result r = fl::identify_auto(d, o);
+  ASSERT_TRUE(r.ok()) << r.message;
+  bool said = false;
+  for (const auto& w : r.diagnostics.warnings) said |= contains(w, "--stiffness = 2 N m/rad is not used: the record holds no free decay");
+  EXPECT_TRUE(said);
+  o.stiffness = -1.0;
+  EXPECT_THROW(fl::identify_auto(d, o), std::invalid_argument);
 }
 
 // A coast-down (no spring, no drive): no method identifies it; auto says so and fits nothing.

@@ -322,6 +322,34 @@ def test_identify_auto_chooses_by_held_out_error():
         fl.identify_auto(t, force, position=q, folds=1)
 
 
+# A free decay found by identify_auto: with ``stiffness`` (decay's keyword, N/m) Fc and Fv in N,
+# without it Fc_over_k and zeta. An exact spring-mass (2 kg, 800 N/m, Fc 0.4 N, Fv 0.8 N s/m)
+# integrated with a 10 us symplectic step, read at 1 kHz: 1 % is ten times what the sampling leaves.
+def test_identify_auto_stiffness_gives_a_decay_in_force_units():
+    h, per = 1e-5, 100
+    x, v, xs = 0.02, 0.0, []
+    for k in range(4000 * per):
+        if k % per == 0:
+            xs.append(x)
+        spring = -800.0 * x
+        if v != 0.0 or abs(spring) > 0.4:
+            s = math.copysign(1.0, v) if v != 0.0 else math.copysign(1.0, spring)
+            vn = v + h * (spring - 0.4 * s - 0.8 * v) / 2.0
+            v = 0.0 if v != 0.0 and (vn > 0) != (v > 0) else vn
+        x += h * v
+    t = np.arange(len(xs)) * 1e-3
+    q = np.array(xs)
+    r = fl.identify_auto(t, np.zeros_like(t), position=q, stiffness=800.0)
+    assert r.ok, r.message
+    assert math.isclose(r.value("Fc"), 0.4, rel_tol=0.01) and math.isclose(r.value("Fv"), 0.8, rel_tol=0.01)
+    assert r.selection[0]["status"] == "chosen" and len(r.selection) == 5, r.selection
+    assert all(c["reason"].startswith("not run: ") for c in r.selection[1:]), r.selection
+    plain = fl.identify_auto(t, np.zeros_like(t), position=q)
+    assert math.isclose(plain.value("Fc_over_k"), 0.4 / 800.0, rel_tol=0.01)
+    with pytest.raises(ValueError, match="stiffness"):
+        fl.identify_auto(t, np.zeros_like(t), position=q, stiffness=-1.0)
+
+
 def test_idim_iv_on_emps_with_the_benchmark_controller(emps, emps_result):
     """IDIM-IV with the same keywords as the command line (docs/identify.md): converges, close to
     IDIM-LS on EMPS (0.5 %, tests/identify/test_idim_iv.cpp says why), IV diagnostics present."""

@@ -4,8 +4,8 @@
 // held-out data (identify/selection.hpp): K contiguous time blocks of the record, or a second
 // record. First, on the raw samples, the experiments a trajectory method must not be fitted to:
 //   a free decay (the drive force constant or unrelated to the motion, 3 reversals or more):
-//     decay, with the natural frequency from the half periods (Fc/k and zeta); a coast-down (fewer
-//     reversals) is refused with the reason
+//     decay, with the natural frequency from the half periods (Fc/k and zeta; Fc and Fv with the
+//     stiffness); a coast-down (fewer reversals) is refused with the reason
 //   a slow ramp of force with stick (at rest for 5 % of the record or more while |force| rises):
 //     breakaway; if it refuses the record, the trajectory candidates below
 //   presliding (displacement a monotone function of the force): sigma0 from the steady presliding
@@ -23,6 +23,7 @@
 // refused with the reason and never returned.
 
 #include <Eigen/Core>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -59,6 +60,10 @@ struct AutoOptions {
   /// A second record of the same axis: when given, each candidate (fitted on the whole first
   /// record) is judged by its error on this one instead of by the blocks.
   std::optional<IdimData> heldout;
+  /// Stiffness of a free decay's restoring force (N/m, or N m/rad; m g l for a pendulum), as
+  /// decay's --stiffness: with it a decay found in the record reports Fc and Fv in force units
+  /// instead of Fc/k and zeta. Not used by the other experiments (a warning says so). NaN: not given.
+  double stiffness = std::numeric_limits<double>::quiet_NaN();
   /// Units printed. Default linear.
   Axis axis = Axis::linear;
 };
@@ -69,8 +74,10 @@ AutoOptions make_auto_options(const OptionValues& values);
 
 /// A free decay, a breakaway ramp or presliding (see above): the Result is that method's (decay,
 /// breakaway, or the presliding fit: sigma0 in N/m or N m/rad) with method auto, texts
-/// "experiment" and "choice", one candidate in the selection, chosen (refused with the method's
-/// message when it failed); a coast-down: status error with the reason.
+/// "experiment" and "choice", its candidate first in the selection, chosen (refused with the
+/// method's message when it failed); on a decay and a breakaway ramp the selection goes on with
+/// the trajectory candidates as runners-up (breakaway: each fitted and judged as below; decay:
+/// each with the reason it was not run); a coast-down: status error with the reason.
 /// Otherwise identifies `data` by the candidate with the lowest held-out drive-force error. The Result is
 /// the chosen candidate's (parameters with std and units, law, fit figures, signals), with method
 /// auto; diagnostics.texts "experiment" (what the record holds), "choice" (the candidate and why),

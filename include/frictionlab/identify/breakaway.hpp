@@ -47,7 +47,11 @@ BreakawayOptions make_breakaway_options(const OptionValues& values);
 /// Identifies Fs, Fc, Fv (and M when no inertia is given) from a trapezoid experiment.
 /// parameters: the dynamic estimate (Fc, Fv by least squares of M a + Fv v + Fc sign(v) = force
 /// over the sliding samples; Fs as the force at the instant motion began, found by integrating
-/// that fitted model back from the first moving sample to v = 0).
+/// that fitted model back from the first moving sample to v = 0). The acceleration is the
+/// velocity's central difference over +-w samples, w (diagnostics "acceleration_half_width") the
+/// smallest power of two, up to 64, whose noise (from the velocity's, "velocity_noise", m/s or
+/// rad/s, on its second differences) is below 5 % of the acceleration's spread: a velocity
+/// differentiated from an encoder would otherwise bias M towards zero (errors in variables).
 /// std: Fc, Fv (and M) from the Newey-West covariance of the sliding fit (identify/covariance.hpp,
 /// diagnostics "covariance", "covariance_bandwidth"), the ordinary least-squares figure as std_ols;
 /// Fs's from that covariance through the backward integration plus the variance of the force

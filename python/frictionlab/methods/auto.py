@@ -12,7 +12,9 @@ __all__ = ["identify_auto"]
 def identify_auto(time, force, position=None, velocity=None, *, axis="linear", source=None, **options):
     """Model selection on held-out data. First says what experiment the record holds: a free decay
     (the force constant or unrelated to the motion while the axis oscillates) runs decay (Fc_over_k,
-    zeta); a slow ramp of force with stick runs breakaway; presliding gives the bristle stiffness
+    zeta; Fc and Fv in force units with ``stiffness``, N/m or N m/rad, as identify_decay takes it);
+    a slow ramp of force with stick runs breakaway (the trajectory candidates follow as
+    runners-up); presliding gives the bristle stiffness
     sigma0 alone and names lugre; a coast-down is an error status with the reason. Otherwise it
     fits the inverse dynamic model with the Coulomb-viscous,
     Stribeck (vs searched) and asymmetric terms, and, when the record has constant-speed plateaus,
