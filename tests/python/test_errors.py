@@ -128,3 +128,23 @@ def test_data_without_an_answer_is_still_a_result():
     t = np.arange(200) * 0.01
     r = fl.identify_breakaway(t, t * 1e-4, np.zeros(200))
     assert not r.ok and "no motion" in r.message
+
+
+def test_work_beyond_the_budget_is_refused_before_it_starts():
+    """The sizes of the Ctrl-C findings (plan(runs=10**9), a 10**6-point map, identify_lugre on
+    10**7 samples) are refused by the work budget before any run, with code budget.work
+    (tests/python/test_cancellation.py interrupts the sizes within it)."""
+    import os
+    import numpy as np
+    from conftest import SOURCE_DIR
+    ex = os.path.join(SOURCE_DIR, "examples")
+    t = np.arange(10**7) * 1e-3
+    calls = [lambda: fl.plan("breakaway", os.path.join(ex, "plan", "craig_motor_prior.json"),
+                             os.path.join(ex, "craig_motor_trapezoid.yaml"), runs=10**9),
+             lambda: fl.analyze_map(os.path.join(ex, "map_pid_hunting.yaml"),
+                                    {"friction.Fs": (1.5, 2.5, 1000), "controller.Kp": (3.0, 4.0, 1000)}),
+             lambda: fl.identify_lugre(t, np.sin(t), 0.01 * np.sin(t - 0.3), inertia=1.0)]
+    for call in calls:
+        with pytest.raises(fl.Error) as info:
+            call()
+        assert info.value.code == "budget.work", str(info.value)
