@@ -23,6 +23,7 @@
 #include "frictionlab/analysis/contour.hpp"
 #include "frictionlab/analysis/envelope.hpp"
 #include "frictionlab/analysis/stick_slip.hpp"
+#include "frictionlab/error.hpp"
 #include "frictionlab/format.hpp"
 #include "methods/method.hpp"
 #include "frictionlab/io/column_expression.hpp"
@@ -178,6 +179,7 @@ bool run_envelope(const AnalyzeArgs& a, const Dataset& d, const std::vector<doub
                                    e.exponential.relative_rms, e.mixed.lambda, e.mixed.q, e.mixed.relative_rms};
   if (!std::all_of(std::begin(figures_of_fit), std::end(figures_of_fit), [](double v) { return std::isfinite(v); })) {
     r.status = ResultStatus::error;
+    r.code = errc::output_not_finite;
     r.message = d.where() + "decay envelope: a figure of the fits is not a finite number (positions up to " +
                 format_number(*std::max_element(e.amplitudes.begin(), e.amplitudes.end())) +
                 " overflow double arithmetic); expected positions in m or rad of ordinary size";
@@ -212,6 +214,7 @@ bool run_contour(const AnalyzeArgs& a, const Dataset& d, const std::vector<doubl
   }
   if (!std::isfinite(c.radius) || !std::isfinite(c.roundness_m) || !std::isfinite(c.max_radial_error_m)) {
     r.status = ResultStatus::error;
+    r.code = errc::output_not_finite;
     r.message = d.where() + "contour: the radius or the radial errors are not finite numbers (coordinates that overflow "
                             "double arithmetic); expected positions in m of ordinary size";
     return false;

@@ -265,7 +265,9 @@ Handler register_export(CLI::App& app) {
       const std::string what = e.what();
       const bool prefix = what.rfind("prefix", 0) == 0;
       const bool constant = what.rfind("--float", 0) == 0 || what.rfind("export:", 0) == 0;
-      throw std::invalid_argument(prefix ? "--" + what : a->model + (constant ? ": " : ": --compensation ") + what);
+      // The code and fields stay (output.not_finite for a constant beyond the type's range).
+      throw InputError(error_code(e), prefix ? "--" + what : a->model + (constant ? ": " : ": --compensation ") + what,
+                       error_fields(e));
     }
     if (a->output == "-") {
       std::cout << text;

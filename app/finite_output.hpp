@@ -21,12 +21,12 @@ namespace frictionlab::cli {
 /// there is none.
 std::string non_finite_word(std::string_view text);
 
-/// `r` with status error and a message naming the figure (frictionlab::finite_or_error,
+/// `r` with status error, code output.not_finite and a message naming the figure (frictionlab::finite_or_error,
 /// identify/finite_result.hpp) or the word of `text` (the text the command would print) when it
 /// is ok and either is not finite; `r` as it is otherwise.
 Result finite_or_error(Result r, std::string_view text);
 
-/// Throws InputError (input.invalid, file `output`: the input gave numbers beyond double
+/// Throws InputError (output.not_finite, file `output`: the input gave numbers beyond double
 /// precision) naming the output, the word and its line when non_finite_word(text) finds one: for
 /// the writers of tables and text that are not a Result. `output` names the file ("-" or empty:
 /// standard output).

@@ -48,6 +48,10 @@
 // |                        | unwritable directory, a block device or socket, a link without       |        |
 // |                        | --overwrite                                                          |        |
 // | output.write_failed    | (InternalError) writing an output failed: disk full, I/O error       | file |
+// | output.not_finite      | a result or output refused because a number of it is not finite (a  | file, column, key, value |
+// |                        | figure or a simulated column that overflows double precision, a C    |        |
+// |                        | header's constant beyond double's or float's range): the input gave  |        |
+// |                        | numbers beyond what double precision holds; nothing is written       |        |
 // | budget.memory          | the run would need more memory than the memory budget (budget.hpp)   | file, key, option, value |
 // | budget.work            | the run would do more work (samples, solver steps, runs, YAML nodes, | file, key, option, value |
 // |                        | bytes read) than the work budget (budget.hpp)                         |        |
@@ -96,6 +100,7 @@ inline constexpr const char* output_is_input = "output.is_input";
 inline constexpr const char* output_duplicate = "output.duplicate";
 inline constexpr const char* output_not_writable = "output.not_writable";
 inline constexpr const char* output_write_failed = "output.write_failed";
+inline constexpr const char* output_not_finite = "output.not_finite";
 inline constexpr const char* budget_memory = "budget.memory";
 inline constexpr const char* budget_work = "budget.work";
 }  // namespace errc

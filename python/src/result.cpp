@@ -6,10 +6,16 @@
 #include <optional>
 #include <sstream>
 
+#include "frictionlab/error.hpp"
 #include "frictionlab/format.hpp"
 #include "io/atomic_write.hpp"
 
 namespace frictionlab::python {
+
+Result finite_answer(Result r) {
+  if (!r.ok() && r.code == errc::output_not_finite) throw InputError(r.code, r.message, {.file = r.data_file});
+  return r;
+}
 
 std::string axis_name(Axis a) { return a == Axis::rotary ? "rotary" : "linear"; }
 
@@ -132,7 +138,9 @@ void init_result(py::module_& m) {
 Outcome of an identification method: parameters (value, std, unit; SI), fit figures, optional
 validation on a second data set, diagnostics, and a status with a message. `result['Fc']` is a
 value; `result.parameters['Fc']` a Parameter; `to_json()` is the MODEL.json of the command line.
-A status of 'error' (data that cannot give an answer) is not an exception: check `result.ok`.)doc")
+A status of 'error' (data that cannot give an answer) is not an exception: check `result.ok`.
+Figures beyond double precision (a force offset of 1e167: std(M) = inf) are: the identify_*
+functions and validate raise frictionlab.Error with code 'output.not_finite'.)doc")
       .def_property_readonly("status", [](const Result& r) { return r.ok() ? "ok" : "error"; }, "'ok' or 'error'.")
       .def_property_readonly("ok", &Result::ok, "True when status is 'ok'.")
       .def_readonly("message", &Result::message, "Why status is 'error' (names file, parameter, expectation); '' when ok.")

@@ -15,6 +15,13 @@
 
 namespace frictionlab::python {
 
+/// `r` as it is, unless the library refused it because a figure is not a finite number (status
+/// error, code output.not_finite: finite_or_error of identify/finite_result.hpp): Python raises
+/// frictionlab.Error for that instead of returning a result (docs/python.md). Data that gives no
+/// answer (no motion, too few segments) stays a result of status 'error'.
+/// \throws InputError (output.not_finite, file the data file) with the result's message.
+Result finite_answer(Result r);
+
 /// "linear" or "rotary".
 std::string axis_name(Axis a);
 

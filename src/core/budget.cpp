@@ -97,8 +97,8 @@ void check_memory(double need_bytes, const std::string& what, const ErrorFields&
   const double limit = memory_budget();
   if (need_bytes <= limit) return;
   throw InputError(errc::budget_memory,
-                   what + ": that needs " + (std::isfinite(need_bytes) ? format_bytes(need_bytes) : std::string("unbounded")) +
-                       " of memory; the memory budget is " + format_bytes(limit) + " (" + budget_note() + ": " +
+                   what + ": that needs " + (std::isfinite(need_bytes) ? format_bytes(need_bytes) + " of memory" : std::string("unbounded memory")) +
+                       "; the memory budget is " + format_bytes(limit) + " (" + budget_note() + ": " +
                        (budget_factor() == 1.0 ? "half" : "a share") + " of the " + format_bytes(memory_available()) +
                        " this process may use; raise it with --budget FACTOR)",
                    fields);

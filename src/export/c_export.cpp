@@ -41,13 +41,17 @@ class Writer {
   std::string number(double x, const std::string& name = "") const {
     const std::string which = name.empty() ? "" : " (" + prefix_ + "_" + name + ")";
     if (!std::isfinite(x))
-      throw std::invalid_argument("export: a constant of the header would be " + std::string(std::isnan(x) ? "NaN" : x > 0 ? "inf" : "-inf") +
-                                  which + " (a parameter or option too large or too small for double arithmetic); expected finite values");
+      throw InputError(errc::output_not_finite,
+                       "export: a constant of the header would be " + std::string(std::isnan(x) ? "NaN" : x > 0 ? "inf" : "-inf") + which +
+                           " (a parameter or option too large or too small for double arithmetic); expected finite values",
+                       {.value = std::isnan(x) ? "NaN" : x > 0 ? "inf" : "-inf"});
     if (single_ && std::abs(x) > static_cast<double>(std::numeric_limits<float>::max())) {
       char v[40];
       std::snprintf(v, sizeof v, "%.6g", x);
-      throw std::invalid_argument(std::string("--float: a constant of the header is ") + v +
-                                  ", beyond float's range (3.4e+38)" + which + "; export without --float (double)");
+      throw InputError(errc::output_not_finite,  // float would hold it as inf
+                       std::string("--float: a constant of the header is ") + v + ", beyond float's range (3.4e+38)" + which +
+                           "; export without --float (double)",
+                       {.option = "--float", .value = v});
     }
     // Below float's smallest subnormal a literal rounds to 0 (a C compiler says so with
     // -Werror=overflow), and a 0 the law divides by (vs, a table's speed) would give inf.
@@ -856,9 +860,11 @@ std::string c_header(const FrictionLaw& law, const CExportOptions& options) {
     }
     constexpr double kMaxFloatStiffnessRatio = 1e15;
     if (std::isfinite(sigma0) && !(sigma0 / Fc <= kMaxFloatStiffnessRatio))
-      throw std::invalid_argument("--float: sigma0 / Fc = " + format_number(sigma0 / Fc) +
-                                  " (1/m or 1/rad) exceeds 1e+15, where the bristle rate sigma0 |v| / Fc leaves "
-                                  "float's range at a finite speed; export without --float (double)");
+      throw InputError(errc::output_not_finite,
+                       "--float: sigma0 / Fc = " + format_number(sigma0 / Fc) +
+                           " (1/m or 1/rad) exceeds 1e+15, where the bristle rate sigma0 |v| / Fc leaves "
+                           "float's range at a finite speed; export without --float (double)",
+                       {.key = "sigma0", .option = "--float", .value = format_number(sigma0)});
   }
   Writer w(options.prefix, options.single_precision);
   const std::string type = compensation_type(options.compensation);

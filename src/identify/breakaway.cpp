@@ -1,4 +1,5 @@
 #include "frictionlab/identify/breakaway.hpp"
+#include "frictionlab/identify/finite_result.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -141,7 +142,9 @@ BreakawayOptions make_breakaway_options(const OptionValues& v) {
   return o;
 }
 
-Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
+namespace {
+
+Result identify_breakaway_unchecked(const BreakawayData& d, const BreakawayOptions& o) {
   const Eigen::Index n = d.time.size();
   if (d.force.size() != n || d.velocity.size() != n)
     throw std::invalid_argument("breakaway: time, force and velocity must have equal lengths (have " + std::to_string(n) +
@@ -400,5 +403,11 @@ Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) {
   if (Fs < Fc) warn("Fs = " + format_number(Fs) + " is below Fc = " + format_number(Fc) + ": no stiction peak in this record");
   return r;
 }
+
+}  // namespace
+
+// Numbers or an error, never both (identify/finite_result.hpp): figures that overflow double
+// precision (a force scaled by 2e158: std(Fc) = inf) make an error, not an ok result with inf.
+Result identify_breakaway(const BreakawayData& d, const BreakawayOptions& o) { return finite_or_error(identify_breakaway_unchecked(d, o)); }
 
 }  // namespace frictionlab

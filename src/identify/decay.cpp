@@ -1,4 +1,5 @@
 #include "frictionlab/identify/decay.hpp"
+#include "frictionlab/identify/finite_result.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>
@@ -205,7 +206,9 @@ DecayOptions make_decay_options(const OptionValues& v) {
   return o;
 }
 
-Result identify_decay(const DecayData& d, const DecayOptions& o) {
+namespace {
+
+Result identify_decay_unchecked(const DecayData& d, const DecayOptions& o) {
   const Eigen::Index n = d.time.size();
   if (d.position.size() != n)
     throw std::invalid_argument("decay: time has " + std::to_string(n) + " samples but position has " +
@@ -290,5 +293,11 @@ Result identify_decay(const DecayData& d, const DecayOptions& o) {
                                        format_number(2 * p.std) + "): that friction is not detected");
   return r;
 }
+
+}  // namespace
+
+// Numbers or an error, never both (identify/finite_result.hpp): figures that overflow double
+// precision (a stiffness of 1e157 N/m: adequacy.residual_std = inf) make an error, not an ok result with inf.
+Result identify_decay(const DecayData& d, const DecayOptions& o) { return finite_or_error(identify_decay_unchecked(d, o)); }
 
 }  // namespace frictionlab

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <utility>
 
+#include "frictionlab/error.hpp"
 #include "frictionlab/format.hpp"
 
 namespace frictionlab {
@@ -43,6 +44,7 @@ Result finite_or_error(Result r) {
   const std::string what = non_finite_figure(r);
   if (what.empty()) return r;
   r.status = ResultStatus::error;
+  r.code = errc::output_not_finite;
   r.message = (r.data_file.empty() ? std::string() : r.data_file + ": ") + r.method + ": " + what +
               " is not a finite number (values or scales beyond what double precision holds); the data cannot "
               "give an answer";

@@ -1,4 +1,5 @@
 #include "frictionlab/identify/lugre.hpp"
+#include "frictionlab/identify/finite_result.hpp"
 #include "identify/ceres_cancel.hpp"
 #include "identify/ceres_quiet.hpp"
 #include "frictionlab/budget.hpp"
@@ -371,7 +372,9 @@ LugreOptions make_lugre_options(const OptionValues& v) {
   return o;
 }
 
-Result identify_lugre(const LugreData& d, const LugreOptions& o) {
+namespace {
+
+Result identify_lugre_unchecked(const LugreData& d, const LugreOptions& o) {
   const auto t_start = std::chrono::steady_clock::now();
   const Eigen::Index n = d.time.size();
   if (!(std::isfinite(o.inertia) && o.inertia > 0))
@@ -928,5 +931,12 @@ Result identify_lugre(const LugreData& d, const LugreOptions& o) {
   add_lugre_adequacy(r, d, M, lg, dt, o.axis);
   return r;
 }
+
+}  // namespace
+
+// Numbers or an error, never both (identify/finite_result.hpp): figures that overflow double
+// precision (forces and inertia scaled by 1e160: adequacy.residual_std = inf) make an error, not an
+// ok result with inf.
+Result identify_lugre(const LugreData& d, const LugreOptions& o) { return finite_or_error(identify_lugre_unchecked(d, o)); }
 
 }  // namespace frictionlab

@@ -35,6 +35,7 @@ std::string to_json(const Result& r, int indent) {
   j["frictionlab"] = {{"version", kVersion}};  // the program that made the result (reproducibility)
   j["status"] = r.ok() ? "ok" : "error";
   j["message"] = r.message;
+  if (!r.ok() && !r.code.empty()) j["error"] = {{"code", r.code}, {"message", r.message}};
   j["method"] = r.method;
   j["model"] = r.model;
   j["data"] = {{"file", r.data_file}, {"sha256", r.data_sha256}};

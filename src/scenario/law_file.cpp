@@ -8,6 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -235,8 +236,11 @@ nlohmann::json read_model_json(const std::string& path) {
     throw InputError(errc::scenario_format,
                      path + " is a directory; expected a JSON model file (MODEL.json of frictionlab identify --json)",
                      {.file = path});
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(errc::scenario_format, path + ": cannot open the model file", {.file = path});
+  if (!std::filesystem::exists(path, ec))
+    throw InputError(errc::scenario_format, path + ": cannot open the model file", {.file = path});
+  // Read within the budget as every input file (io/input_file.hpp): a device (/dev/zero named
+  // .json) is refused before a byte is read, a FIFO is read as a stream that ends or is refused.
+  std::istringstream in(read_input_file(path, "model file", errc::scenario_format));
   nlohmann::json j;
   try {
     j = parse_unique_keys(in, path);

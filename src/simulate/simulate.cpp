@@ -1,4 +1,5 @@
 #include "frictionlab/cancellation.hpp"
+#include "frictionlab/error.hpp"
 #include "frictionlab/models/parameter.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "frictionlab/simulate/output_size.hpp"
@@ -127,10 +128,12 @@ void check_finite(const Trajectory& tr) {
     const std::vector<double>& c = tr.column(name);
     for (std::size_t i = 0; i < c.size(); ++i)
       if (!std::isfinite(c[i]))
-        throw std::invalid_argument("the simulation's column '" + name + "' is " + detail::format_value(c[i]) + " at t = " +
-                                    detail::format_value(tr.time[i]) +
-                                    " s: a parameter or input beyond what the model can compute in double precision; "
-                                    "expected values that keep every force, voltage and state finite");
+        throw InputError(errc::output_not_finite,
+                         "the simulation's column '" + name + "' is " + detail::format_value(c[i]) + " at t = " +
+                             detail::format_value(tr.time[i]) +
+                             " s: a parameter or input beyond what the model can compute in double precision; "
+                             "expected values that keep every force, voltage and state finite",
+                         {.column = name, .value = detail::format_value(c[i])});
   }
 }
 

@@ -3,7 +3,8 @@
 # memory is refused at once, exit 2, naming the key, option or file and the size, before any
 # work: a character device named .csv, a pipe that goes on past the budget, a YAML alias bomb, a
 # fixed step or a controller sample period that gives more steps than the budget, --runs
-# 2147483647, a million-point map, --substeps 1000000, a part whose total is edited to 1e18.
+# 2147483647, a million-point map, --substeps 1000000, a LuGre plan at --rate 1e9, a long run, a
+# table input reaching 1e308 s, a part whose total is edited to 1e18.
 # Pipes holding a finite input are read as streams. --budget FACTOR raises or lowers the budget;
 # each refusal here ends within seconds (the script's time is the check that nothing ran).
 source "$(dirname "$0")/lib.sh"
@@ -16,6 +17,8 @@ expect_fail "zero.csv is a character device; expected the CSV file as a regular 
   identify sweep "$tmp/zero.csv"
 ln -s /dev/zero "$tmp/zero.yaml"
 expect_fail "zero.yaml is a character device" simulate "$tmp/zero.yaml" -o "$tmp/out.csv"
+ln -s /dev/zero "$tmp/zero.json"  # a law or model file read as JSON (once read without this check)
+expect_fail "zero.json is a character device" export "$tmp/zero.json" --c "$tmp/zero.h"
 
 # A pipe that goes on (yes): read as a stream until the budget, then refused naming the file.
 mkfifo "$tmp/endless.csv"
@@ -57,6 +60,27 @@ expect_fail "the map's 1000000 points (--vary) of about" \
 "$exe" simulate "$pendulum" -o "$tmp/swing.csv" 2> /dev/null
 expect_fail "lugre: 4001 samples x --substeps 1000000 x (--max-iterations 50 + 1): that is 2.04e+11 simulation steps" \
   identify lugre "$tmp/swing.csv" --force applied --inertia 1 --substeps 1000000
+
+# A LuGre plan at --rate 1e9 Hz: its sine table (1.2e10 samples) is refused before it is built (it
+# once built it for minutes before the plan's own check of its runs).
+expect_fail "the lugre profile of" plan lugre --prior "$src/examples/plan/canudas_prior.json" \
+  --scenario "$src/examples/canudas_presliding.yaml" --limits travel=0.05 --noise position=1e-7 --rate 1e9 -o "$tmp/sines.csv"
+grep -qF -- "--rate 1e+09 Hz" "$tmp/err.txt" || fail "plan lugre --rate 1e9: $(cat "$tmp/err.txt")"
+[ ! -e "$tmp/sines.csv" ] || fail "a refused plan wrote its profile"
+# A long run (duration: 150000 s at 200 Hz, 3e7 rows, 2.4 GB) within a lowered budget, and a table
+# input whose times reach 1e308 s: refused naming the keys and the memory, before a step.
+sed 's/^duration: 20/duration: 150000/' "$pendulum" > "$tmp/long.yaml"
+expect_fail "long.yaml: duration and output_rate: 150000 s at 200 Hz gives 3e+07 output rows" \
+  --budget 0.01 simulate "$tmp/long.yaml" -o "$tmp/out.csv"
+cat > "$tmp/table.yaml" <<'YAML'
+plant: {type: axis, M: 1.0}
+friction: {law: coulomb-viscous, Fc: 1.0, Fv: 0.4}
+input: {type: table, times: [0, 1, 1.0e308], values: [0, 1, 1]}
+duration: 1.0e308
+YAML
+expect_fail "table.yaml: duration: 1e+308 s at 100 Hz (the default output_rate) gives inf output rows" simulate "$tmp/table.yaml" -o "$tmp/out.csv"
+grep -q "needs unbounded memory;" "$tmp/err.txt" || fail "table input 1e308: $(cat "$tmp/err.txt")"
+[ ! -e "$tmp/out.csv" ] || fail "a refused run wrote its output"
 
 # A part file whose total is edited to 1e18: refused reading it, before merge allocates.
 "$exe" analyze map "$src/examples/map_pid_hunting.yaml" --vary friction.Fs=1:2:2 --jobs 1 --shard 1/2 -o "$tmp/p1.json" > /dev/null

@@ -157,8 +157,53 @@ for method in idim sweep; do
   else
     [ "$code" -eq 2 ] || fail "identify $method, offset 1e167: exit $code: $(cat "$tmp/o.err")"
     grep -q '"status": "error"' "$tmp/o.json" || fail "identify $method, offset 1e167: exit 2 without an error JSON"
+    grep -q '"code": "output.not_finite"' "$tmp/o.json" || fail "identify $method, offset 1e167: no code output.not_finite: $(cat "$tmp/o.json")"
   fi
 done
+# The refusal's code is output.not_finite (include/frictionlab/error.hpp), exit status 2 as for any
+# data that cannot give an answer: breakaway on the Craig motor's record with the torque scaled by
+# 2e158 (std(Fc) = inf; the library refuses it, identify/finite_result.hpp), the envelope above.
+"$exe" simulate "$src/examples/craig_motor_trapezoid.yaml" -o "$tmp/craig.csv" 2> /dev/null
+set +e
+"$exe" identify breakaway "$tmp/craig.csv" --force "applied * 2e158" --json - > "$tmp/b.json" 2> "$tmp/b.err"
+code=$?
+"$exe" analyze envelope "$tmp/huge_decay.csv" --json - > "$tmp/e.json" 2> /dev/null
+ecode=$?
+set -e
+[ "$code" -eq 2 ] || fail "breakaway, torque scaled by 2e158: exit $code: $(cat "$tmp/b.err")"
+[ "$ecode" -eq 2 ] || fail "envelope of 1e307: exit $ecode"
+/usr/bin/python3 - "$tmp/b.json" "$tmp/e.json" <<'PY'
+import json, sys
+for path in sys.argv[1:]:
+    j = json.load(open(path))
+    assert j["status"] == "error" and j["error"]["code"] == "output.not_finite", (path, j.get("error"), j["message"])
+    assert "not a finite number" in j["error"]["message"], j["error"]
+PY
+
+# validate: a measured force beyond what double's squares hold (the EMPS drive gain scaled to
+# 1e300 N/V: the validation's rmse overflows) is an error with exit 2, never an ok run with inf or
+# nan; an ok run of validate has neither in its text or JSON.
+emps="$src/data/emps/DATA_EMPS.mat"
+printf '{"schema": 2, "status": "ok", "method": "idim", "law": {"law": "coulomb-viscous", "Fc": 20, "Fv": 200}, "parameters": {"M": {"value": 95.1, "std": 0.1, "unit": "kg"}}}\n' > "$tmp/emps_model.json"
+validate_emps() {
+  "$exe" validate "$tmp/emps_model.json" "$emps" --scenario "$src/examples/emps_closed_loop.yaml" --time t --position qm \
+    --input vir "$@"
+}
+set +e
+FRICTIONLAB_NO_PROGRESS=1 validate_emps --gain 1e300 --json - > "$tmp/v.json" 2> "$tmp/v.err"
+code=$?
+set -e
+[ "$code" -eq 2 ] || fail "validate, gain 1e300: exit $code, expected 2: $(cat "$tmp/v.err")"
+[ "$(wc -l < "$tmp/v.err")" -eq 1 ] || fail "validate, gain 1e300: expected one line on stderr: $(cat "$tmp/v.err")"
+grep -q "is not a finite number" "$tmp/v.err" || fail "validate, gain 1e300: $(cat "$tmp/v.err")"
+/usr/bin/python3 - "$tmp/v.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["status"] == "error" and j["error"]["code"] == "output.not_finite", (j["status"], j.get("error"), j["message"])
+PY
+validate_emps --gain gtau --json "$tmp/v_ok.json" > "$tmp/v_ok.txt"
+grep -q '"status": "ok"' "$tmp/v_ok.json" || fail "validate, EMPS: not ok"
+no_non_finite "$tmp/v_ok.txt" "$tmp/v_ok.json"
 # simulate (CSV and summary), plan (text, profile, JSON), analyze (text; validate writes through the
 # same emit() as identify and analyze).
 "$exe" simulate "$src/examples/craig_pendulum_combined.yaml" -o "$tmp/p.csv" 2> "$tmp/sim.txt"

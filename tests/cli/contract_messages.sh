@@ -64,6 +64,17 @@ for method in lugre; do
   grep -q "inf" "$tmp/err.txt" && fail "identify $method: a message with inf: $(cat "$tmp/err.txt")"
 done
 
+# breakaway on velocities near the largest double (the fit's regressors overflow): refused, and
+# never "> inf" in the message.
+/usr/bin/python3 - "$tmp/farv.csv" <<'PY'
+import sys
+with open(sys.argv[1], "w") as f:
+    f.write("time,velocity,force\n")
+    for k in range(200):
+        f.write(f"{k * 1e-3},{0 if k < 5 or k > 190 else (-1) ** k * 1.5e308},{1.0}\n")
+PY
+expect_fail "farv.csv: " identify breakaway "$tmp/farv.csv"
+grep -qw "inf" "$tmp/err.txt" && fail "identify breakaway: a message with inf: $(cat "$tmp/err.txt")"
 # A LuGre law too stiff for a double: refused naming sigma0 (in a scenario and in a law file).
 sed 's/^  sigma0: 1.0e5 .*/  sigma0: 1.0e308/' "$src/examples/canudas_stick_slip.yaml" > "$tmp/stiff.yaml"
 grep -q "sigma0: 1.0e308" "$tmp/stiff.yaml" || fail "no sigma0 line to edit"

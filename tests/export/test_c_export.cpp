@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "error_message.hpp"
+#include "frictionlab/error.hpp"
 #include "frictionlab/export/c_export.hpp"
 #include "temp_dir.hpp"
 
@@ -700,6 +701,30 @@ TEST_P(EffectsExport, ArgumentsFollowTheTermsAndCompensationsTakeLoadAndTemperat
 }
 
 INSTANTIATE_TEST_SUITE_P(BothPrecisions, EffectsExport, ::testing::Bool());
+
+// A constant the header's type cannot hold is refused with the code output.not_finite (error.hpp):
+// float would hold 1e39 as inf, and a bristle rate sigma0 / Fc of 1e39 overflows float at a
+// finite speed.
+TEST(CExportErrors, ConstantsBeyondTheTypeAreOutputNotFinite) {
+  CExportOptions o;
+  o.single_precision = true;
+  auto code_of = [&](const FrictionLaw& law) -> std::string {
+    try {
+      c_header(law, o);
+    } catch (const InputError& e) {
+      return e.code();
+    } catch (const std::exception& e) {
+      return std::string("not an InputError: ") + e.what();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(code_of(Coulomb{1e39}), "output.not_finite");
+  LuGre stiff;
+  stiff.sigma0 = 1e39;
+  EXPECT_EQ(code_of(stiff), "output.not_finite");
+  o.single_precision = false;
+  EXPECT_EQ(code_of(Coulomb{1e39}), "no error");  // double holds it
+}
 
 TEST(CExportErrors, DynamicLawWithLoadIsRefusedSayingWhy) {
   using testing::error_of;

@@ -33,7 +33,12 @@
 #include <vector>
 
 #include "frictionlab/budget.hpp"
+#include "frictionlab/error.hpp"
+#include "frictionlab/identify/breakaway.hpp"
+#include "frictionlab/identify/decay.hpp"
+#include "frictionlab/identify/finite_result.hpp"
 #include "frictionlab/identify/idim.hpp"
+#include "frictionlab/identify/lugre.hpp"
 #include "frictionlab/identify/result.hpp"
 #include "frictionlab/identify/sweep.hpp"
 #include "frictionlab/scenario/scenario.hpp"
@@ -370,6 +375,91 @@ TEST(ExtremeValues, IdentificationCasesThatFailedOnce) {
   const BudgetFactor budget(1e-3);
   Outcomes idim_out, sweep_out;
   for (int c : {311, 618, 1090, 2051, 2420, 3370}) identify_case(c, idim_out, sweep_out);
+}
+
+// breakaway, decay and lugre give an answer with finite figures or an error, in the library (so
+// C++ and Python callers get it, not only the command line): records scaled towards the edge of
+// double precision, where the estimates stay finite while a figure overflows (found with the
+// command line, whose last check caught them: breakaway with the torque scaled by 2e158 gave
+// std(Fc) = inf, decay with a stiffness of 1e157 N/m and lugre with torque and inertia scaled by
+// 1e160 gave adequacy.residual_std = inf, each with status ok from the library). A few scales
+// around each: every result is finite or an error, and at least one is refused with the code
+// output.not_finite naming the figure (the check acts, not a refusal elsewhere).
+Eigen::VectorXd column_of(const std::vector<double>& c) { return Eigen::Map<const Eigen::VectorXd>(c.data(), static_cast<Eigen::Index>(c.size())); }
+
+struct Refusals {
+  int not_finite = 0;
+  std::string last;
+  void check(const Result& r, const std::string& what) {
+    EXPECT_EQ(non_finite_figure(r), "") << what;  // empty for an error: never ok with inf in it
+    if (!r.ok()) {
+      EXPECT_FALSE(r.message.empty()) << what;
+      if (r.code == errc::output_not_finite) {
+        ++not_finite;
+        last = r.message;
+        EXPECT_NE(r.message.find("is not a finite number"), std::string::npos) << what << ": " << r.message;
+      }
+    }
+  }
+};
+
+TEST(ExtremeValues, BreakawayDecayAndLugreRefuseFiguresBeyondDoublePrecision) {
+  const std::string examples = std::string(FRICTIONLAB_SOURCE_DIR) + "/examples/";
+  {
+    const Trajectory tr = simulate(load_scenario(examples + "craig_motor_trapezoid.yaml"));
+    Refusals seen;
+    for (double scale : {1.5e158, 2e158, 2.5e158}) {
+      const BreakawayData d{column_of(tr.time), scale * column_of(tr.applied), column_of(tr.velocity), {}};
+      seen.check(identify_breakaway(d, {}), "breakaway, torque scaled by " + literal(scale));
+    }
+    EXPECT_GE(seen.not_finite, 1) << "no breakaway result refused as not finite";
+  }
+  {
+    const Trajectory tr = simulate(load_scenario(examples + "craig_pendulum_combined.yaml"));
+    Refusals seen;
+    for (double k : {1e156, 1e157, 1e158}) {
+      DecayOptions o;
+      o.stiffness = k;  // N/m: the energies of a 0.5 m swing overflow their squares
+      o.inertia = 1.0;
+      seen.check(identify_decay({column_of(tr.time), column_of(tr.position)}, o), "decay, stiffness " + literal(k));
+    }
+    EXPECT_GE(seen.not_finite, 1) << "no decay result refused as not finite";
+  }
+  {
+    const Scenario sc = scenario_from_yaml(YAML::Load(R"(
+plant: {type: axis, M: 1.0}
+friction: {law: lugre, sigma0: 1.0e5, sigma1: 316.22776601683796, sigma2: 0.4, Fc: 1.0, Fs: 1.5, vs: 0.001}
+input: {type: sine, amplitude: 3.0, omega: 3.14159}
+duration: 2
+output_rate: 1000
+)"),
+                                           "lugre.yaml");
+    const Trajectory tr = simulate(sc);
+    Refusals seen;
+    for (double scale : {1e156, 1e160, 1e200}) {
+      LugreData d{column_of(tr.time), scale * column_of(tr.applied), column_of(tr.position)};
+      LugreOptions o;
+      o.inertia = scale;  // the same motion: the force and the inertia scaled alike
+      seen.check(identify_lugre(d, o), "lugre, force and inertia scaled by " + literal(scale));
+    }
+    EXPECT_GE(seen.not_finite, 1) << "no lugre result refused as not finite";
+  }
+}
+
+// A simulation whose column would hold an inf (the Craig motor with a back-EMF constant of
+// 1e308 V s/rad: inf voltages) is refused with the code output.not_finite, naming the column.
+TEST(ExtremeValues, SimulatedColumnThatIsNotFiniteIsOutputNotFinite) {
+  YAML::Node root = YAML::LoadFile(std::string(FRICTIONLAB_SOURCE_DIR) + "/examples/craig_motor_trapezoid.yaml");
+  root["plant"]["Kb"] = 1e308;
+  const Scenario sc = scenario_from_yaml(root, "kb.yaml");
+  try {
+    simulate(sc);
+    ADD_FAILURE() << "a simulation with inf voltages returned";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.code(), errc::output_not_finite) << e.what();
+    EXPECT_FALSE(e.fields().column.empty()) << e.what();
+    EXPECT_NE(std::string(e.what()).find(" at t = "), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -58,3 +58,93 @@ def test_not_utf8_message_does_not_break_the_exception(tmp_path):
         fl.load(str(p))
     assert info.value.code == "data.not_a_number"
     assert info.value.row == 3
+
+
+# Numbers or an error, never both (docs/guarantees.md): figures beyond double precision raise
+# frictionlab.Error with code output.not_finite in every identify_* (the library's
+# finite_or_error, identify/finite_result.hpp), never a result with inf in it. The scales are
+# those the command line found (a torque scaled by 2e158: std(Fc) = inf; a stiffness of 1e157:
+# residual_std = inf; a force offset of 1e167: std(M) = inf); a few around each, at least one
+# refused, every other one finite.
+def _finite_figures(r):
+    import math
+    for p in r.parameters.values():
+        assert math.isfinite(p.value) and not math.isinf(p.std), (r.method, p)
+    assert math.isfinite(r.fit.rmse), r.fit.rmse
+
+
+def _answers_or_not_finite(calls, must_refuse=True):
+    refused = []
+    for call in calls:
+        try:
+            r = call()
+        except fl.Error as e:
+            assert e.code == "output.not_finite", (e.code, str(e))
+            assert "is not a finite number" in str(e)
+            refused.append(str(e))
+            continue
+        if r.ok:
+            _finite_figures(r)
+        else:
+            assert "not a finite number (values or scales" not in r.message, r.message
+    assert refused or not must_refuse, "none refused as not finite"
+    return refused
+
+
+def test_figures_beyond_double_precision_raise_output_not_finite():
+    import os
+    import numpy as np
+    from conftest import SOURCE_DIR
+    examples = os.path.join(SOURCE_DIR, "examples")
+    tr = fl.simulate(os.path.join(examples, "craig_motor_trapezoid.yaml"))
+    _answers_or_not_finite([lambda s=s: fl.identify_breakaway(tr["time"], s * tr["applied"], tr["velocity"])
+                            for s in (1.5e158, 2e158, 2.5e158)])
+    pend = fl.simulate(os.path.join(examples, "craig_pendulum_combined.yaml"))
+    _answers_or_not_finite([lambda k=k: fl.identify_decay(pend["time"], pend["position"], stiffness=k, inertia=1.0)
+                            for k in (1e156, 1e157, 1e158)])
+    t = np.arange(2001) * 1e-3
+    lugre = fl.simulate({"plant": {"type": "axis", "M": 1.0},
+                         "friction": {"law": "lugre", "sigma0": 1e5, "sigma1": 316.22776601683796, "sigma2": 0.4,
+                                      "Fc": 1.0, "Fs": 1.5, "vs": 0.001},
+                         "input": {"type": "sine", "amplitude": 3.0, "omega": 3.14159},
+                         "duration": 2, "output_rate": 1000})
+    assert len(lugre["time"]) == len(t)
+    _answers_or_not_finite([lambda s=s: fl.identify_lugre(lugre["time"], s * lugre["applied"], lugre["position"], inertia=s)
+                            for s in (1e156, 1e160, 1e200)])
+    # idim and sweep: a force offset of 1e167 on constant-speed steps (tests/cli/contract_finite.sh).
+    rng = np.random.default_rng(3)
+    levels = [0.05, 0.2, -0.05, 0.1, -0.2, 0.08, -0.08, 0.15]
+    ts = np.arange(8000) * 1e-3
+    v = np.repeat(levels, 1000) + 1e-4 * rng.standard_normal(8000)
+    f = np.sign(v) * (1 + 0.5 * np.exp(-(v / 0.02) ** 2)) + 0.4 * v + 0.01 * rng.standard_normal(8000)
+    q = np.cumsum(v) * 1e-3
+    _answers_or_not_finite([lambda o=o: fl.identify_idim(ts, f + o, position=q) for o in (1e166, 1.1746487914836065e167, 1e168)],
+                           must_refuse=False)
+
+
+def test_data_without_an_answer_is_still_a_result():
+    # Only figures beyond double precision raise; no motion stays status 'error' (docs/python.md).
+    import numpy as np
+    t = np.arange(200) * 0.01
+    r = fl.identify_breakaway(t, t * 1e-4, np.zeros(200))
+    assert not r.ok and "no motion" in r.message
+
+
+def test_work_beyond_the_budget_is_refused_before_it_starts():
+    """The sizes of the Ctrl-C findings (plan(runs=10**9), a 10**6-point map, identify_lugre on
+    10**7 samples) are refused by the work budget before any run, with code budget.work
+    (tests/python/test_cancellation.py interrupts the sizes within it)."""
+    import os
+    import numpy as np
+    from conftest import SOURCE_DIR
+    ex = os.path.join(SOURCE_DIR, "examples")
+    t = np.arange(10**7) * 1e-3
+    calls = [lambda: fl.plan("breakaway", os.path.join(ex, "plan", "craig_motor_prior.json"),
+                             os.path.join(ex, "craig_motor_trapezoid.yaml"), runs=10**9),
+             lambda: fl.analyze_map(os.path.join(ex, "map_pid_hunting.yaml"),
+                                    {"friction.Fs": (1.5, 2.5, 1000), "controller.Kp": (3.0, 4.0, 1000)}),
+             lambda: fl.identify_lugre(t, np.sin(t), 0.01 * np.sin(t - 0.3), inertia=1.0)]
+    for call in calls:
+        with pytest.raises(fl.Error) as info:
+            call()
+        assert info.value.code == "budget.work", str(info.value)

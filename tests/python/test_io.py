@@ -81,6 +81,35 @@ def test_load_law_yaml_json_and_model_json(tmp_path):
         fl.load_law(tmp_path / "bad.yaml")
 
 
+def test_devices_are_refused_and_fifos_read_as_streams(tmp_path):
+    """Input files are read once within the budget (docs/guarantees.md): sha256_file('/dev/zero')
+    is refused at once (it used to hash without end), and so is a law .json linked to it; a FIFO is
+    hashed or read as a law file as it streams."""
+    import hashlib
+    import subprocess
+    import sys
+    with pytest.raises(fl.Error, match="character device") as info:
+        fl.sha256_file("/dev/zero")
+    assert info.value.code == "data.file_unreadable"
+    os.symlink("/dev/zero", tmp_path / "zero.json")  # a law file read as JSON (it was read without a check)
+    with pytest.raises(fl.Error, match="character device"):
+        fl.load_law(str(tmp_path / "zero.json"))
+    for name, text in (("law.yaml", b"law: coulomb-viscous\nFc: 2\nFv: 0.5\n"),
+                       ("law.json", b'{"law": "coulomb-viscous", "Fc": 2, "Fv": 0.5}\n')):
+        fifo = tmp_path / name
+        os.mkfifo(fifo)
+        for read in (fl.sha256_file, fl.load_law):
+            # The writer is another process, as a pipe's writer is (load_law holds the GIL while it reads).
+            writer = subprocess.Popen([sys.executable, "-c", "import sys; open(sys.argv[1], 'wb').write(sys.argv[2].encode())",
+                                       str(fifo), text.decode()])
+            got = read(str(fifo))
+            assert writer.wait(timeout=60) == 0
+            if read is fl.sha256_file:
+                assert got == hashlib.sha256(text).hexdigest()
+            else:
+                assert got.parameters == {"Fc": 2.0, "Fv": 0.5}, name
+
+
 # ---- real rigs' logs: no header row, other delimiters, irregular time ------------------------
 
 def _robot_log(path, rows=800, seed=5, hole_after=None):

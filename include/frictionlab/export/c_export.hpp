@@ -60,10 +60,11 @@ struct CExportOptions {
 ///         the law ("lugre-observer: law = stribeck must be lugre ...", "disturbance-observer:
 ///         inertia = 0 must be > 0 ..."); InputError (law.parameter, key mu_load or T_ref) for a
 ///         dynamic law with load or temperature terms (its state update runs on fixed levels), and
-///         (key ripple_period) for a compensation of a law with a ripple; std::invalid_argument for
-///         a constant the header's type cannot hold (not finite; with single_precision beyond
-///         float's range or nonzero below its smallest magnitude, naming the constant) and, with
-///         single_precision, a bristle law whose sigma0 / Fc exceeds 1e15 (its rate would overflow
+///         (key ripple_period) for a compensation of a law with a ripple; InputError
+///         (output.not_finite) for a constant that is not finite or, with single_precision, beyond
+///         float's range, naming the constant; std::invalid_argument for a nonzero constant below
+///         float's smallest magnitude with single_precision; InputError (output.not_finite, key
+///         sigma0), with single_precision, for a bristle law whose sigma0 / Fc exceeds 1e15 (its rate would overflow
 ///         float at a finite speed).
 std::string c_header(const FrictionLaw& law, const CExportOptions& options = {});
 

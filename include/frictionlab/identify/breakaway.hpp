@@ -71,6 +71,9 @@ BreakawayOptions make_breakaway_options(const OptionValues& values);
 /// diagnostics.lists["breakaways"]: each start's time, load and breakaway force. result.law
 /// carries mu_load_static and mu_load_coulomb when they form a law (mu_load_static >=
 /// mu_load_coulomb >= 0), else a warning says why not.
+/// Figures that overflow double precision (values or scales beyond what it holds) give status
+/// "error" with code "output.not_finite" naming the figure (finite_or_error,
+/// identify/finite_result.hpp), never an ok result with inf in it.
 /// \throws std::invalid_argument on unequal lengths (the load's included), non-finite samples or
 ///         irregular time.
 Result identify_breakaway(const BreakawayData& data, const BreakawayOptions& options = {});

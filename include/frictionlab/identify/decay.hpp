@@ -46,6 +46,9 @@ DecayOptions make_decay_options(const OptionValues& values);
 /// the friction the motion shows, -(restoring force + M a) with M by least squares, less
 /// Fc sign(v) + Fv v, over the samples in motion away from reversals (diagnostics.adequacy,
 /// residual_by_velocity, residual_by_time, warnings; "adequacy_inertia" the M used; units of Fc).
+/// Figures that overflow double precision (values or scales beyond what it holds) give status
+/// "error" with code "output.not_finite" naming the figure (finite_or_error,
+/// identify/finite_result.hpp), never an ok result with inf in it.
 /// \throws std::invalid_argument on unequal lengths, irregular time, or neither stiffness nor
 ///         natural_frequency given (or not positive).
 Result identify_decay(const DecayData& data, const DecayOptions& options);

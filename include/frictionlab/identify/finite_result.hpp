@@ -23,9 +23,13 @@ namespace frictionlab FRICTIONLAB_API {
 /// none, or when the status is error. Never throws.
 std::string non_finite_figure(const Result& r);
 
-/// `r` with status error and a message naming the figure ("FILE: METHOD: std(M) = inf is not a
-/// finite number (values or scales beyond what double precision holds); the data cannot give an
-/// answer") when it is ok and non_finite_figure(r) finds one; `r` as it is otherwise.
+/// `r` with status error, code "output.not_finite" (frictionlab/error.hpp) and a message naming
+/// the figure ("FILE: METHOD: std(M) = inf is not a finite number (values or scales beyond what
+/// double precision holds); the data cannot give an answer") when it is ok and
+/// non_finite_figure(r) finds one; `r` as it is otherwise. Every identification of the library
+/// returns through it (identify_idim, identify_sweep, identify_breakaway, identify_decay,
+/// identify_lugre); Python raises frictionlab.Error with that code instead of returning such a
+/// result.
 Result finite_or_error(Result r);
 
 }  // namespace frictionlab

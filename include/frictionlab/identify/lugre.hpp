@@ -104,6 +104,9 @@ LugreOptions make_lugre_options(const OptionValues& values);
 /// record from its start; diagnostics "free_run_relative_error_percent"), "force" (length N).
 /// A record without sliding (when the static part must be identified) or without any motion gives
 /// status "error" with a message saying so.
+/// Figures that overflow double precision (values or scales beyond what it holds) give status
+/// "error" with code "output.not_finite" naming the figure (finite_or_error,
+/// identify/finite_result.hpp), never an ok result with inf in it.
 /// \throws std::invalid_argument when options.inertia is not > 0 (naming --inertia and its unit),
 ///         on unequal lengths, non-finite samples, irregular time, substeps < 1, or a `static_law`
 ///         of an unsupported kind.

@@ -76,6 +76,10 @@ enum class ResultStatus { ok, error };
 struct Result {
   ResultStatus status = ResultStatus::ok;
   std::string message;      ///< why status is error (names file, parameter, expectation); empty when ok
+  /// The error code (frictionlab/error.hpp) of a status error that has one: "output.not_finite"
+  /// when the figures are not finite numbers (finite_or_error, identify/finite_result.hpp);
+  /// empty when ok and for data that gives no answer (no motion, too few segments).
+  std::string code;
   std::string method;       ///< "idim", "sweep", ...
   std::string model;        ///< friction law name, e.g. "coulomb-viscous"
   std::string data_file;    ///< identification data file
@@ -113,7 +117,8 @@ struct Result {
 ///  "fit":{"relative_error_percent":e,"rmse":r,"samples":n,"quantity":...,"unit":...} (the last two when set),"validation":{...} (only when set),
 ///  "diagnostics":{"condition_number":c,"warnings":[...],"undetermined":[...],"at_bound":[...],
 ///  "correlation":{"names":[...],"matrix":[[...]]} (only when computed), ...numbers, ...groups,
-///  ...lists, ...texts}}. Non-finite numbers are null.
+///  ...lists, ...texts}}. Non-finite numbers are null. A status error with a `code` also has
+///  "error":{"code":...,"message":...} (the error JSON's form, docs/contract.md).
 /// Then each of json_sections under its key (under diagnostics for "diagnostics.NAME"). `indent` < 0 gives one line. (Returns text so
 /// nlohmann_json stays a private dependency.)
 /// \throws std::invalid_argument naming the key when a json_sections text is not valid JSON.

@@ -47,7 +47,9 @@ namespace frictionlab FRICTIONLAB_API {
 ///         naming the option and its value;
 ///         std::runtime_error when the integrator fails ("simulation failed at t = T s: REASON");
 ///         nothing partial is returned.
-///         std::invalid_argument too when the plant takes more than one input.
+///         std::invalid_argument too when the plant takes more than one input; InputError
+///         (output.not_finite, naming the column and the time) when a column would hold an inf or
+///         NaN (a parameter beyond double precision).
 Trajectory simulate(const Plant& plant, const FrictionLaw& law, const InputSignal& input,
                     const SimulationOptions& options);
 

@@ -22,7 +22,7 @@ void bind(py::module_& m) {
       o.heldout = trajectory_arrays("identify_auto: validate", get("time"), get("force"), get("position"), get("velocity"),
                                     py::none(), py::none(), h.contains("file") ? h["file"].cast<std::string>() : std::string(), "");
     }
-    return run_cancellable([&] { return identify_auto(d, o); });
+    return finite_answer(run_cancellable([&] { return identify_auto(d, o); }));
   });
 }
 

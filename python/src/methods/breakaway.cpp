@@ -23,7 +23,7 @@ void bind(py::module_& m) {
     const auto [t, f, v] = time_force_velocity("identify_breakaway", time, force, velocity);
     BreakawayData d{t, f, v, {}};
     d.load = vector_arg(load, "identify_breakaway", "load", ArraySpec{.optional = true});
-    return run_cancellable([&] { return identify_breakaway(d, o); });
+    return finite_answer(run_cancellable([&] { return identify_breakaway(d, o); }));
   });
 }
 

@@ -23,7 +23,7 @@ void bind(py::module_& m) {
   m.def("_identify_decay", [](py::object time, py::object position, const DecayOptions& o) {
     const DecayData d{vector_arg(time, "identify_decay", "time"), vector_arg(position, "identify_decay", "position")};
     same_length("identify_decay", {{"time", d.time.size()}, {"position", d.position.size()}});
-    return run_cancellable([&] { return identify_decay(d, o); });
+    return finite_answer(run_cancellable([&] { return identify_decay(d, o); }));
   });
 }
 

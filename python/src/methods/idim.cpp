@@ -90,7 +90,7 @@ void bind(py::module_& m) {
     d.feedforward = vector_arg(feedforward, "identify_idim", "feedforward", optional);
     same_length("identify_idim", {{"time", d.time.size()}, {"reference", d.reference.size()},
                                   {"feedforward", d.feedforward.size()}});
-    return run_cancellable([&] { return identify_idim(d, o); });
+    return finite_answer(run_cancellable([&] { return identify_idim(d, o); }));
   });
   m.def("_cross_test", [](const Result& r, py::object time, py::object force, py::object position, py::object velocity,
                           py::object load, py::object temperature, const IdimOptions& o, const std::string& file,

@@ -19,7 +19,7 @@ void bind(py::module_& m) {
         LugreOptions o = make_lugre_options(values);
         if (!static_law.is_none()) o.static_law = law_arg(static_law);
         o.axis = parse_axis(axis);
-        return run_cancellable([&] { return identify_lugre(d, o); });  // the fit takes a while
+        return finite_answer(run_cancellable([&] { return identify_lugre(d, o); }));  // the fit takes a while
       },
       py::arg("time"), py::arg("force"), py::arg("position"), py::arg("values"), py::arg("static_law"), py::arg("axis"));
 }

@@ -41,7 +41,7 @@ void bind(py::module_& m) {
     const auto [t, f, v] = time_force_velocity("identify_sweep", time, force, velocity);
     SweepData d{t, f, v, {}};
     d.load = vector_arg(load, "identify_sweep", "load", ArraySpec{.optional = true});
-    return run_cancellable([&] { return identify_sweep(d, o); });
+    return finite_answer(run_cancellable([&] { return identify_sweep(d, o); }));
   });
   m.def("_sweep_points", [](py::object time, py::object force, py::object velocity, const SweepOptions& o,
                             py::object load) {

@@ -1,6 +1,7 @@
 // frictionlab.validate: an identified model simulated in a scenario's plant and controller
 // against a measured run. Binds _validate (the keyword API is python/frictionlab/validate.py).
 #include "frictionlab/analysis/contour_validation.hpp"
+#include "frictionlab/identify/finite_result.hpp"
 #include "frictionlab/identify/lugre.hpp"
 #include "frictionlab/identify/validate.hpp"
 #include "frictionlab/io/load.hpp"
@@ -33,7 +34,8 @@ void bind(py::module_& m) {
         const Scenario scenario = load_scenario(scenario_path, so);
         v.file = data->file;
         v.sha256 = data->sha256;
-        Result r = run_cancellable([&] { return validate_model(model, scenario, v, {}); });
+        // Numbers or an error (identify/finite_result.hpp), as the command line's validate.
+        Result r = finite_answer(finite_or_error(run_cancellable([&] { return validate_model(model, scenario, v, {}); })));
         r.data_file = identified.data_file;
         r.data_sha256 = identified.data_sha256;
         return r;

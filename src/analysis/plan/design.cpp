@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "frictionlab/budget.hpp"
+#include "frictionlab/error.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/analysis/plan/predict.hpp"
 
@@ -535,7 +537,14 @@ ExperimentProfile design_lugre(const PlanRig& rig, const PlanLimits& lim, const 
     InputSignal s;
     s.shape = InputShape::table;
     const double end = t_slide + slide_cycles * 2 * kPi / omega;
-    const auto n = static_cast<std::size_t>(std::ceil(end * fs)) + 1;
+    // The table holds a sample every 1 / fs: its size is checked before it is built (--rate 1e9
+    // once built 1.2e10 samples before the plan's own check of its runs).
+    const double samples = std::ceil(end * fs) + 1;
+    const std::string what = "the lugre profile of " + num(end) + " s at --rate " + num(fs) + " Hz (" + num(samples) + " samples)";
+    const ErrorFields fields{.option = "--rate", .value = num(fs)};
+    check_memory(samples * 2 * sizeof(double), what, fields);  // its times and values
+    check_work(samples, "profile samples", what, fields);
+    const auto n = static_cast<std::size_t>(samples);
     for (std::size_t i = 0; i < n; ++i) {
       const double t = static_cast<double>(i) / fs;
       const double f = t < t_slide ? Ap * std::sin(2 * kPi * fp * t) : A * std::sin(omega * (t - t_slide));
