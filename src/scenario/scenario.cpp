@@ -250,9 +250,9 @@ FrictionLaw scaled_law(const FrictionLaw& law, double scale) {
                          p.quantity == Quantity::stiffness || p.quantity == Quantity::force_rate;
     if (newtons && spec.scalars.count(p.name)) spec.scalars[p.name] *= scale;
   }
-  // Table forces (N), GMS element stiffnesses (N/m), the ripple's amplitudes (N): a compensation
-  // that carries the ripple scales it with the rest.
-  for (const char* name : {"force", "k", "ripple_a", "ripple_b"})
+  // Table forces (N), GMS element stiffnesses (N/m), the ripple's amplitudes or its table's forces
+  // (N): a compensation that carries the ripple scales it with the rest.
+  for (const char* name : {"force", "k", "ripple_a", "ripple_b", "ripple_force"})
     if (spec.arrays.count(name))
       for (double& v : spec.arrays[name]) v *= scale;
   return FrictionLaw::from_spec(spec);
