@@ -36,7 +36,8 @@ void evaluate(const LuGre& law, double k, const T& x, const T& v, const T& z, do
 
 }  // namespace
 
-LuGreObserver::LuGreObserver(const FrictionLaw& law, LuGreObserverParams p) : law_(require_lugre(law)), p_(p) {
+LuGreObserver::LuGreObserver(const FrictionLaw& law, LuGreObserverParams p)
+    : law_(require_lugre(law)), ripple_(law.effects().ripple), p_(p) {
   detail::require(std::isfinite(p.gain) && p.gain >= 0, "lugre-observer", "gain", p.gain,
                   ">= 0 (1/s: bristle rate per position error)");
 }
@@ -48,7 +49,7 @@ void LuGreObserver::initial_states(const CompensatorInput& in, std::span<double>
 double LuGreObserver::output(const CompensatorInput& in, std::span<const double> z) const {
   double dz, F;
   evaluate(law_, p_.gain, in.position, in.velocity, z[0], in.reference, dz, F);
-  return F;
+  return ripple_ ? F + ripple_->force(in.position) : F;
 }
 
 void LuGreObserver::derivatives(const CompensatorInput& in, std::span<const double> z, std::span<double> dz) const {
@@ -62,7 +63,7 @@ bool LuGreObserver::jacobian(const CompensatorInput& in, std::span<const double>
   const J x(in.position, 0), v(in.velocity, 1), zz(z[0], 2);
   J dz, F;
   evaluate(law_, p_.gain, x, v, zz, in.reference, dz, F);
-  doutput[0] = F.v[0];
+  doutput[0] = F.v[0] + (ripple_ ? ripple_->slope(in.position) : 0.0);
   doutput[1] = F.v[1];
   doutput[2] = 0.0;
   doutput[3] = F.v[2];
@@ -84,7 +85,8 @@ double LuGreObserver::update(const CompensatorInput& in, std::span<double> z, do
     z[0] += c * dt;
   }
   const double dz = c - rate * z[0];
-  return law_.sigma0 * z[0] + law_.damping(v) * dz + law_.sigma2 * v;
+  const double F = law_.sigma0 * z[0] + law_.damping(v) * dz + law_.sigma2 * v;
+  return ripple_ ? F + ripple_->force(in.position) : F;
 }
 
 }  // namespace frictionlab

@@ -624,6 +624,7 @@ static inline REAL @_feedback(REAL v) {
 
 void lugre_observer(Writer& w, const FrictionLaw& law, const LuGreObserverParams& p) {
   const LuGreObserver check(law, p);  // refuses a law that is not LuGre, a bad gain
+  const bool ripple = law.effects().ripple.has_value();
   w.line("\n/* LuGre observer (control/lugre_observer.hpp; Canudas de Wit et al. 1995, section V). */");
   w.constant("obs_gain", p.gain, "observer gain k, 1/s");
   w.code(R"(typedef struct { REAL z; } @_lugre_observer_state; /* estimated bristle deflection, m or rad */
@@ -633,7 +634,9 @@ static inline void @_lugre_observer_init(@_lugre_observer_state *s, REAL v) {
 }
 /* Advances the observer over the step of dt seconds just ended, holding the measured position x
    (m or rad), velocity v (m/s or rad/s) and reference position r (m or rad), and returns the
-   compensation force (N or N m) to add to the drive's command. Exact at frozen v: stable for any dt. */
+   compensation force (N or N m) to add to the drive's command)" +
+         std::string(ripple ? ", the ripple r(x) at the measured position included" : "") +
+         R"(. Exact at frozen v: stable for any dt. */
 static inline REAL @_lugre_observer_update(@_lugre_observer_state *s, REAL x, REAL v, REAL r, REAL dt) {
   const REAL rate = @_sigma0 * $fabs(v) / @_level(v);
   const REAL c = v - @_obs_gain * (x - r);
@@ -645,7 +648,8 @@ static inline REAL @_lugre_observer_update(@_lugre_observer_state *s, REAL x, RE
     s->z += c * dt;
   }
   dz = c - rate * s->z;
-  return @_sigma0 * s->z + @_damping(v) * dz + @_sigma2 * v;
+  return @_sigma0 * s->z + @_damping(v) * dz + @_sigma2 * v)" +
+         std::string(ripple ? " + @_ripple(x)" : "") + R"(;
 }
 )");
 }
@@ -675,7 +679,55 @@ std::string upper(std::string s);
 
 // The position ripple (models/position_ripple.hpp: PositionRipple::force, the same operations in
 // the same order) and the friction with it at a position: PREFIX_ripple(q), PREFIX_friction_at(v, q).
+void ripple_table(Writer& w, const PositionRipple& r);
+void ripple_harmonics(Writer& w, const PositionRipple& r);
+
 void ripple(Writer& w, const PositionRipple& r, bool with_friction_at) {
+  if (r.is_table()) {
+    ripple_table(w, r);
+  } else {
+    ripple_harmonics(w, r);
+  }
+  if (with_friction_at)
+    w.code(R"(
+/* The sliding friction at velocity v and position q: friction(v) + r(q), N or N m. */
+static inline REAL @_friction_at(REAL v, REAL q) { return @_friction(v) + @_ripple(q); }
+)");
+}
+
+// A ripple given as a table over one period (PositionRipple::segment and force: the position
+// wrapped into [q_0, q_0 + P) by fmod, the first row past it found by bisection, as
+// std::upper_bound finds it, and the same linear interpolation).
+void ripple_table(Writer& w, const PositionRipple& r) {
+  const std::size_t n = r.table_position.size();
+  w.line("\n/* Position ripple r(q) by table: " + std::to_string(n) +
+         " rows of force against position over one period P, periodic, linear between rows (N or N m), q in m or "
+         "rad; it adds to the friction whether the contact slides or sticks. */");
+  w.constant("ripple_period", r.period, "P, m (rad on a rotary axis)");
+  w.array("ripple_q", r.table_position, "positions q_0 < ... < q_n = q_0 + P, m (rad)");
+  w.array("ripple_r", r.table_force, "ripple force at them, N (N m); r_n = r_0");
+  const std::string points = upper(w.prefix()) + "_RIPPLE_POINTS";
+  w.line("#define " + points + " " + std::to_string(n));
+  w.code(R"(
+/* r(q), N or N m, at position q (m or rad). */
+static inline REAL @_ripple(REAL q) {
+  REAL u = $fmod(q - @_ripple_q[0], @_ripple_period);
+  REAL x, t;
+  int lo = 0, hi = )" + points + R"(, k;
+  if (u < 0.0_r) u += @_ripple_period;
+  x = @_ripple_q[0] + u;
+  while (lo < hi) { /* the first row whose position exceeds x */
+    const int mid = (lo + hi) / 2;
+    if (@_ripple_q[mid] > x) hi = mid; else lo = mid + 1;
+  }
+  k = lo < 1 ? 1 : (lo > )" + points + R"( - 1 ? )" + points + R"( - 1 : lo);
+  t = (x - @_ripple_q[k - 1]) / (@_ripple_q[k] - @_ripple_q[k - 1]);
+  return @_ripple_r[k - 1] + t * (@_ripple_r[k] - @_ripple_r[k - 1]);
+}
+)");
+}
+
+void ripple_harmonics(Writer& w, const PositionRipple& r) {
   const std::size_t K = r.harmonics();
   std::vector<double> a(r.a), b(r.b);
   a.resize(K, 0.0);
@@ -700,11 +752,6 @@ static inline REAL @_ripple(REAL q) {
   }
   return r;
 }
-)");
-  if (with_friction_at)
-    w.code(R"(
-/* The sliding friction at velocity v and position q: friction(v) + r(q), N or N m. */
-static inline REAL @_friction_at(REAL v, REAL q) { return @_friction(v) + @_ripple(q); }
 )");
 }
 

@@ -183,12 +183,21 @@ LawEffects take_effects(LawSpec& spec) {
   }
   const auto P = take("ripple_period");
   auto a = take_list("ripple_a"), b = take_list("ripple_b");
-  if (P || a || b) {
-    if (!P) refuse("ripple_period", "missing: the ripple's period P (m or rad) is needed with ripple_a, ripple_b");
+  auto tq = take_list("ripple_position"), tf = take_list("ripple_force");
+  if (P || a || b || tq || tf) {
+    if (!P)
+      refuse("ripple_period", "missing: the ripple's period P (m or rad) is needed with ripple_a, ripple_b (or "
+                              "ripple_position, ripple_force)");
+    if ((tq || tf) && !(tq && tf))
+      refuse(tq ? "ripple_force" : "ripple_position",
+             std::string("missing: a ripple table needs both ripple_position (m or rad) and ripple_force (N or N m); ") +
+                 (tq ? "ripple_position" : "ripple_force") + " was given alone");
     PositionRipple r;
     r.period = *P;
     r.a = a.value_or(std::vector<double>{});
     r.b = b.value_or(std::vector<double>{});
+    r.table_position = tq.value_or(std::vector<double>{});
+    r.table_force = tf.value_or(std::vector<double>{});
     e.ripple = std::move(r);
   }
   return e;
@@ -214,6 +223,10 @@ void put_effects(const LawEffects& e, LawSpec& spec) {
     spec.scalars["ripple_period"] = r->period;
     if (!r->a.empty()) spec.arrays["ripple_a"] = r->a;
     if (!r->b.empty()) spec.arrays["ripple_b"] = r->b;
+    if (r->is_table()) {
+      spec.arrays["ripple_position"] = r->table_position;
+      spec.arrays["ripple_force"] = r->table_force;
+    }
   }
 }
 }  // namespace

@@ -250,9 +250,9 @@ FrictionLaw scaled_law(const FrictionLaw& law, double scale) {
                          p.quantity == Quantity::stiffness || p.quantity == Quantity::force_rate;
     if (newtons && spec.scalars.count(p.name)) spec.scalars[p.name] *= scale;
   }
-  // Table forces (N), GMS element stiffnesses (N/m), the ripple's amplitudes (N): a compensation
-  // that carries the ripple scales it with the rest.
-  for (const char* name : {"force", "k", "ripple_a", "ripple_b"})
+  // Table forces (N), GMS element stiffnesses (N/m), the ripple's amplitudes or its table's forces
+  // (N): a compensation that carries the ripple scales it with the rest.
+  for (const char* name : {"force", "k", "ripple_a", "ripple_b", "ripple_force"})
     if (spec.arrays.count(name))
       for (double& v : spec.arrays[name]) v *= scale;
   return FrictionLaw::from_spec(spec);
@@ -758,7 +758,7 @@ EmpsPdParams read_emps_pd(const Section& s, DataSource& src) {
 }
 
 PidParams read_controller(const Section& s) {
-  s.allow({"type", "loop", "Kp", "Ki", "Kd", "limit", "compensation", "compensation_gain"});
+  s.allow({"type", "loop", "Kp", "Ki", "Kd", "limit", "compensation", "compensation_gain", "measure"});
   PidParams c;
   static constexpr std::pair<const char*, ControlLoop> kLoops[] = {{"position", ControlLoop::position}, {"velocity", ControlLoop::velocity}};
   c.loop = choose(s, "loop", "position", kLoops, "loop", "loops");
@@ -783,7 +783,22 @@ std::shared_ptr<const Compensator> loop_compensation(const Section& s, const Pla
 PlantPtr close_pid(const Section& s, DataSource&, const PlantPtr& plant, const CompensationContext& cc) {
   const PidParams c = read_controller(s);
   const std::shared_ptr<const Compensator> comp = loop_compensation(s, plant, cc);
-  return detail::with_context(s.path(), [&] { return close_loop(plant, c, comp); });
+  // measure: motor | load, on a backlash axis: the body the loop's encoder is on (default: the
+  // contact, the body the friction acts on).
+  static constexpr std::pair<const char*, MeasuredBody> kBodies[] = {{"motor", MeasuredBody::motor}, {"load", MeasuredBody::load}};
+  const std::optional<MeasuredBody> body =
+      s.has("measure") ? std::optional<MeasuredBody>(choose(s, "measure", "load", kBodies, "measured body", "bodies")) : std::nullopt;
+  if (body && dynamic_cast<const BacklashAxis*>(plant.get()) == nullptr)
+    throw InputError(errc::scenario_value,
+                     s.at("measure") + ": the " + plant->type() +
+                         " has one body, which the loop measures; measure (motor or load) needs an axis with backlash "
+                         "(plant.backlash)",
+                     s.fields("measure", s.text("measure", "")));
+  return detail::with_context(s.path(), [&]() -> PlantPtr {
+    PlantPtr loop = close_loop(plant, c, comp);
+    if (!body) return loop;
+    return static_cast<const ClosedLoop&>(*loop).measuring(*body);
+  });
 }
 
 PlantPtr close_emps_pd(const Section& s, DataSource& src, const PlantPtr& plant, const CompensationContext& cc) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <type_traits>
 
+#include "frictionlab/plants/backlash_axis.hpp"
 #include "frictionlab/simulate/emps_pd_loop.hpp"
 
 namespace frictionlab {
@@ -26,11 +27,26 @@ std::shared_ptr<const ClosedLoop> ClosedLoop::with_conditions(CompensationCondit
   return out;
 }
 
+std::shared_ptr<const ClosedLoop> ClosedLoop::measuring(MeasuredBody body) const {
+  auto out = std::make_shared<ClosedLoop>(*this);
+  out->measured_body_ = body;
+  out->pos_ = 0;
+  if (body != MeasuredBody::contact) {
+    const auto* b = dynamic_cast<const BacklashAxis*>(inner_.get());
+    if (b == nullptr)
+      throw std::invalid_argument(std::string("controller.measure: ") + (body == MeasuredBody::motor ? "motor" : "load") +
+                                  " needs a plant with a motor and a load (an axis with backlash); the " + inner_->type() +
+                                  " has one body, which the loop measures");
+    out->pos_ = static_cast<std::size_t>(body == MeasuredBody::motor ? b->motor_state() : b->load_state());
+  }
+  return out;
+}
+
 CompensatorInput ClosedLoop::measured(double t, std::span<const double> x, const InputValue& r) const {
   CompensatorInput in;
   in.t = t;
-  in.position = x[0];
-  in.velocity = x[1];
+  in.position = x[pos_];
+  in.velocity = x[pos_ + 1];
   in.load = conditions_.load.at(t, x.first(static_cast<std::size_t>(n_inner_)));
   in.temperature = conditions_.temperature_log ? std::optional<double>(conditions_.temperature_log->at(t).value)
                                                : conditions_.temperature;
@@ -39,7 +55,7 @@ CompensatorInput ClosedLoop::measured(double t, std::span<const double> x, const
     in.reference_rate = r.rate;
     in.reference_accel = r.accel;
   } else {  // r is a velocity: no position reference, so no position error
-    in.reference = x[0];
+    in.reference = x[pos_];
     in.reference_rate = r.value;
     in.reference_accel = r.rate;
   }
@@ -47,7 +63,7 @@ CompensatorInput ClosedLoop::measured(double t, std::span<const double> x, const
 }
 
 PidInput ClosedLoop::pid_input(std::span<const double> x, const InputValue& r) const {
-  return {x[0], x[1], r.value, r.rate, r.accel};
+  return {x[pos_], x[pos_ + 1], r.value, r.rate, r.accel};
 }
 
 void ClosedLoop::initial_extras(std::span<double> x) const {

@@ -1,6 +1,8 @@
 #include "frictionlab/cancellation.hpp"
 #include "frictionlab/error.hpp"
 #include "frictionlab/models/parameter.hpp"
+#include "frictionlab/plants/backlash_axis.hpp"
+#include "frictionlab/simulate/closed_loop.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "frictionlab/simulate/output_size.hpp"
 #include "simulate/stiff_system.hpp"
@@ -168,6 +170,15 @@ struct Sundials {
   Sundials& operator=(const Sundials&) = delete;
 };
 
+// The state index of a backlash axis's motor position, the plant's own or a PID loop's inner
+// plant's (a loop's states start with its plant's), or -1 for any other plant.
+int motor_position_state(const Plant& plant) {
+  const Plant* p = &plant;
+  if (const auto* loop = dynamic_cast<const ClosedLoop*>(p)) p = &loop->inner();
+  const auto* b = dynamic_cast<const BacklashAxis*>(p);
+  return b ? b->motor_state() : -1;
+}
+
 class Engine {
  public:
   // `laws[k]` is contact k's law (never null: its Contact::law or `law`); the plant's contacts
@@ -237,6 +248,7 @@ class Engine {
       if (!motion) extras_.push_back(i);
     }
     sample_period_ = plant.sample_period();
+    motor_ = motor_position_state(plant);
     if (nz_ > 0 && all_dynamic && !any_cond_ && mode != SolverMode::fixed_step) {
       system_.emplace(plant, law);
       if (!system_->has_jacobian()) system_.reset();
@@ -264,6 +276,7 @@ class Engine {
       for (auto& col : c.law_state) col = column();
       tr.contact_names.push_back(plant_.contact(k).name);
     }
+    if (motor_ >= 0) tr.motor_position = column();
     if (mode_ == SolverMode::fixed_step) {
       run_fixed(tr, rows);
       tr.stats.solver = "fixed-step";
@@ -614,6 +627,7 @@ class Engine {
     batch_.add({t, x[static_cast<std::size_t>(b.pos)], v, f, a, s.current, s.voltage, s.reference, s.drive,
                 b.mode == Mode::stuck ? 1.0 : 0.0});
     for (int i = 0; i < b.nz; ++i) tr.law_state[static_cast<std::size_t>(i)].push_back(y[b.z + i]);
+    if (motor_ >= 0) tr.motor_position.push_back(x[static_cast<std::size_t>(motor_)]);
     if (batch_.full()) batch_.flush(tr);
   }
 
@@ -659,6 +673,7 @@ class Engine {
                s, b.mode == Mode::stuck ? 1.0 : 0.0, y + b.z, b.nz);
       if (b.env) push_conditions(column_set(tr, static_cast<int>(k)), b, t, x, y);
     }
+    if (motor_ >= 0) tr.motor_position.push_back(x[static_cast<std::size_t>(motor_)]);
   }
 
   // The load and temperature columns of a body with an environment.
@@ -1271,6 +1286,7 @@ class Engine {
                  v == 0.0 && !kinematic_ && b.nz == 0 ? 1.0 : 0.0, y.data() + b.z, b.nz);
         if (b.env) push_conditions(column_set(tr, static_cast<int>(c)), b, t, x, y.data());
       }
+      if (motor_ >= 0) tr.motor_position.push_back(x[static_cast<std::size_t>(motor_)]);
     }
     tr.stats.steps = step;
     tr.stats.rhs_evaluations = step;
@@ -1289,6 +1305,7 @@ class Engine {
   std::vector<int> extras_;  // plant states that are no contact's position or velocity
   int stuck_count_ = 0;      // bodies in Mode::stuck
   bool hybrid_ = false;      // some body has hybrid modes
+  int motor_ = -1;           // state index of a backlash axis's motor position, or -1
   bool any_cond_ = false;    // some body's friction depends on conditions (load, temperature, ripple)
   bool kinematic_ = false;   // the plant imposes the velocity (plant_.kinematic(), asked once)
   bool any_guard_ = false;   // some plant event is a guard (Plant::guard_event)

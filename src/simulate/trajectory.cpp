@@ -48,6 +48,7 @@ std::vector<std::string> Trajectory::names() const {
     std::vector<std::string> out = column_names();
     if (!load.empty()) out.push_back("load");
     if (!temperature.empty()) out.push_back("temperature");
+    if (!motor_position.empty()) out.push_back("motor_position");
     return out;
   }
   std::vector<std::string> out{"time"};
@@ -63,6 +64,7 @@ const std::vector<double>& Trajectory::column(std::string_view name) const {
       if (name == kContactNames[k]) return this->*kContactColumns[k];
     if (name == "load" && !load.empty()) return load;
     if (name == "temperature" && !temperature.empty()) return temperature;
+    if (name == "motor_position" && !motor_position.empty()) return motor_position;
   } else {
     for (std::size_t c = 0; c < contact_names.size(); ++c) {
       const std::string& prefix = contact_names[c];
@@ -86,6 +88,7 @@ std::string Trajectory::to_csv() const {
   if (one) {
     if (!load.empty()) cols.push_back(&load);
     if (!temperature.empty()) cols.push_back(&temperature);
+    if (!motor_position.empty()) cols.push_back(&motor_position);
   }
   const auto header = names();
   std::string out;

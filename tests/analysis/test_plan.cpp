@@ -398,7 +398,7 @@ PlanRig warm_rig(double tau) {
 
 LawEffects ripple_effect() {
   LawEffects e;
-  e.ripple = PositionRipple{0.02, {2.0}, {-1.0}};  // N: cogging of a 20 mm pitch
+  e.ripple = PositionRipple{0.02, {2.0}, {-1.0}, {}, {}};  // N: cogging of a 20 mm pitch
   return e;
 }
 

@@ -43,8 +43,12 @@ within("M", val("M"), 2.0, 0.05)
 within("Fc", val("Fc"), 3.0, 0.05)
 within("mu_load", val("mu_load"), 0.05, 0.10)
 within("ripple amplitude", math.hypot(val("ripple_sin_1"), val("ripple_cos_1")), math.hypot(0.6, -0.4), 0.10)
+# Fv_per_K within 30 %, or reported undetermined (std null and named in diagnostics.undetermined);
+# a null std for any other reason (at a bound) is neither.
 if p["Fv_per_K"]["std"] is not None:
     within("Fv_per_K", val("Fv_per_K"), -0.25, 0.30)
+else:
+    assert "Fv_per_K" in j["diagnostics"].get("undetermined", []), ("Fv_per_K has no std and is not reported undetermined", j["diagnostics"])
 assert p["Fv_per_K"]["unit"] == "N s/m/K" and p["ripple_sin_1"]["unit"] == "N", p
 # Fv is the viscous coefficient at the reported reference temperature.
 tref = j["diagnostics"]["temperature_ref"]

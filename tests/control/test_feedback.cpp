@@ -119,7 +119,7 @@ TEST(Feedback, RejectsABadDeadBand) {
 // A Stribeck law with a two-harmonic ripple of period 0.02 m (a_1 = 0.6, a_2 = 0.15, b_1 = -0.4 N).
 FrictionLaw rippled_stribeck() {
   LawEffects e;
-  e.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}};
+  e.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}, {}, {}};
   return FrictionLaw(stribeck()).with_effects(e);
 }
 

@@ -225,7 +225,7 @@ TEST(Feedforward, TakesTheInputsLoadAndTemperature) {
 // A Stribeck law with a two-harmonic ripple of period 0.02 m (a_1 = 0.6, a_2 = 0.15, b_1 = -0.4 N).
 FrictionLaw rippled_stribeck() {
   LawEffects e;
-  e.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}};
+  e.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}, {}, {}};
   return FrictionLaw(Stribeck{1.0, 1.5, 0.01, 2.0, 0.4}).with_effects(e);
 }
 

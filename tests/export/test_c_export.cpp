@@ -475,7 +475,7 @@ class RippleExport : public ::testing::TestWithParam<bool> {};
 
 FrictionLaw rippled_stribeck() {
   LawEffects e;
-  e.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}};
+  e.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}, {}, {}};
   return FrictionLaw(Stribeck{1.0, 1.5, 0.001, 1.0, 0.4}).with_effects(e);
 }
 
@@ -511,7 +511,7 @@ TEST_P(RippleExport, CompensationsAddTheRippleAtTheirPositionAsTheLibrary) {
   const bool single = GetParam();
   const std::string type = single ? "float" : "double";
   LawEffects with_conditions = load_and_temperature(true);
-  with_conditions.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}};
+  with_conditions.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}, {}, {}};
   const FrictionLaw both = FrictionLaw(Stribeck{1.0, 1.5, 0.001, 1.0, 0.4}).with_effects(with_conditions);
   // Velocities through both bands (2e-3 and 5e-4 m/s) and beyond; positions across five periods;
   // loads of both signs; temperatures inside [T_min, T_max].
@@ -576,6 +576,138 @@ TEST_P(RippleExport, CompensationsAddTheRippleAtTheirPositionAsTheLibrary) {
   }
 }
 
+// A ripple by table (ripple_position, ripple_force over one period): the header's static table
+// and its interpolation PREFIX_ripple(q), PREFIX_friction_at(v, q) and the compensations at a
+// position, against the library over positions across five periods (both signs), both precisions.
+FrictionLaw table_rippled_stribeck() {
+  LawEffects e;
+  e.ripple = PositionRipple{0.02, {}, {}, {-0.005, 0.0, 0.004, 0.009, 0.015}, {0.3, -0.5, 0.7, 0.1, 0.3}};
+  return FrictionLaw(Stribeck{1.0, 1.5, 0.001, 1.0, 0.4}).with_effects(e);
+}
+
+TEST_P(RippleExport, TableRippleMatchesLibrary) {
+  const bool single = GetParam();
+  const FrictionLaw law = table_rippled_stribeck();
+  std::vector<double> q, v;
+  for (int i = 0; i < 61; ++i) q.push_back(-0.05 + 0.0017 * i + 1e-4 * i * i / 7.0);  // m, across five periods
+  for (int i = 0; i < 61; ++i) v.push_back((i % 2 ? -1.0 : 1.0) * std::pow(10.0, -5.0 + 4.5 * i / 60.0));
+  for (double row : {-0.005, 0.0, 0.004, 0.009, 0.015, 0.035}) {  // the rows themselves, and a period on
+    q.push_back(row);
+    v.push_back(0.0);
+  }
+  CExportOptions o;
+  o.single_precision = single;
+  const std::string type = single ? "float" : "double";
+  const std::string arrays = c_array(type.c_str(), "qg", q) + c_array(type.c_str(), "vg", v);
+  {
+    TempDir dir;
+    const std::string header = c_header(law, o);
+    EXPECT_THAT(header, ::testing::HasSubstr("friction_ripple_q[5]"));
+    EXPECT_THAT(header, ::testing::HasSubstr("FRICTION_RIPPLE_POINTS 5"));
+    const std::vector<double> out = compile_and_run(
+        dir, header,
+        arrays + "int main(void) {\n  unsigned i;\n"
+                 "  for (i = 0; i < sizeof qg / sizeof qg[0]; ++i) printf(\"%.17g\\n\", (double)friction_ripple(qg[i]));\n"
+                 "  for (i = 0; i < sizeof qg / sizeof qg[0]; ++i) printf(\"%.17g\\n\", (double)friction_friction_at(vg[i], qg[i]));\n"
+                 "  return 0;\n}\n");
+    std::vector<double> lib;
+    for (double x : q) lib.push_back(law.ripple(as_real(x, single)));
+    for (std::size_t i = 0; i < q.size(); ++i) lib.push_back(law.sliding(as_real(v[i], single)) + law.ripple(as_real(q[i], single)));
+    expect_close(out, lib, single, "table ripple");
+  }
+  const FeedforwardParams ff{2e-3};
+  const FeedbackParams fb{5e-4};
+  const FeedforwardCompensation lib_ff(law, FeedforwardParams{as_real(ff.band, single)});
+  const FeedbackCompensation lib_fb(law, FeedbackParams{as_real(fb.dead_band, single)});
+  for (const bool feedforward : {true, false}) {
+    o.compensation = feedforward ? CompensationParams(ff) : CompensationParams(fb);
+    const std::string fn = feedforward ? "friction_feedforward_at" : "friction_feedback_at";
+    std::vector<double> want;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      CompensatorInput in;
+      in.reference = in.position = as_real(q[i], single);
+      in.reference_rate = in.velocity = as_real(v[i], single);
+      std::vector<double> z(1);
+      const Compensator& c = feedforward ? static_cast<const Compensator&>(lib_ff) : lib_fb;
+      c.initial_states(in, z);
+      want.push_back(c.output(in, z));
+    }
+    TempDir dir;
+    const std::vector<double> out = compile_and_run(
+        dir, c_header(law, o),
+        arrays + "int main(void) {\n  unsigned i;\n"
+                 "  for (i = 0; i < sizeof vg / sizeof vg[0]; ++i) printf(\"%.17g\\n\", (double)" + fn +
+            "(vg[i], qg[i]));\n  return 0;\n}\n");
+    expect_close(out, want, single, fn);
+  }
+}
+
+// The LuGre observer of a law with a ripple (harmonics, or a table): the header's
+// PREFIX_lugre_observer_update adds PREFIX_ripple(x) at the measured position x to the bristle
+// copy's force, as the library's LuGreObserver::update does; a fixed-step run over positions across
+// several periods, a standstill and a long step, both precisions.
+TEST_P(RippleExport, LuGreObserverAddsTheRippleAsTheLibrary) {
+  const bool single = GetParam();
+  const std::string type = single ? "float" : "double";
+  std::vector<double> x, v, r, dt;
+  double pos = -0.013;
+  for (int k = 0; k < 600; ++k) {
+    const double vel = 0.05 * std::sin(0.01 * k) + (k > 400 && k < 450 ? -0.05 : 0.0);  // m/s
+    const double vk = k > 500 && k < 560 ? 0.0 : vel;                                  // a standstill
+    pos += vk * 1e-3;
+    x.push_back(pos);
+    v.push_back(vk);
+    r.push_back(pos + 2e-5 * std::cos(0.03 * k));
+    dt.push_back(k == 599 ? 5.0 : 1e-3);
+  }
+  const std::string arrays = c_array(type.c_str(), "x", x) + c_array(type.c_str(), "v", v) +
+                             c_array(type.c_str(), "r", r) + c_array(type.c_str(), "dt", dt);
+  LawEffects harmonics, table;
+  harmonics.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}, {}, {}};
+  table.ripple = PositionRipple{0.02, {}, {}, {0.0, 0.005, 0.012, 0.02}, {0.2, -0.6, 0.5, 0.2}};
+  for (const LawEffects* e : {&harmonics, &table}) {
+    SCOPED_TRACE(e == &table ? "table" : "harmonics");
+    const FrictionLaw law = FrictionLaw(LuGre{}).with_effects(*e);
+    const LuGreObserverParams p{0.05};
+    CExportOptions o;
+    o.single_precision = single;
+    o.compensation = p;
+    const std::string header = c_header(law, o);
+    EXPECT_THAT(header, ::testing::HasSubstr("+ friction_ripple(x)"));
+    TempDir dir;
+    const std::vector<double> out = compile_and_run(
+        dir, header,
+        arrays + "int main(void) {\n  unsigned i;\n  friction_lugre_observer_state s;\n"
+                 "  friction_lugre_observer_init(&s, v[0]);\n"
+                 "  for (i = 0; i < sizeof v / sizeof v[0]; ++i)\n"
+                 "    printf(\"%.17g\\n\", (double)friction_lugre_observer_update(&s, x[i], v[i], r[i], dt[i]));\n"
+                 "  return 0;\n}\n");
+    const LuGreObserver obs(law, p), plain(LuGre{}, p);
+    double z = 0, z_plain = 0;
+    std::vector<double> lib;
+    CompensatorInput in0;
+    in0.velocity = as_real(v[0], single);
+    obs.initial_states(in0, {&z, 1});
+    plain.initial_states(in0, {&z_plain, 1});
+    double largest = 0;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      CompensatorInput in;
+      in.position = as_real(x[k], single);
+      in.velocity = as_real(v[k], single);
+      in.reference = as_real(r[k], single);
+      lib.push_back(obs.update(in, {&z, 1}, as_real(dt[k], single)));
+      // The library's observer is the plain one's bristle copy plus r(x): the ripple leaves the
+      // observer's state alone and adds at the measured position.
+      const double bristles = plain.update(in, {&z_plain, 1}, as_real(dt[k], single));
+      EXPECT_EQ(z, z_plain);
+      EXPECT_NEAR(lib.back(), bristles + law.ripple(in.position), 1e-12 * (1 + std::abs(bristles)));
+      largest = std::max(largest, std::abs(law.ripple(in.position)));
+    }
+    EXPECT_GT(largest, 0.3);  // N: the run crosses the ripple's peaks
+    expect_close(out, lib, single, "lugre-observer with a ripple");
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(BothPrecisions, RippleExport, ::testing::Bool());
 
 // Load and temperature terms: the header's PREFIX_friction_at(v[, q][, load][, T]), its
@@ -616,7 +748,7 @@ Conditions at(const EffectsGrid& g, std::size_t i, bool single) {
 TEST_P(EffectsExport, FrictionAtAndBreakawayAtMatchLibraryWithLoadTemperatureAndRipple) {
   const bool single = GetParam();
   LawEffects e = load_and_temperature(true);
-  e.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}};
+  e.ripple = PositionRipple{0.02, {0.6, 0.15}, {-0.4, 0.0}, {}, {}};
   const FrictionLaw law = FrictionLaw(Stribeck{1.0, 1.5, 0.001, 1.0, 0.4}).with_effects(e);
   const EffectsGrid g = effects_grid();
   TempDir dir;

@@ -176,7 +176,7 @@ TEST(RippleEffect, AddsTheHarmonicsAndHoldsWhileTheRestWithinTheLevels) {
 }
 
 TEST(RippleEffect, PotentialIsTheIntegralOfTheRipple) {
-  PositionRipple r{0.01, {0.3, -0.1}, {0.2, 0.05}};
+  PositionRipple r{0.01, {0.3, -0.1}, {0.2, 0.05}, {}, {}};
   // Simpson's rule over a third of a period, 2000 panels: error ~ (h^4) r'''' ~ 1e-16 relative.
   const double q1 = 0.0033;
   const int n = 2000;
@@ -223,4 +223,76 @@ TEST(EffectErrors, BadParametersAreRefusedWithTheirName) {
   expect_refused(coulomb, "mu_load_static", "one level");
   LawSpec dry{"coulomb", {{"Fc", 1.0}, {"T_ref", 20.0}, {"Fv_per_K", -0.01}}, {}, {}};
   expect_refused(dry, "Fv_per_K", "viscous");
+}
+
+// A ripple given as a table over one period (ripple_position, ripple_force): periodic, linear
+// between the rows, its slope the segment's, its potential the integral (a table's mean included),
+// and the file form's round trip.
+TEST(RippleTable, InterpolatesPeriodicallyBetweenItsRows) {
+  LawSpec s = stribeck_spec();
+  s.scalars["ripple_period"] = 0.004;                        // m
+  s.arrays["ripple_position"] = {0.001, 0.002, 0.0035, 0.005};  // m: spans one period from 1 mm
+  s.arrays["ripple_force"] = {0.2, -0.3, 0.1, 0.2};             // N: the last row is the first a period on
+  const FrictionLaw law = FrictionLaw::from_spec(s);
+  ASSERT_TRUE(law.effects().ripple && law.effects().ripple->is_table());
+  const PositionRipple& r = *law.effects().ripple;
+  constexpr double kAbs = 1e-12;  // N: a wrap by fmod and one linear interpolation
+  EXPECT_NEAR(law.ripple(0.001), 0.2, kAbs);
+  EXPECT_NEAR(law.ripple(0.0015), -0.05, kAbs);   // halfway along the first segment
+  EXPECT_NEAR(law.ripple(0.0030), -0.3 + 0.4 * (1.0 / 1.5), kAbs);
+  EXPECT_NEAR(law.ripple(0.0005), 0.1 + 0.1 * (0.001 / 0.0015), kAbs);  // 0.0045 - P: the last segment
+  EXPECT_NEAR(law.ripple(-0.0025), law.ripple(0.0015), kAbs);  // periodic on the negative side
+  EXPECT_NEAR(law.ripple(0.0415), law.ripple(0.0015), kAbs);   // and ten periods on
+  EXPECT_NEAR(r.slope(0.0015), -0.5 / 0.001, 1e-9);            // N/m: the segment's slope
+  // The potential against Simpson's rule over each linear piece (exact for a linear integrand).
+  auto integral = [&](double a, double b) {
+    const int n = 4000;
+    const double h = (b - a) / n;
+    double sum = r.force(a) + r.force(b);
+    for (int i = 1; i < n; ++i) sum += (i % 2 ? 4 : 2) * r.force(a + i * h);
+    return sum * h / 3;
+  };
+  constexpr double kQuadratureAbs = 1e-9;  // J: Simpson across the kinks of a piecewise-linear r
+  for (double q : {0.0013, 0.0047, -0.0061, 0.0123})
+    EXPECT_NEAR(r.potential(q), q >= 0 ? integral(0.0, q) : -integral(q, 0.0), kQuadratureAbs) << "q = " << q;
+  // At rest the contact holds while |applied - r(q)| <= Fs.
+  Conditions c;
+  c.position = 0.0015;
+  EXPECT_EQ(law.force(0.0, -0.05 + 1.4, c), -0.05 + 1.4);
+  EXPECT_NEAR(law.force(0.0, -0.05 + 1.6, c), -0.05 + 1.5, kAbs);
+  // The file form keeps the table; harmonics are none.
+  const LawSpec back = law.to_spec();
+  EXPECT_EQ(back.arrays.at("ripple_position"), s.arrays.at("ripple_position"));
+  EXPECT_EQ(back.arrays.at("ripple_force"), s.arrays.at("ripple_force"));
+  EXPECT_EQ(back.arrays.count("ripple_a"), 0u);
+  EXPECT_EQ(FrictionLaw::from_spec(back).ripple(0.0027), law.ripple(0.0027));
+}
+
+TEST(RippleTable, BadTablesAreRefusedNamingTheKey) {
+  LawSpec s = stribeck_spec();
+  s.scalars["ripple_period"] = 0.004;
+  auto with = [&](std::vector<double> q, std::vector<double> f) {
+    LawSpec t = s;
+    t.arrays["ripple_position"] = std::move(q);
+    t.arrays["ripple_force"] = std::move(f);
+    return t;
+  };
+  expect_refused(with({0.0, 0.002, 0.002, 0.004}, {0.1, 0.2, 0.3, 0.1}), "ripple_position[2]", "strictly increasing");
+  expect_refused(with({0.0, 0.003, 0.002, 0.004}, {0.1, 0.2, 0.3, 0.1}), "ripple_position[2]", "strictly increasing");
+  expect_refused(with({0.0, 0.002, 0.003}, {0.1, 0.2, 0.1}), "ripple_position", "not one period");
+  expect_refused(with({0.0, 0.002, 0.005}, {0.1, 0.2, 0.1}), "ripple_position", "not one period");
+  expect_refused(with({0.0, NAN, 0.004}, {0.1, 0.2, 0.1}), "ripple_position[1]", "finite");
+  expect_refused(with({0.0, 0.002, 0.004}, {0.1, INFINITY, 0.1}), "ripple_force[1]", "finite");
+  expect_refused(with({0.0, 0.002, 0.004}, {0.1, 0.2, 0.15}), "ripple_force[2]", "ripple_force[0]");
+  expect_refused(with({0.0, 0.002, 0.004}, {0.1, 0.1}), "ripple_position", "one force");
+  expect_refused(with({0.004}, {0.1}), "ripple_position", "at least 2 rows");
+  LawSpec both = with({0.0, 0.002, 0.004}, {0.1, 0.2, 0.1});
+  both.arrays["ripple_a"] = {0.1};
+  expect_refused(both, "ripple_position", "not both");
+  LawSpec alone = s;
+  alone.arrays["ripple_position"] = {0.0, 0.004};
+  expect_refused(alone, "ripple_force", "both");
+  LawSpec no_period = with({0.0, 0.002, 0.004}, {0.1, 0.2, 0.1});
+  no_period.scalars.erase("ripple_period");
+  expect_refused(no_period, "ripple_period");
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "frictionlab/error.hpp"
+#include "frictionlab/plants/axis.hpp"
 #include "frictionlab/plants/backlash_axis.hpp"
 #include "frictionlab/scenario/scenario.hpp"
 #include "frictionlab/simulate/closed_loop.hpp"
@@ -257,4 +258,101 @@ TEST(Backlash, ScenarioReadsThePlayAndRefusesBadValuesNamingTheKey) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("use a pid controller"), std::string::npos) << e.what();
   }
+}
+
+TEST(Backlash, APdLoopMeasuringTheMotorSettlesTheMotorAtTheReferenceAndTheLoadWithinThePlay) {
+  // The PD loop of APidAcrossThePlay... with its encoder on the motor (measure: motor), stepped to
+  // 5 mm and at 1.5 s back to 3.5 mm. Forward, the motor crosses the play and pushes the load
+  // until the push, Kp (r - motor), falls to the load's Coulomb level: the pair stops 1 mm short
+  // (motor 4 mm, load 3 mm, engaged). Back, the motor leaves the flank and crosses the play
+  // without reaching the other one (3.5 mm lies within the load's 3 mm +- 1 mm): frictionless and
+  // free, it settles at the reference (overdamped, slowest time constant 0.14 s), while the load
+  // stays stuck where the forward move left it, within half the play of the motor. The run
+  // records the motor's position as its own column.
+  BacklashParams p = rig();
+  p.width = 0.002;
+  auto axis = std::make_shared<const BacklashAxis>(p);
+  PidParams c;
+  c.Kp = 400;
+  c.Kd = 60;
+  const auto base = std::make_shared<const ClosedLoop>(axis, c);
+  const auto loop = base->measuring(MeasuredBody::motor);
+  EXPECT_EQ(loop->measured_body(), MeasuredBody::motor);
+  const FrictionLaw law = StaticCoulombViscous{0.5, 0.4, 0.5};
+  InputSignal steps;
+  steps.shape = InputShape::table;
+  steps.times = {0.0, 1.5};
+  steps.values = {0.005, 0.0035};
+  steps.hold_steps = true;
+  SimulationOptions o;
+  o.duration = 4.0;
+  o.output_rate = 500;
+  const Trajectory tr = simulate(*loop, law, steps, o);
+  ASSERT_EQ(tr.motor_position.size(), tr.rows());
+  // Every row: the motor and the load are at most half the play apart.
+  constexpr double kGapAbs = 1e-9;  // m: the located flank, to the root finder's tolerance
+  for (std::size_t i = 0; i < tr.rows(); ++i)
+    ASSERT_LE(std::abs(tr.motor_position[i] - tr.position[i]), p.width / 2 + kGapAbs) << "t = " << tr.time[i];
+  // Before the reversal the engaged pair holds 1 mm short: Kp x 1 mm = Fc, the Coulomb level the
+  // load slides down to (an overdamped approach: 10 um is what is left of it at 1.5 s, at most).
+  constexpr double kApproachAbs = 1e-5;  // m
+  const std::size_t before = row_at(tr, 1.49);
+  EXPECT_NEAR(tr.motor_position[before], 0.004, kApproachAbs);
+  EXPECT_NEAR(tr.position[before], 0.003, kApproachAbs);
+  // After it: no impact, the motor at the reference, the load where it was, within the half-play.
+  for (const PlantEvent& e : tr.plant_events) {
+    if (e.time > 1.5) {
+      EXPECT_EQ(e.index, 2) << "an impact after the reversal, at t = " << e.time;
+    }
+  }
+  constexpr double kSettledAbs = 1e-7;  // m: e^(-2.5 s / 0.14 s) of the 0.5 mm step, and the solver's tolerance
+  EXPECT_NEAR(tr.motor_position.back(), 0.0035, kSettledAbs);
+  EXPECT_LE(std::abs(tr.position.back() - 0.0035), p.width / 2);
+  EXPECT_NEAR(tr.position.back(), tr.position[before], kApproachAbs);
+  EXPECT_EQ(tr.velocity.back(), 0.0);  // the load is stuck
+  // The default loop measures the load (the friction side): the load settles within reach of the
+  // reference (stiction holds it where Kp |error| < Fs), and the motor sits at a flank of it.
+  const Trajectory on_load = simulate(*base, law, steps, o);
+  EXPECT_NEAR(on_load.position.back(), 0.0035, 0.5 / 400);
+  EXPECT_NEAR(std::abs(on_load.motor_position.back() - on_load.position.back()), p.width / 2, kGapAbs);
+  // The CSV has the motor's column after the contact's.
+  const std::string head = tr.to_csv().substr(0, tr.to_csv().find('\n'));
+  EXPECT_EQ(head, "time,position,velocity,friction,applied,current,voltage,reference,stuck,motor_position");
+  // A plant without a motor and a load is refused, naming the key.
+  try {
+    (void)ClosedLoop(std::make_shared<const RigidAxis>(AxisParams{}), c).measuring(MeasuredBody::motor);
+    ADD_FAILURE() << "measure: motor accepted on a rigid axis";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("controller.measure"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Backlash, ScenarioControllerMeasuresTheMotorOrTheLoadByName) {
+  const std::string head =
+      "input: {type: constant, value: 0.005}\nduration: 2\noutput_rate: 100\n"
+      "friction: {law: static-coulomb-viscous, Fs: 0.5, Fc: 0.4, Fv: 0.5}\n";
+  const std::string plant = "plant: {type: axis, M: 1.5, backlash: {width: 0.002, motor_inertia: 0.5}}\n";
+  auto loop_of = [&](const std::string& yaml) {
+    const Scenario sc = scenario_from_yaml(YAML::Load(yaml), "s.yaml");
+    const auto* loop = dynamic_cast<const ClosedLoop*>(sc.plant.get());
+    EXPECT_NE(loop, nullptr);
+    return loop ? loop->measured_body() : MeasuredBody::contact;
+  };
+  EXPECT_EQ(loop_of(head + plant + "controller: {Kp: 400, Kd: 60}\n"), MeasuredBody::contact);
+  EXPECT_EQ(loop_of(head + plant + "controller: {Kp: 400, Kd: 60, measure: motor}\n"), MeasuredBody::motor);
+  EXPECT_EQ(loop_of(head + plant + "controller: {Kp: 400, Kd: 60, measure: load}\n"), MeasuredBody::load);
+  const Trajectory tr = simulate(scenario_from_yaml(YAML::Load(head + plant + "controller: {Kp: 400, Kd: 60, measure: motor}\n"), "s.yaml"));
+  EXPECT_FALSE(tr.motor_position.empty());
+  auto refused = [&](const std::string& yaml, const std::string& named) {
+    try {
+      (void)scenario_from_yaml(YAML::Load(yaml), "s.yaml");
+      ADD_FAILURE() << "accepted " << yaml;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(named), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("s.yaml"), std::string::npos) << e.what();
+    }
+  };
+  refused(head + plant + "controller: {Kp: 400, measure: gearbox}\n", "unknown measured body 'gearbox'; valid bodies: motor, load");
+  refused(head + "plant: {type: axis, M: 1.5}\ncontroller: {Kp: 400, measure: motor}\n",
+          "controller.measure: the axis has one body");
 }

@@ -46,6 +46,20 @@ def test_ripple_holds_a_stuck_contact_against_applied_minus_ripple():
     assert fl.FrictionLaw(law.to_dict()) == law
 
 
+def test_ripple_by_table_interpolates_over_one_period():
+    table = {"ripple_period": 0.004, "ripple_position": [0.0, 0.001, 0.0025, 0.004], "ripple_force": [0.2, -0.3, 0.1, 0.2]}
+    law = fl.FrictionLaw({**STRIBECK, **table})
+    assert law.effects == table
+    assert law.ripple(0.0005) == pytest.approx(-0.05, abs=1e-12)  # halfway along the first row pair
+    assert law.ripple(0.0005 - 0.004 * 3) == pytest.approx(-0.05, abs=1e-12)  # periodic
+    assert law.force_at(0.0, -0.05 + 1.4, position=0.0005) == pytest.approx(-0.05 + 1.4, abs=1e-12)  # held
+    assert fl.FrictionLaw(law.to_dict()) == law
+    with pytest.raises(fl.Error) as info:
+        fl.FrictionLaw({**STRIBECK, **table, "ripple_position": [0.0, 0.001, 0.001, 0.004]})
+    assert info.value.code == "law.parameter" and info.value.key == "ripple_position[2]"
+    assert "strictly increasing" in str(info.value)
+
+
 @pytest.mark.parametrize(
     "extra, key",
     [

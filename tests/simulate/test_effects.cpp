@@ -99,7 +99,7 @@ TEST(RippleHybrid, TheRippleDecidesWhereAPushedAxisStops) {
   // U(q) = 0.5 P / (2 pi) (1 - cos(2 pi q / P)); it sticks there, as 1.3 - r(q) < 1.
   constexpr double P = 0.01, A = 0.5, push = 1.3, Fc = 1.0;
   LawEffects e;
-  e.ripple = PositionRipple{P, {A}, {}};
+  e.ripple = PositionRipple{P, {A}, {}, {}, {}};
   const FrictionLaw law = FrictionLaw(Coulomb{Fc}).with_effects(e);
   const RigidAxis axis(AxisParams{0.5, 0.0});
   SimulationOptions o;
@@ -130,7 +130,7 @@ TEST(RippleHybrid, WorkOfTheInputIsKineticPlusDissipatedPlusRipplePotential) {
   // all the way. Input work u x = M v^2 / 2 + integral (F - r(x)) v dt + U(x).
   LawEffects e;
   e.load = LoadDependence{0.05, 0.03};
-  e.ripple = PositionRipple{0.02, {0.3, 0.1}, {0.2, 0.0}};
+  e.ripple = PositionRipple{0.02, {0.3, 0.1}, {0.2, 0.0}, {}, {}};
   const FrictionLaw law = stribeck_with(e);
   constexpr double M = 0.8, u = 3.5;
   const RigidAxis axis(AxisParams{M, 0.0});
@@ -217,7 +217,7 @@ TEST(ThermalHybrid, AWarmingContactSticksAtItsTemperaturesLevel) {
 TEST(EffectsFixedStep, AgreesWithTheExactRunAsDtShrinks) {
   // The ripple stop of RippleHybrid in fixed-step mode: the stop position converges to the exact one.
   LawEffects e;
-  e.ripple = PositionRipple{0.01, {0.5}, {}};
+  e.ripple = PositionRipple{0.01, {0.5}, {}, {}, {}};
   const FrictionLaw law = FrictionLaw(Coulomb{1.0}).with_effects(e);
   const RigidAxis axis(AxisParams{0.5, 0.0});
   SimulationOptions o;
@@ -286,5 +286,37 @@ TEST(ThermalHybrid, ARunThatHeatsPastTheLawsRangeStopsWithTheTypedError) {
   } catch (const InputError& ex) {
     EXPECT_EQ(ex.code(), "law.parameter");
     EXPECT_EQ(ex.fields().key, "T_max");
+  }
+}
+
+TEST(RippleHybrid, ATableRippleHoldsAStuckAxisWhileTheRestIsWithinTheStaticLevel) {
+  // Static level 1.2 N, Coulomb 1 N, and a ripple by table whose value at the rest position q = 0
+  // is 0.5 N: stepped at 0.1 s to an applied force u, the axis holds while |u - 0.5| <= 1.2
+  // (exactly: velocity 0, friction = u) and breaks away, at the step, in the direction of u - 0.5
+  // just beyond it.
+  LawEffects e;
+  e.ripple = PositionRipple{0.01, {}, {}, {-0.005, -0.002, 0.0, 0.003, 0.005}, {-0.4, 0.1, 0.5, -0.2, -0.4}};
+  const FrictionLaw law = FrictionLaw(StaticCoulombViscous{1.2, 1.0, 0.2}).with_effects(e);
+  ASSERT_EQ(law.ripple(0.0), 0.5);
+  const RigidAxis axis(AxisParams{0.5, 0.0});
+  SimulationOptions o;
+  o.duration = 0.5;
+  o.output_rate = 200;
+  constexpr double kMargin = 1e-3;  // N: just inside and just beyond the level
+  for (const double u : {0.5 + 1.2 - kMargin, 0.5 - 1.2 + kMargin}) {
+    const Trajectory tr = simulate(axis, law, step_at(0.1, u), o);
+    EXPECT_TRUE(tr.switches.empty()) << "u = " << u;
+    EXPECT_EQ(tr.position.back(), 0.0) << "u = " << u;
+    EXPECT_EQ(tr.velocity.back(), 0.0) << "u = " << u;
+    EXPECT_EQ(tr.stuck.back(), 1.0) << "u = " << u;
+    EXPECT_EQ(tr.friction.back(), u) << "u = " << u;  // stuck, the friction balances the push
+  }
+  for (const double u : {0.5 + 1.2 + kMargin, 0.5 - 1.2 - kMargin}) {
+    const Trajectory tr = simulate(axis, law, step_at(0.1, u), o);
+    ASSERT_FALSE(tr.switches.empty()) << "u = " << u;
+    EXPECT_EQ(tr.switches[0].kind, SwitchKind::breakaway) << "u = " << u;
+    constexpr double kEventAbs = 1e-9;  // s: the step is a corner of the run, where the breakaway is
+    EXPECT_NEAR(tr.switches[0].time, 0.1, kEventAbs) << "u = " << u;
+    EXPECT_GT(tr.position[30] * (u - 0.5), 0.0) << "u = " << u;  // row 30 = 0.15 s: moved the way u - r pushes
   }
 }

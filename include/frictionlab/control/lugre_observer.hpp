@@ -3,6 +3,7 @@
 // section V: a copy of the LuGre bristle state, driven by the measured velocity and corrected by
 // the position error, whose friction force the loop adds to its command.
 
+#include <optional>
 #include <span>
 #include <string>
 
@@ -28,6 +29,10 @@ struct LuGreObserverParams {
 ///   output F^ = sigma0 z^ + sigma1(v) dz^/dt + sigma2 v       (N or N m)
 /// One own state, continuous: z^ (m or rad), starting at the law's steady state at the first
 /// measured velocity (0 at rest). No events: the output is continuous in v.
+/// A law with a position ripple adds r(x), its ripple at the measured position
+/// (CompensatorInput::position), to F^, as the feedback compensation does: the ripple is a known
+/// function of the position and acts whether the body slides or sticks, so the bristle copy and
+/// its position-error integral are left with what the model does not know.
 class LuGreObserver : public Compensator {
  public:
   /// \throws std::invalid_argument "lugre-observer: law = NAME must be lugre ..." when the law is
@@ -45,10 +50,13 @@ class LuGreObserver : public Compensator {
   double update(const CompensatorInput& in, std::span<double> z, double dt) const override;
 
   const LuGre& law() const { return law_; }
+  /// The ripple the output carries (the law's), or none.
+  const std::optional<PositionRipple>& ripple() const { return ripple_; }
   const LuGreObserverParams& params() const { return p_; }
 
  private:
   LuGre law_;
+  std::optional<PositionRipple> ripple_;  ///< the law's ripple, if it has one
   LuGreObserverParams p_;
 };
 

@@ -63,6 +63,11 @@ class BacklashAxis : public SingleContactPlant {
   /// the gap opens with both bodies at their common velocity.
   void on_event(double t, std::span<double> x, Inputs u, int k) const override;
   const BacklashParams& params() const { return p_; }
+  /// State index of the motor's position (its velocity is the next state): 0 when the friction
+  /// acts on the motor, else 2.
+  int motor_state() const { return p_.friction_side == FrictionSide::motor ? 0 : 2; }
+  /// State index of the load's position (its velocity is the next state): 0 or 2.
+  int load_state() const { return 2 - motor_state(); }
 
   /// The force (N or N m) the motor transmits to the load while engaged, at input u and friction
   /// F on the contact; 0 while the gap is open.

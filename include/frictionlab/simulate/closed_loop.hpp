@@ -29,6 +29,11 @@ struct CompensationConditions {
   std::optional<InputSignal> temperature_log;
 };
 
+/// The body a closed loop measures (its controller's and its compensator's position and
+/// velocity): the plant's contact (the body the friction acts on; the default), or on a backlash
+/// axis (plants/backlash_axis.hpp) its motor or its load by name.
+enum class MeasuredBody { contact, motor, load };
+
 /// A PID (control/pid.hpp) closed around `inner` (a 1-DOF plant). States: the inner plant's, then
 /// the PID's own (continuous: the integral of the error; sampled: the integral, the applied and
 /// the last computed output), then the compensator's own states (none without a compensator).
@@ -37,7 +42,9 @@ struct CompensationConditions {
 ///
 /// Compensation: the compensator's output (N or N m), times compensation_gain, adds to the PID and
 /// feedforward terms BEFORE the saturation, so a saturated loop cannot exceed its limit with it.
-/// The compensator sees the measured position and velocity (x[0], x[1]) and, in a position loop,
+/// The loop measures the contact's position and velocity (x[0], x[1]), or on a backlash axis the
+/// body measuring() names (a drive's encoder on the motor, a linear scale on the load).
+/// The compensator sees the measured position and velocity and, in a position loop,
 /// r with its rate and acceleration; in a velocity loop r is its reference velocity (rate r,
 /// acceleration dr/dt) and its reference position is the measured one (no position error). Its
 /// drive input is the inner plant's drive signal at the saturated output (the force applied).
@@ -100,6 +107,11 @@ class ClosedLoop : public SingleContactPlant {
   /// This loop with its compensator given the conditions `c` (replacing any it had).
   std::shared_ptr<const ClosedLoop> with_conditions(CompensationConditions c) const;
   const CompensationConditions& conditions() const { return conditions_; }
+  /// This loop measuring `body`'s position and velocity instead of the contact's.
+  /// \throws std::invalid_argument "controller.measure: ..." when body is motor or load and the
+  ///         inner plant is not a backlash axis (it has one body).
+  std::shared_ptr<const ClosedLoop> measuring(MeasuredBody body) const;
+  MeasuredBody measured_body() const { return measured_body_; }
 
  private:
   CompensatorInput measured(double t, std::span<const double> x, const InputValue& r) const;
@@ -111,6 +123,8 @@ class ClosedLoop : public SingleContactPlant {
   Pid pid_;
   std::shared_ptr<const Compensator> compensator_;
   CompensationConditions conditions_;
+  MeasuredBody measured_body_ = MeasuredBody::contact;
+  std::size_t pos_ = 0;  ///< state index of the measured position; its velocity is the next one
   int n_inner_;
   int n_pid_;
   int n_comp_;

@@ -78,6 +78,10 @@ struct Trajectory : ContactColumns {
   std::vector<ContactColumns> others;  ///< contacts 1..N-1
   std::vector<ModeSwitch> switches;    ///< hybrid mode: every mode switch, in time order
   std::vector<PlantEvent> plant_events;  ///< every event of the plant's own event functions, in time order
+  /// A backlash axis (open or in a loop): its motor's position (m or rad) at each row, the other
+  /// body than the contact when the friction acts on the load; empty for other plants. Part of
+  /// the CSV (after stuck, load and temperature) when not empty.
+  std::vector<double> motor_position;
   SimulationStats stats;
 
   std::size_t rows() const { return time.size(); }
@@ -87,7 +91,7 @@ struct Trajectory : ContactColumns {
   const ContactColumns& contact(int i) const;
   /// A 1-DOF trajectory's column names in CSV order: time, position, velocity, friction, applied,
   /// current, voltage, reference, stuck (names() adds load, temperature for a contact with an
-  /// environment).
+  /// environment, and motor_position for a backlash axis).
   static const std::vector<std::string>& column_names();
   /// This trajectory's column names in CSV order: column_names() when its plant has one unnamed
   /// contact; otherwise time, then for each contact NAME.position, NAME.velocity, NAME.friction,
