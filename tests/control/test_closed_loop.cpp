@@ -285,70 +285,8 @@ TEST(ClosedLoopCompensation, CompensatorSeesTheLoopsLoadAndTemperature) {
   EXPECT_GT(loop->compensation(0.0, x, r) - plain.compensation(0.0, x, r), 4.0);  // 0.1 x 47.8 N
 }
 
-// A slow position ramp (5 mm/s) on a unit mass with Coulomb-viscous friction and a cogging ripple
-// of 0.8 N over a 10 mm period, under a PD loop (Kp = 400 N/m, Kd = Kvff = 40 N s/m): the ripple,
-// at pi rad/s far inside the loop's 20 rad/s bandwidth, pushes the error back and forth by about
-// r / Kp = 2 mm. A compensation that carries the ripple (at the reference position for the
-// feedforward, at the measured one for the feedback) removes it; the same compensation of the
-// law without its ripple leaves it. Tracking error rms over t in [2, 10] s (four ripple periods,
-// after the start's transient).
-TEST(ClosedLoopCompensation, RippleCompensationTracksASlowRampBetter) {
-  LawEffects e;
-  e.ripple = PositionRipple{0.01, {0.8}, {}, {}, {}};  // m, N
-  const FrictionLaw law = FrictionLaw(CoulombViscous{1.0, 0.4}).with_effects(e);
-  const FrictionLaw velocity_part(CoulombViscous{1.0, 0.4});  // the same law without its ripple
-  ControllerParams pd;
-  pd.Kp = 400.0;
-  pd.Kd = 40.0;
-  pd.Kvff = 40.0;
-  InputSignal ramp;
-  ramp.shape = InputShape::ramp;
-  ramp.rate = 0.005;  // m/s
-  SimulationOptions o;
-  o.duration = 10;
-  o.output_rate = 200;
-  auto rms = [&](std::shared_ptr<const Compensator> c) {
-    const Trajectory tr = simulate(ClosedLoop(unit_mass(), pd, std::move(c)), law, ramp, o);
-    double sum = 0;
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < tr.rows(); ++i)
-      if (tr.time[i] >= 2.0) {
-        sum += std::pow(tr.position[i] - tr.reference[i], 2);
-        ++n;
-      }
-    return std::sqrt(sum / static_cast<double>(n));
-  };
-  const double e_none = rms(nullptr);
-  const double e_ff_plain = rms(std::make_shared<const FeedforwardCompensation>(velocity_part));
-  const double e_ff = rms(std::make_shared<const FeedforwardCompensation>(law));
-  const double e_fb_plain = rms(std::make_shared<const FeedbackCompensation>(velocity_part));
-  const double e_fb = rms(std::make_shared<const FeedbackCompensation>(law));
-  std::printf("ramp over a ripple: tracking error rms %.3g m uncompensated; feedforward %.3g m without the ripple, "
-              "%.3g m with it; feedback %.3g m without, %.3g m with\n",
-              e_none, e_ff_plain, e_ff, e_fb_plain, e_fb);
-  // Without the ripple term the error keeps the ripple's r / Kp share: 0.8 / 400 / sqrt(2) = 1.4 mm
-  // rms quasi-statically, 1.24 mm here (3.2 mm without any compensation: the Coulomb lag too).
-  EXPECT_GT(e_ff_plain, 1e-3);
-  EXPECT_GT(e_fb_plain, 1e-3);
-  // With it (the exact model) the loop is the frictionless one, which tracks the ramp without error
-  // once the start's transient has decayed: 1.6e-11 m (feedforward) and 1.9e-12 m (feedback) here,
-  // the solver's tolerance; 1e-6 m leaves room for other solver versions and is still a factor
-  // 1000 below the error without the ripple term (1.24 mm) and 3000 below none (3.2 mm).
-  EXPECT_LT(e_ff, 1e-6);
-  EXPECT_LT(e_fb, 1e-6);
-  EXPECT_LT(e_ff, e_ff_plain / 1000);
-  EXPECT_LT(e_fb, e_fb_plain / 1000);
-  EXPECT_LT(e_ff, e_none / 1000);
-}
-
-}  // namespace
-}  // namespace frictionlab
-
-namespace frictionlab {
-namespace {
-
 // Tracking error rms (m) over t in [2, 10] s of `law` on a unit mass following a 5 mm/s ramp under
-// the PD loop of RippleCompensationTracksASlowRampBetter, compensated by `c` (none: null).
+// a PD loop (Kp 400 N/m, Kd 40 N s/m, velocity feedforward 40 N s/m), compensated by `c` (none: null).
 double ramp_error_rms(const FrictionLaw& law, std::shared_ptr<const Compensator> c) {
   ControllerParams pd;
   pd.Kp = 400.0;
@@ -369,6 +307,41 @@ double ramp_error_rms(const FrictionLaw& law, std::shared_ptr<const Compensator>
       ++n;
     }
   return std::sqrt(sum / static_cast<double>(n));
+}
+
+// A slow position ramp (5 mm/s) on a unit mass with Coulomb-viscous friction and a cogging ripple
+// of 0.8 N over a 10 mm period, under a PD loop (Kp = 400 N/m, Kd = Kvff = 40 N s/m): the ripple,
+// at pi rad/s far inside the loop's 20 rad/s bandwidth, pushes the error back and forth by about
+// r / Kp = 2 mm. A compensation that carries the ripple (at the reference position for the
+// feedforward, at the measured one for the feedback) removes it; the same compensation of the
+// law without its ripple leaves it. Tracking error rms over t in [2, 10] s (four ripple periods,
+// after the start's transient).
+TEST(ClosedLoopCompensation, RippleCompensationTracksASlowRampBetter) {
+  LawEffects e;
+  e.ripple = PositionRipple{0.01, {0.8}, {}, {}, {}};  // m, N
+  const FrictionLaw law = FrictionLaw(CoulombViscous{1.0, 0.4}).with_effects(e);
+  const FrictionLaw velocity_part(CoulombViscous{1.0, 0.4});  // the same law without its ripple
+  const double e_none = ramp_error_rms(law, nullptr);
+  const double e_ff_plain = ramp_error_rms(law, std::make_shared<const FeedforwardCompensation>(velocity_part));
+  const double e_ff = ramp_error_rms(law, std::make_shared<const FeedforwardCompensation>(law));
+  const double e_fb_plain = ramp_error_rms(law, std::make_shared<const FeedbackCompensation>(velocity_part));
+  const double e_fb = ramp_error_rms(law, std::make_shared<const FeedbackCompensation>(law));
+  std::printf("ramp over a ripple: tracking error rms %.3g m uncompensated; feedforward %.3g m without the ripple, "
+              "%.3g m with it; feedback %.3g m without, %.3g m with\n",
+              e_none, e_ff_plain, e_ff, e_fb_plain, e_fb);
+  // Without the ripple term the error keeps the ripple's r / Kp share: 0.8 / 400 / sqrt(2) = 1.4 mm
+  // rms quasi-statically, 1.24 mm here (3.2 mm without any compensation: the Coulomb lag too).
+  EXPECT_GT(e_ff_plain, 1e-3);
+  EXPECT_GT(e_fb_plain, 1e-3);
+  // With it (the exact model) the loop is the frictionless one, which tracks the ramp without error
+  // once the start's transient has decayed: 1.6e-11 m (feedforward) and 1.9e-12 m (feedback) here,
+  // the solver's tolerance; 1e-6 m leaves room for other solver versions and is still a factor
+  // 1000 below the error without the ripple term (1.24 mm) and 3000 below none (3.2 mm).
+  EXPECT_LT(e_ff, 1e-6);
+  EXPECT_LT(e_fb, 1e-6);
+  EXPECT_LT(e_ff, e_ff_plain / 1000);
+  EXPECT_LT(e_fb, e_fb_plain / 1000);
+  EXPECT_LT(e_ff, e_none / 1000);
 }
 
 // The LuGre observer of a law with a ripple adds r(x) at the measured position to its bristle
