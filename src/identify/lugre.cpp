@@ -815,7 +815,17 @@ Result identify_lugre_unchecked(const LugreData& d, const LugreOptions& o) {
   {
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J);
     const auto& sv = svd.singularValues();
-    r.diagnostics.condition_number = sv[p_free - 1] > 0 ? sv[0] / sv[p_free - 1] : std::numeric_limits<double>::infinity();
+    // An exactly singular Jacobian (a parameter that moves no simulated position of this record, as
+    // a Stribeck velocity beyond every speed the record reaches) has no finite condition number: it
+    // is left undefined (JSON null, not printed) and said in words, never an inf in an ok result.
+    if (sv[p_free - 1] > 0) {
+      r.diagnostics.condition_number = sv[0] / sv[p_free - 1];
+    } else {
+      r.diagnostics.condition_number = std::numeric_limits<double>::quiet_NaN();
+      r.diagnostics.warnings.push_back(
+          "the fit's Jacobian is singular: at least one parameter has no effect on the simulated position of this "
+          "record (no condition number); its std does not bound its error (see undetermined and at_bound)");
+    }
   }
 
   // Physical values, and the map T from them to the internal parameters (d internal / d physical;

@@ -153,6 +153,11 @@ static Counts lugre_rates(double position_noise, int records, int* caveats) {
     d.force.array() += 0.3;  // N
     const fl::Result wrong = fl::identify_lugre(d, o);
     EXPECT_TRUE(wrong.ok()) << "record " << i << ": " << wrong.message;
+    // A fit whose Jacobian is exactly singular (record 1 with the position noise) stays an answer
+    // with no condition number, and says why in words.
+    for (const fl::Result* r : {&right, &wrong})
+      if (std::isnan(r->diagnostics.condition_number))
+        EXPECT_TRUE(warns_about(*r, "Jacobian is singular")) << "record " << i;
     c.wrong += warns(wrong);
     c.named += warns_about(wrong, "friction at low speed is higher than the model");
     ++c.n;
