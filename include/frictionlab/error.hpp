@@ -27,6 +27,9 @@
 // | data.not_a_number      | a cell that is text where a number belongs                           | file, row, column, value |
 // | data.not_finite        | a NaN, inf, empty cell or a number beyond the range of a double      | file, row, column, value |
 // | data.time              | a time column that is not increasing or not regular enough           | file, row, column |
+// | data.no_answer         | data that cannot give an answer: no motion or excitation, too few    | file   |
+// |                        | segments or samples, rank-deficient regressors (a result whose status |        |
+// |                        | is error and that has no other code)                                  |        |
 // | option.invalid         | an option value that cannot be parsed (NAME=FACTOR, a number or a    | option, value |
 // |                        | scalar's name, a list of names)                                       |        |
 // | option.out_of_range    | an option value outside its valid range (units in the message)       | option, value |
@@ -86,6 +89,7 @@ inline constexpr const char* data_column_length = "data.column_length";
 inline constexpr const char* data_not_a_number = "data.not_a_number";
 inline constexpr const char* data_not_finite = "data.not_finite";
 inline constexpr const char* data_time = "data.time";
+inline constexpr const char* data_no_answer = "data.no_answer";
 inline constexpr const char* option_invalid = "option.invalid";
 inline constexpr const char* option_out_of_range = "option.out_of_range";
 inline constexpr const char* option_conflict = "option.conflict";

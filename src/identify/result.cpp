@@ -4,6 +4,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "frictionlab/error.hpp"
 #include "frictionlab/version.hpp"
 #include <stdexcept>
 #include <string_view>
@@ -35,7 +36,9 @@ std::string to_json(const Result& r, int indent) {
   j["frictionlab"] = {{"version", kVersion}};  // the program that made the result (reproducibility)
   j["status"] = r.ok() ? "ok" : "error";
   j["message"] = r.message;
-  if (!r.ok() && !r.code.empty()) j["error"] = {{"code", r.code}, {"message", r.message}};
+  // Every error result carries a stable code: its own, or data.no_answer (no motion, too few
+  // segments, rank-deficient regressors: what the data could not give).
+  if (!r.ok()) j["error"] = {{"code", r.code.empty() ? errc::data_no_answer : r.code}, {"message", r.message}};
   j["method"] = r.method;
   j["model"] = r.model;
   j["data"] = {{"file", r.data_file}, {"sha256", r.data_sha256}};

@@ -18,6 +18,8 @@ if grep -qi "nan" "$tmp/gain0.txt"; then echo "FAIL: NaN printed"; cat "$tmp/gai
 import json, sys
 j = json.load(open(sys.argv[1]))
 assert j["status"] == "error" and "zero" in j["message"], j
+# every error JSON carries a stable code (docs/contract.md); data without an answer: data.no_answer
+assert j.get("error", {}).get("code") == "data.no_answer", j.get("error")
 assert j["parameters"] == {}, j["parameters"]
 PY
 
