@@ -32,6 +32,7 @@
 #include "frictionlab/plants/velocity_drive.hpp"
 #include "frictionlab/core/contour_input.hpp"
 #include "frictionlab/simulate/closed_loop.hpp"
+#include "frictionlab/simulate/emps_pd_loop.hpp"
 #include "frictionlab/simulate/simulate.hpp"
 #include "frictionlab/simulate/xy_table.hpp"
 #include "frictionlab/simulate/output_size.hpp"
@@ -990,12 +991,13 @@ Scenario read_scenario(const YAML::Node& root, const std::string& where, const S
     sc.options.environments = {read_environment(es, src)};
     // A compensator of a law with load or temperature terms sees the same load (a signal: measured;
     // a gravity load: the plant's known load function, estimated from its state) and a fixed
-    // temperature; a thermal state it does not see (the law's T_ref).
-    if (const auto* loop = dynamic_cast<const ClosedLoop*>(sc.plant.get()); loop && loop->compensator()) {
-      const ContactEnvironment& e = sc.options.environments[0];
-      sc.plant = loop->with_conditions(
-          CompensationConditions{.load = e.load, .temperature = e.temperature, .temperature_log = e.temperature_log});
-    }
+    // temperature; a thermal state it does not see (the law's T_ref). Both loops, the PID's and
+    // the EMPS controller's sampled one.
+    const CompensationConditions seen = CompensationConditions::of(sc.options.environments[0]);
+    if (const auto* loop = dynamic_cast<const ClosedLoop*>(sc.plant.get()); loop && loop->compensator())
+      sc.plant = loop->with_conditions(seen);
+    else if (const auto* emps = dynamic_cast<const EmpsPdLoop*>(sc.plant.get()); emps && emps->compensator())
+      sc.plant = emps->with_conditions(seen);
     // The temperatures the run starts at must lie in the law's range (it would stop at t = 0).
     const ContactEnvironment& env = sc.options.environments[0];
     const std::optional<double> T0 = env.thermal ? std::optional<double>(env.thermal->T0.value_or(env.thermal->T_ambient))

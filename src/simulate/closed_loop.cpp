@@ -47,9 +47,7 @@ CompensatorInput ClosedLoop::measured(double t, std::span<const double> x, const
   in.t = t;
   in.position = x[pos_];
   in.velocity = x[pos_ + 1];
-  in.load = conditions_.load.at(t, x.first(static_cast<std::size_t>(n_inner_)));
-  in.temperature = conditions_.temperature_log ? std::optional<double>(conditions_.temperature_log->at(t).value)
-                                               : conditions_.temperature;
+  conditions_.fill(in, t, x.first(static_cast<std::size_t>(n_inner_)));
   if (pid_.params().loop == ControlLoop::position) {
     in.reference = r.value;
     in.reference_rate = r.rate;

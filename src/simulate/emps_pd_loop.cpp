@@ -15,14 +15,29 @@ EmpsPdLoop::EmpsPdLoop(std::shared_ptr<const Plant> inner, EmpsPdParams p, std::
     throw std::invalid_argument("controller (emps-pd): cannot close this loop around an axis with backlash; use a pid controller");
 }
 
+std::shared_ptr<const EmpsPdLoop> EmpsPdLoop::with_conditions(CompensationConditions c) const {
+  auto out = std::make_shared<EmpsPdLoop>(*this);
+  out->conditions_ = std::move(c);
+  return out;
+}
+
+// What the compensator sees at time t of the inner plant's states x (position q = x[0]): the
+// position and the contact's conditions; the caller adds the velocity and the reference.
+CompensatorInput EmpsPdLoop::measured(double t, std::span<const double> x) const {
+  CompensatorInput in;
+  in.t = t;
+  in.position = x[0];
+  conditions_.fill(in, t, x);
+  return in;
+}
+
 void EmpsPdLoop::initial_extras(std::span<double> x, Inputs u) const {
   const std::size_t n = static_cast<std::size_t>(n_inner_);
   const InputValue no_output{};
   inner_->initial_extras(x.first(n), Inputs(&no_output, 1));
   for (std::size_t i = n; i < n + kDiscrete; ++i) x[i] = 0.0;  // primed = 0: the first sample starts the memory
   if (compensator_) {
-    CompensatorInput in;
-    in.position = x[0];
+    CompensatorInput in = measured(0.0, x.first(n));
     in.velocity = x[1];
     in.reference = u[0].value;
     compensator_->initial_states(in, x.subspan(n + kDiscrete, static_cast<std::size_t>(n_comp_)));
@@ -62,9 +77,7 @@ void EmpsPdLoop::sample(double t, std::span<double> x, const InputValue& r) cons
   const EmpsPdMeasurement m = pd_.measure(s, q, r.value);
   double compensation = 0.0;  // V
   if (compensator_) {
-    CompensatorInput in;
-    in.t = t;
-    in.position = q;
+    CompensatorInput in = measured(t, x.first(n));
     in.velocity = m.velocity;
     in.reference = r.value;
     in.reference_rate = m.reference_rate;

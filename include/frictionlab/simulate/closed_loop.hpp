@@ -11,23 +11,10 @@
 #include "frictionlab/control/emps_pd.hpp"
 #include "frictionlab/control/pid.hpp"
 #include "frictionlab/plants/plant.hpp"
-#include "frictionlab/simulate/environment.hpp"
+#include "frictionlab/simulate/compensation_conditions.hpp"
 
 #include "frictionlab/export.hpp"
 namespace frictionlab FRICTIONLAB_API {
-
-/// What the loop tells its compensator about the compensated contact's conditions
-/// (CompensatorInput::load, ::temperature), for a law with load or temperature terms.
-struct CompensationConditions {
-  /// The load (N or N m): measured (`signal`, e.g. a load cell's column) or estimated from the
-  /// plant's known load function (`of_state`, called with the inner plant's states). None = 0.
-  LoadSource load;
-  /// A measured temperature (degC or K); none = the law's T_ref (the compensation does not see a
-  /// thermal state of the run, only a temperature it is given).
-  std::optional<double> temperature;
-  /// or a measured temperature over time (degC or K; a log's column), in place of `temperature`.
-  std::optional<InputSignal> temperature_log;
-};
 
 /// The body a closed loop measures (its controller's and its compensator's position and
 /// velocity): the plant's contact (the body the friction acts on; the default), or on a backlash

@@ -9,6 +9,7 @@
 #include "frictionlab/control/compensator.hpp"
 #include "frictionlab/control/emps_pd.hpp"
 #include "frictionlab/plants/plant.hpp"
+#include "frictionlab/simulate/compensation_conditions.hpp"
 
 #include "frictionlab/export.hpp"
 namespace frictionlab FRICTIONLAB_API {
@@ -26,7 +27,9 @@ namespace frictionlab FRICTIONLAB_API {
 /// q(k), the loop's own velocity estimate qd_m(k), the reference qg(k) and its backward difference
 /// (qg(k) - qg(k-1)) / dt as the reference velocity (the reference is a sampled signal), and the
 /// force held over the period just ended; its output F (N or N m) enters the drive as F / gtau (V)
-/// inside the saturation. Its states follow the 6 discrete ones (the sixth: qg(k-1), m).
+/// inside the saturation. Its states follow the 6 discrete ones (the sixth: qg(k-1), m). A law
+/// with load or temperature terms is compensated at the load and temperature that with_conditions()
+/// gives (sampled with the measurement; without them: load 0 and the law's T_ref).
 class EmpsPdLoop : public SingleContactPlant {
  public:
   /// \throws std::invalid_argument when `inner` is null, kinematic or not 1-DOF, or as
@@ -48,12 +51,18 @@ class EmpsPdLoop : public SingleContactPlant {
   const Plant& inner() const { return *inner_; }
   /// The compensator, or nullptr.
   const Compensator* compensator() const { return compensator_.get(); }
+  /// This loop with its compensator given the conditions `c` (replacing any it had).
+  std::shared_ptr<const EmpsPdLoop> with_conditions(CompensationConditions c) const;
+  const CompensationConditions& conditions() const { return conditions_; }
 
  private:
+  CompensatorInput measured(double t, std::span<const double> x) const;
+
   static constexpr int kDiscrete = EmpsPd::kStates;  // the controller's own discrete states
   std::shared_ptr<const Plant> inner_;
   EmpsPd pd_;
   std::shared_ptr<const Compensator> compensator_;
+  CompensationConditions conditions_;
   int n_inner_;
   int n_comp_ = 0;
 };
