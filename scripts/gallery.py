@@ -47,6 +47,16 @@ WHAT = {  # a line on what each figure shows, by name
     "plot.idim": "fl.plot.idim: measured and reconstructed force, and the residual.",
     "plot.simulation": "fl.plot.simulation: a simulation's columns against time.",
     "plot.decay": "fl.plot.decay: a free decay with its envelope.",
+    "plot.breakaway": "fl.plot.breakaway: the applied torque of a breakaway ramp with Fs and the Coulomb level.",
+    "plot.contour": "fl.plot.contour: a circular test's radial error against the angle, quadrant glitches marked.",
+    "plot.map": "fl.plot.map: a stick-slip map over two scenario keys, one on a logarithmic axis.",
+    "identify-idim-conditions": "The report's friction map against velocity and load (idim with the load term).",
+    "identify-idim-conditions:ripple": "The report's position ripple over one period (idim with the ripple term).",
+    "identify-idim-conditions:temperature": "The report's temperature drift: the logged temperature and the viscous "
+                                            "coefficient it gives (idim with the temperature term).",
+    "plot.load_map": "fl.plot.load_map: friction against velocity in three bands of |load|, each with its law.",
+    "plot.ripple": "fl.plot.ripple: the position ripple over one period, samples and the identified ripple.",
+    "plot.temperature": "fl.plot.temperature: the logged temperature and the viscous coefficient it gives.",
 }
 
 
@@ -95,11 +105,14 @@ def main():
                  "(`FIG.gp`) next to it; the images here are PNG drawn again from those scripts at",
                  f"{GALLERY_WIDTH} px, with a palette of {PALETTE} colours to keep them small.", "",
                  "The commands run in this order from the source directory; the inputs they read come from the",
-                 "commands above them, and these three:", "",
+                 "commands above them, and these (`lugre.csv` is the presliding-then-sliding record that",
+                 "`tests/figures/make_figures.py` simulates):", "",
                  "```sh",
                  "frictionlab simulate examples/virgala_motor_sweep.yaml -o sweep.csv",
                  "frictionlab simulate examples/craig_pendulum_combined.yaml -o pend.csv",
                  "/usr/bin/python3 examples/fleet_logs.py fleet",
+                 "/usr/bin/python3 tests/rigs/servo_log.py servo.csv",
+                 "/usr/bin/python3 tests/rigs/effects_log.py effects.csv --seed 4",
                  "```", ""]
         lines += ["## Command line", ""]
         python_started = False

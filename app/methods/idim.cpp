@@ -5,7 +5,6 @@
 #include <optional>
 #include <variant>
 #include <cmath>
-#include <numbers>
 #include <sstream>
 
 #include "../figure_kit.hpp"
@@ -33,71 +32,6 @@ IdimData idim_data(const Dataset& d, const DataOptions& c, const OptionValues& o
 }
 
 double sign_of(double v) { return v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0; }
-
-// The figures of the conditions' terms (load map, ripple, temperature drift): the record's load,
-// temperature and position at the fitted samples (each fitted sample is a sample of the record,
-// found by its time), the friction law at zero load, the ripple's partial residual over one period
-// and the viscous coefficient over time. Series only (not in JSON); nothing without the terms.
-void add_condition_series(Result& r, const IdimData& data, const OptionValues& options) {
-  const auto* t = find(r, "time");
-  const auto* friction = find(r, "friction");
-  const auto* friction_model = find(r, "friction_model");
-  if (!r.ok() || !t || !friction || !friction_model) return;
-  const Eigen::Index n = data.time.size();
-  std::vector<Eigen::Index> at;
-  for (const double ti : *t)
-    at.push_back(std::clamp<Eigen::Index>(std::lower_bound(data.time.data(), data.time.data() + n, ti) - data.time.data(), 0, n - 1));
-  const auto sampled = [&](const Eigen::VectorXd& col) {
-    std::vector<double> out;
-    for (const auto k : at) out.push_back(col[k]);
-    return out;
-  };
-  if (const Parameter* mu = r.find("mu_load"); mu && data.load.size() == n) {
-    r.series["load"] = sampled(data.load.cwiseAbs());
-    // law_force is the friction terms at the record's mean |load|: the same at zero load.
-    const double mean_load = data.load.cwiseAbs().mean();
-    if (const auto *lv = find(r, "law_velocity"), *lF = find(r, "law_force"); lv && lF) {
-      std::vector<double> zero(lF->size());
-      for (std::size_t i = 0; i < zero.size(); ++i) zero[i] = (*lF)[i] - mu->value * mean_load * sign_of((*lv)[i]);
-      r.series["law_force_zero_load"] = std::move(zero);
-    }
-  }
-  if (r.find("Fv_per_K") && r.find("Fv") && data.temperature.size() == n &&
-      r.diagnostics.numbers.count("temperature_ref")) {
-    const double Fv = r.value("Fv"), per_K = r.value("Fv_per_K"), ref = r.diagnostics.numbers.at("temperature_ref");
-    r.series["temperature"] = sampled(data.temperature);
-    std::vector<double> viscous;
-    for (const double T : r.series["temperature"]) viscous.push_back(Fv + per_K * (T - ref));
-    r.series["temperature_viscous"] = std::move(viscous);
-  }
-  if (r.find("ripple_sin_1") && data.position.size() == n && options.given("ripple-period")) {
-    const double P = options.number("ripple-period");
-    const auto harmonics = static_cast<int>(options.integer("ripple-harmonics"));
-    const auto ripple = [&](double q) {
-      double f = 0;
-      for (int h = 1; h <= harmonics; ++h) {
-        const double w = 2 * std::numbers::pi * h * q / P;
-        f += r.value("ripple_sin_" + std::to_string(h)) * std::sin(w) + r.value("ripple_cos_" + std::to_string(h)) * std::cos(w);
-      }
-      return f;
-    };
-    // The partial residual: the fit's residual plus the identified ripple, against the position
-    // within the period.
-    std::vector<double> phase, partial;
-    for (std::size_t i = 0; i < at.size(); ++i) {
-      const double q = data.position[at[i]];
-      phase.push_back(q - P * std::floor(q / P));
-      partial.push_back((*friction)[i] - (*friction_model)[i] + ripple(q));
-    }
-    r.series["ripple_position"] = std::move(phase);
-    r.series["ripple_partial"] = std::move(partial);
-    constexpr int kCurve = 200;
-    std::vector<double> qc, fc;
-    for (int i = 0; i <= kCurve; ++i) qc.push_back(P * i / kCurve), fc.push_back(ripple(qc.back()));
-    r.series["ripple_curve_position"] = std::move(qc);
-    r.series["ripple_curve_force"] = std::move(fc);
-  }
-}
 
 // The controller's gains given as the names of scalars of the data file (--kp kp: a MAT file's
 // variable) replaced by their values; `sources` notes each one's name and file.
@@ -158,7 +92,6 @@ Result run(const MethodIO& io, const OptionValues& given) {
   o.axis = axis;
   const IdimData data = idim_data(d, io.columns, options);
   Result r = identify_idim(data, o);
-  add_condition_series(r, data, options);
   r.data_file = data.file;
   r.data_sha256 = data.sha256;
   note_data(r, d);

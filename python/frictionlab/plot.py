@@ -9,10 +9,13 @@
   contour(result)      a circular test's radial error against the angle, quadrant glitches marked
   map(rows)            a map of motion classes over one or two scenario keys (fl.analyze_map)
   drift(table)         a fleet's parameters with their std against the log's date, flagged changes marked
+  load_map(result)     an idim fit with the load term: friction against velocity in three bands of |load|
+  ripple(result)       an idim fit with the ripple term: the ripple against the position within its period
+  temperature(result)  an idim fit with the temperature term: the logged temperature and the viscous coefficient
 
 Every function takes ``ax=``: the matplotlib Axes to draw into (a sequence of Axes, one per panel,
-for the figures of several panels: idim 2, decay 2, simulation and drift one per column or
-parameter); it then returns that Axes (or the list) and leaves the layout to the caller. Without
+for the figures of several panels: idim 2, decay 2, temperature 2, simulation and drift one per
+column or parameter); it then returns that Axes (or the list) and leaves the layout to the caller. Without
 ``ax`` it makes a figure and returns the Figure; ``file=`` writes it (format by the extension).
 
 Every axis label carries its unit; a log-spaced map axis is drawn on a logarithmic scale; legends
@@ -346,3 +349,100 @@ def drift(table, parameters=None, *, ax=None, file=None, title=None):
     # The number of logs, not of rows: a row is one parameter of one log.
     axes[0].set_title(title or f"drift over {len({r['file'] for r in rows})} logs")
     return _done(fig, axes, file, False)
+
+
+def _condition_series(result, names, what, term):
+    """The idim result's series `names` (numpy arrays), or ValueError naming the term to fit."""
+    if not result.ok:
+        raise ValueError(f"{what} plot: the idim result has status error: {result.message}")
+    s = result.series
+    missing = [n for n in names if n not in s or len(s[n]) == 0]
+    if missing:
+        raise ValueError(f"{what} plot: the result has no '{missing[0]}' series: fit identify_idim with the "
+                         f"'{term}' term")
+    return [np.asarray(s[n], dtype=float) for n in names]
+
+
+def _velocity_unit(result):
+    return _VELOCITY_UNIT.get(_force_unit(result), "m/s")
+
+
+def load_map(result, *, ax=None, file=None, title=None):
+    """Friction against velocity and load of an idim result with the 'load' term: the friction
+    map's samples (force less the inertia and offset terms) in three bands of |load| (lower,
+    middle and upper third of its range; legend "|load| LO to HI"), each with the identified law at
+    the band's mean |load| (legend "law at |load| MEAN"). Returns the Figure (or ``ax``). Raises ValueError on a result without the load term."""
+    v, F, L = _condition_series(result, ("velocity", "friction", "load"), "load map", "load")
+    fu = _force_unit(result)
+    mu = result.value("mu_load")
+    law_v = np.asarray(result.series.get("law_velocity", []), dtype=float)
+    law_0 = np.asarray(result.series.get("law_force_zero_load", []), dtype=float)
+    fig, (a,) = _axes(ax, 1, (9, 5))
+    lo, hi = float(L.min()), float(L.max())
+    width = max((hi - lo) / 3, 1e-300)
+    band = np.minimum(2, ((L - lo) / width).astype(int))
+    for b, colour in enumerate(("#0072b2", "#009e73", "#d55e00")):
+        mine = band == b
+        if not mine.any():
+            continue
+        a.plot(v[mine], F[mine], ".", ms=2, color=colour, alpha=0.5,
+               label=f"|load| {lo + b * width:.3g} to {lo + (b + 1) * width:.3g} {fu}")
+        if law_v.size and law_v.size == law_0.size:
+            mean = float(L[mine].mean())
+            curve = law_0 + mu * mean * np.sign(law_v)
+            for side in (law_v < 0, law_v > 0):  # no line through the jump at zero velocity
+                a.plot(law_v[side], curve[side], "-", lw=2.2, color=colour,
+                       label=f"law at |load| {mean:.3g} {fu}" if side[-1] else None)
+    a.axhline(0, color="0.4", lw=0.8)
+    a.axvline(0, color="0.4", lw=0.8)
+    a.set_xlabel(f"velocity ({_velocity_unit(result)})")
+    a.set_ylabel(f"friction ({fu})")
+    a.set_title(title or f"idim: friction against velocity and load, mu_load = {mu:.3g}")
+    a.grid(True, alpha=0.3)
+    _legend(a)
+    return _done(fig, [a], file, True)
+
+
+def ripple(result, *, ax=None, file=None, title=None):
+    """The position ripple of an idim result with the 'ripple' term: at each fitted sample the
+    fit's residual plus the identified ripple, against the position within the ripple period, and
+    the identified ripple over one period. Returns the Figure (or ``ax``). Raises ValueError on a
+    result without the ripple term."""
+    q, F, qc, Fc = _condition_series(
+        result, ("ripple_position", "ripple_partial", "ripple_curve_position", "ripple_curve_force"), "ripple", "ripple")
+    fu = _force_unit(result)
+    pu = "rad" if fu == "N m" else "m"
+    fig, (a,) = _axes(ax, 1, (9, 4.5))
+    a.plot(q, F, ".", ms=2, color="0.6", label="samples: residual + identified ripple")
+    a.plot(qc, Fc, "-", lw=2.2, color="#d55e00", label="identified ripple")
+    a.axhline(0, color="0.4", lw=0.8)
+    a.set_xlim(0, float(qc[-1]))
+    a.set_xlabel(f"position within the ripple period ({pu})")
+    a.set_ylabel(f"ripple force ({fu})")
+    a.set_title(title or f"idim: position ripple over one period ({qc[-1]:.4g} {pu})")
+    a.grid(True, alpha=0.3)
+    _legend(a)
+    return _done(fig, [a], file, True)
+
+
+def temperature(result, *, ax=None, file=None, title=None):
+    """The temperature drift of an idim result with the 'temperature' term: the logged temperature
+    over time (top) and the viscous coefficient Fv + Fv_per_K (T - T_ref) it gives (bottom).
+    ``ax``: two Axes. Returns the Figure (or the two Axes). Raises ValueError on a result without
+    the temperature term."""
+    t, T, fv = _condition_series(result, ("time", "temperature", "temperature_viscous"), "temperature", "temperature")
+    unit_fv = result.parameters["Fv"].unit if "Fv" in result else "N s/m"
+    ref = result.diagnostics.numbers.get("temperature_ref")
+    fig, (a, b) = _axes(ax, 2, (9, 6))
+    a.plot(t, T, "-", color="#d55e00", label="logged temperature")
+    a.set_ylabel("temperature (degC or K, as logged)")
+    a.set_title(title or "idim: temperature drift of the viscous coefficient")
+    a.grid(True, alpha=0.3)
+    _legend(a)
+    b.plot(t, fv, "-", color="#0072b2",
+           label="Fv + Fv_per_K (T - T_ref)" + (f", T_ref = {ref:.4g}" if ref is not None else ""))
+    b.set_ylabel(f"viscous coefficient ({unit_fv})")
+    b.set_xlabel("time (s)")
+    b.grid(True, alpha=0.3)
+    _legend(b)
+    return _done(fig, [a, b], file, False)

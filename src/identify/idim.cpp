@@ -1059,7 +1059,9 @@ Result identify_idim_unchecked(const IdimData& data, const IdimOptions& options_
 // Numbers or an error, never both (identify/finite_result.hpp): sums that overflow or underflow
 // in double precision make an error, not an ok result with inf in its std or figures.
 Result identify_idim(const IdimData& data, const IdimOptions& options, IdimWorkspace& workspace) {
-  return finite_or_error(identify_idim_unchecked(data, options, workspace));
+  Result r = identify_idim_unchecked(data, options, workspace);
+  detail::add_idim_condition_series(r, data, options);  // after IDIM-IV, which replaces the fit's series
+  return finite_or_error(std::move(r));
 }
 
 namespace detail {

@@ -17,6 +17,15 @@ void attach_idim_law(Result& r, const IdimOptions& o, double vs);
 void set_idim_series(Result& r, const IdimData& data, const IdimRegression& reg, const Eigen::VectorXd& theta,
                      const IdimOptions& options);
 
+/// The figure series of the condition terms, at the fitted samples of series "time" (nothing
+/// without the terms or on an error result): "load" (|F_load|, N or N m) and
+/// "law_force_zero_load" (the law curve at zero load) with the load term; "temperature" (degC or
+/// K) and "temperature_viscous" (Fv + Fv_per_K (T - T_ref)) with the temperature term;
+/// "ripple_position" (the position within the period, m or rad), "ripple_partial" (the fit's
+/// residual plus the identified ripple, N or N m), "ripple_curve_position" and
+/// "ripple_curve_force" (the identified ripple over one period) with the ripple term.
+void add_idim_condition_series(Result& r, const IdimData& data, const IdimOptions& o);
+
 /// The warnings on the parameters' values: poorly identified (std above half the value), negative
 /// where a coefficient must not be.
 void add_idim_parameter_warnings(Result& r);

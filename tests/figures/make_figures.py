@@ -61,6 +61,11 @@ def _cli_jobs(src):
         (0, "identify-idim", f"identify idim {emps}/DATA_EMPS.mat {cols} --validate {emps}/DATA_EMPS_PULSES.mat "
                              f"--json model.json --plot identify-idim.svg --report report-idim",
          ["identify-idim.svg", "report-idim/fit.svg", "report-idim/friction-map.svg", "report-idim/cross-test.svg"]),
+        (0, "identify-idim-conditions", "identify idim effects.csv --current current --kt 0.5 --resample "
+                                        "--terms inertia,viscous,coulomb,offset,load,temperature,ripple --load load "
+                                        "--temperature temperature --ripple-period 0.02 --exclude-below 0.002 "
+                                        "--report report-conditions",
+         ["report-conditions/load-map.svg", "report-conditions/ripple.svg", "report-conditions/temperature.svg"]),
         (0, "analyze-map-1d", f"analyze map {ex}/map_pid_hunting.yaml --vary friction.Fs=1:2:6 -o map1.csv "
                               f"--plot analyze-map-1d.svg", ["analyze-map-1d.svg"]),
         (0, "analyze-map-2d", f"analyze map {ex}/map_spring_block.yaml --vary plant.V0=log:0.004:0.2:6 "
@@ -118,6 +123,7 @@ def make_cli(exe, src, out):
     out.mkdir(parents=True, exist_ok=True)
     _run([sys.executable, f"{src}/examples/fleet_logs.py", str(out / "fleet")], out)
     _run([sys.executable, f"{src}/tests/rigs/servo_log.py", str(out / "servo.csv")], out)
+    _run([sys.executable, f"{src}/tests/rigs/effects_log.py", str(out / "effects.csv"), "--seed", "4"], out)
     _write_lugre_record(exe, out)
 
     def argv(args):
@@ -190,6 +196,19 @@ def make_python(src, out, png_width=None, records=None):
     save("plot.map", fl.plot.map(rows, units={"plant.V0": "m/s", "plant.c": "N s/m"}),
          "fl.plot.map(fl.analyze_map('examples/map_spring_block.yaml', ['plant.V0=log:0.004:0.2:4', "
          "'plant.c=0:8:3']), units={'plant.V0': 'm/s', 'plant.c': 'N s/m'})")
+    # The condition terms' figures: idim on the ball-screw log with load, temperature and ripple
+    # (tests/rigs/effects_log.py), the record the command line's identify-idim-conditions reads.
+    effects = pathlib.Path(records) / "effects.csv" if records else out / "effects.csv"
+    if not records:
+        _run([sys.executable, f"{src}/tests/rigs/effects_log.py", str(effects), "--seed", "4"], out)
+    e = fl.load(str(effects), resample=True)
+    rt = fl.identify_idim(e["time"], 0.5 * e["current"], position=e["position"], load=e["load"],
+                          temperature=e["temperature"], ripple_period=0.02, exclude_below=0.002,
+                          terms=["inertia", "viscous", "coulomb", "offset", "load", "temperature", "ripple"])
+    call = "fl.identify_idim(..., terms=[..., 'load', 'temperature', 'ripple'], load=..., temperature=..., ripple_period=0.02)"
+    save("plot.load_map", fl.plot.load_map(rt), f"fl.plot.load_map({call})")
+    save("plot.ripple", fl.plot.ripple(rt), f"fl.plot.ripple({call})")
+    save("plot.temperature", fl.plot.temperature(rt), f"fl.plot.temperature({call})")
     return figures
 
 

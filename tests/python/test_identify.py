@@ -260,25 +260,10 @@ def test_fit_static_law_exact_and_errors():
         fl.fit_static_law(v, f, model="nope")
 
 
-def _conditions_record():
-    """30 s at 1 kHz of an axis with a load, a warming grease and a position ripple (noiseless)."""
-    t = np.arange(30001) * 1e-3
-    w1, w2 = 2 * np.pi * 0.5, 2 * np.pi * 1.3
-    q = 0.05 * np.sin(w1 * t) + 0.01 * np.sin(w2 * t + 0.4)
-    qd = 0.05 * w1 * np.cos(w1 * t) + 0.01 * w2 * np.cos(w2 * t + 0.4)
-    qdd = -0.05 * w1 ** 2 * np.sin(w1 * t) - 0.01 * w2 ** 2 * np.sin(w2 * t + 0.4)
-    load = 30.0 + 20.0 * np.sin(0.3 * t)
-    temp = 20.0 + 0.8 * t
-    k = 2 * np.pi / 0.02
-    force = (2.0 * qdd + (20.0 - 0.25 * (temp - 30.0)) * qd + (3.0 + 0.05 * np.abs(load)) * np.sign(qd) + load
-             + 0.6 * np.sin(k * q) - 0.4 * np.cos(k * q))
-    return t, force, q, load, temp
-
-
-def test_idim_load_temperature_and_ripple_terms():
+def test_idim_load_temperature_and_ripple_terms(conditions_record):
     # Noiseless data from the model itself: the filtered, decimated pipeline gives the truth back
     # within 1e-3 (see tests/identify/test_idim_conditions.cpp for why).
-    t, force, q, load, temp = _conditions_record()
+    t, force, q, load, temp = conditions_record
     r = fl.identify_idim(t, force, q, load=load, temperature=temp, temperature_ref=30.0, skip_end=49,
                          terms=["inertia", "viscous", "coulomb", "offset", "load", "temperature", "ripple"],
                          ripple_period=0.02)

@@ -199,3 +199,43 @@ def test_drift_title_counts_logs(tmp_path, source_dir):
     assert fig.axes[0].get_title() == f"drift over {len(files)} logs"
     fig, axes = plt.subplots(2, 1)
     check_drawn_into(list(axes), fl.plot.drift(table, ["Fc", "Fv"], ax=list(axes)))
+
+
+# --- the condition terms' figures (load map, ripple, temperature drift), as the report draws them ---
+
+def test_condition_term_plots(conditions_record, emps, tmp_path):
+    t, force, q, load, temp = conditions_record
+    r = fl.identify_idim(t, force, q, load=load, temperature=temp, temperature_ref=30.0, skip_end=49,
+                         terms=["inertia", "viscous", "coulomb", "offset", "load", "temperature", "ripple"],
+                         ripple_period=0.02)
+    assert r.ok, r.message
+    fig = fl.plot.load_map(r, file=tmp_path / "load_map.png")
+    check_png(tmp_path / "load_map.png")
+    a = fig.axes[0]
+    assert a.get_xlabel() == "velocity (m/s)" and a.get_ylabel() == "friction (N)"
+    legend_outside(a)
+    # Three |load| bands (10 to 50 N), each with the law at its mean |load|.
+    labels = [line.get_label() for line in a.lines if not line.get_label().startswith("_")]
+    assert sum(lab.startswith("|load| ") for lab in labels) == 3, labels
+    assert sum(lab.startswith("law at |load| ") for lab in labels) == 3, labels
+
+    fig, ax = plt.subplots()
+    check_drawn_into(ax, fl.plot.ripple(r, ax=ax))
+    assert ax.get_xlabel() == "position within the ripple period (m)" and ax.get_ylabel() == "ripple force (N)"
+    # The identified ripple's amplitude is the truth's, sqrt(0.6^2 + 0.4^2) N: its curve's extremes.
+    curve = next(line for line in ax.lines if line.get_label() == "identified ripple")
+    kAmplitudeRel = 1e-2  # the fit's 1e-3 on each harmonic, and the curve's 200 points per period
+    assert np.max(np.abs(curve.get_ydata())) == pytest.approx(np.hypot(0.6, 0.4), rel=kAmplitudeRel)
+
+    fig, axes = plt.subplots(2, 1)
+    check_drawn_into(list(axes), fl.plot.temperature(r, ax=list(axes)))
+    assert axes[1].get_ylabel() == "viscous coefficient (N s/m)"
+    # The viscous coefficient falls by 0.25 N s/m per K over the log's 24 K rise.
+    fv = axes[1].lines[0].get_ydata()
+    assert fv[0] - fv[-1] == pytest.approx(0.25 * (temp[-1] - temp[0]), rel=2e-2)
+
+    # A fit without the terms: each figure names the term to fit.
+    plain = fl.identify_idim(emps["t"], emps["gtau"] * emps["vir"], emps["qm"])
+    for draw, term in ((fl.plot.load_map, "load"), (fl.plot.ripple, "ripple"), (fl.plot.temperature, "temperature")):
+        with pytest.raises(ValueError, match=f"fit identify_idim with the '{term}' term"):
+            draw(plain)
