@@ -92,6 +92,16 @@ def _column_label(name, axis):
     return f"{name} (scenario units, SI)"
 
 
+def _friction_axes(a, fu, title):
+    """Labels (velocity and friction in the force unit fu's axis), title, grid and legend of a
+    friction-velocity panel."""
+    a.set_xlabel(f"velocity ({_VELOCITY_UNIT.get(fu, 'm/s')})")
+    a.set_ylabel(f"friction ({fu})")
+    a.set_title(title)
+    a.grid(True, alpha=0.3)
+    _legend(a)
+
+
 def sweep(result, *, ax=None, file=None, title=None):
     """Friction-velocity map of a sweep result: segment means with ±1 std error bars, and the
     fitted law over the measured velocity range. Returns the Figure (or ``ax``)."""
@@ -109,12 +119,8 @@ def sweep(result, *, ax=None, file=None, title=None):
         grid = np.concatenate([np.linspace(lo, -1e-9 * (hi - lo), 300) if lo < 0 else [],
                                np.linspace(1e-9 * (hi - lo), hi, 300) if hi > 0 else []])
         a.plot(grid, law.sliding(grid), "-", label=f"fitted {law.name}")
-    fu = _force_unit(result)
-    a.set_xlabel(f"velocity ({_VELOCITY_UNIT.get(fu, 'm/s')})")
-    a.set_ylabel(f"friction ({fu})")
-    a.set_title(title or f"sweep: {result.model}, relative error {result.fit.relative_error_percent:.3g} %")
-    a.grid(True, alpha=0.3)
-    _legend(a)
+    _friction_axes(a, _force_unit(result),
+                   title or f"sweep: {result.model}, relative error {result.fit.relative_error_percent:.3g} %")
     return _done(fig, [a], file, True)
 
 
@@ -179,11 +185,7 @@ def lugre(result, *, ax=None, file=None, title=None, vmax=None):
     a.plot([-vs, vs], law.sliding([-vs, vs]), "o", color="tab:green", label="v = ±vs")
     a.axhline(0, color="0.4", lw=0.8)
     a.axvline(0, color="0.4", lw=0.8)
-    a.set_xlabel(f"velocity ({_VELOCITY_UNIT.get(fu, 'm/s')})")
-    a.set_ylabel(f"friction ({fu})")
-    a.set_title(title or "LuGre: steady-state friction of the identified law")
-    a.grid(True, alpha=0.3)
-    _legend(a)
+    _friction_axes(a, fu, title or "LuGre: steady-state friction of the identified law")
     return _done(fig, [a], file, True)
 
 
@@ -363,10 +365,6 @@ def _condition_series(result, names, what, term):
     return [np.asarray(s[n], dtype=float) for n in names]
 
 
-def _velocity_unit(result):
-    return _VELOCITY_UNIT.get(_force_unit(result), "m/s")
-
-
 def load_map(result, *, ax=None, file=None, title=None):
     """Friction against velocity and load of an idim result with the 'load' term: the friction
     map's samples (force less the inertia and offset terms) in three bands of |load| (lower,
@@ -395,11 +393,7 @@ def load_map(result, *, ax=None, file=None, title=None):
                        label=f"law at |load| {mean:.3g} {fu}" if side[-1] else None)
     a.axhline(0, color="0.4", lw=0.8)
     a.axvline(0, color="0.4", lw=0.8)
-    a.set_xlabel(f"velocity ({_velocity_unit(result)})")
-    a.set_ylabel(f"friction ({fu})")
-    a.set_title(title or f"idim: friction against velocity and load, mu_load = {mu:.3g}")
-    a.grid(True, alpha=0.3)
-    _legend(a)
+    _friction_axes(a, fu, title or f"idim: friction against velocity and load, mu_load = {mu:.3g}")
     return _done(fig, [a], file, True)
 
 
