@@ -53,6 +53,9 @@ double breakaway_time(const Eigen::VectorXd& time, const Eigen::VectorXd& force,
 // spread (M's errors-in-variables bias below its square), over at most +-kLongestHalfWidth samples.
 constexpr double kAccelerationNoiseShare = 0.05;
 constexpr Eigen::Index kLongestHalfWidth = 64;
+// With the difference over +-w (w > 1), the Newey-West estimate is made on the scores summed over
+// blocks of w / kScoreBlockDivisor rows (see the covariance below).
+constexpr Eigen::Index kScoreBlockDivisor = 4;
 
 // The least spread of |load| (max - min, relative to max) with which a load coefficient is fitted.
 constexpr double kLeastLoadSpread = 0.01;
@@ -246,15 +249,6 @@ Result identify_breakaway_unchecked(const BreakawayData& d, const BreakawayOptio
   }
   r.diagnostics.numbers["acceleration_half_width"] = static_cast<double>(w);
   r.diagnostics.numbers["velocity_noise"] = velocity_noise;
-  // Measured on seeded trapezoids (docs/coverage.md, BreakawayCoverage.NoisyEncoderVelocityStillCovers):
-  // with an encoder's velocity the residual's coloured force noise is hidden under the velocity's,
-  // its prewhitening underestimates the memory, and the std come out some 10 % small.
-  if (w > 1)
-    warn("the velocity is noisy (about " + format_number(velocity_noise, 3) + " " +
-         std::string(unit(Quantity::velocity, o.axis)) + " per sample, from its second differences), so the "
-         "acceleration is its difference over +-" + std::to_string(w) + " samples; on seeded records with an encoder's "
-         "velocity the 95 % intervals of Fc, Fv and M held the truth in 87 to 90 % of the cases (docs/coverage.md): "
-         "their std are about 10 % too small");
   const std::vector<Eigen::Index> rows = sliding_rows(std::max<Eigen::Index>(o.edge_samples, w));
   const bool fit_inertia = !(std::isfinite(o.inertia) && o.inertia > 0);
   const int p = (fit_inertia ? 3 : 2) + (with_load ? 1 : 0);
@@ -350,11 +344,62 @@ Result identify_breakaway_unchecked(const BreakawayData& d, const BreakawayOptio
   if (with_load) add("mu_load_coulomb", mu_c, fit.stdev[p - 1], Quantity::dimensionless);
   // The regression's std from the Newey-West covariance (identify/covariance.hpp), as idim's: the
   // sliding residual of a drive's current is coloured, and the ordinary figure (std_ols) is then a
-  // lower bound.
-  const HacCovariance hac = hac_covariance(X, fit.residual);
+  // lower bound. With a noisy velocity (w > 1) the residual also carries M times the acceleration's
+  // noise, a difference over +-w of the velocity's: large beside the force noise, and
+  // over-differenced (its sum over any run of rows does not grow with the run; the force noise's
+  // does). Row by row it hid the force noise's memory from the VAR(1) prewhitening and the std came
+  // out 10 to 25 % small (docs/coverage.md). The scores are therefore summed over blocks of w/4 rows
+  // first: enough for the force noise to dominate, short enough to leave hundreds of blocks (on the
+  // seeded trapezoids blocks of w/2 covered as well, of w + 1 and 2 (w + 1), with fewer blocks, less).
+  const Eigen::Index block = std::max<Eigen::Index>(1, w / kScoreBlockDivisor);
+  HacCovariance hac;
+  if (block > 1 && X.rows() / block > 2 * p + 2) {
+    const Eigen::Index rows_n = X.rows(), blocks = rows_n / block;
+    const Eigen::MatrixXd scores = X.array().colwise() * fit.residual.array();
+    Eigen::MatrixXd summed = Eigen::MatrixXd::Zero(blocks, p);
+    for (Eigen::Index t = 0; t < rows_n; ++t) summed.row(std::min(blocks - 1, t * blocks / rows_n)) += scores.row(t);
+    // hac_covariance's meat is that of the score rows X .* e: the block sums with e = 1. Its
+    // covariance is not this fit's (its X'X is the blocks'); the sandwich below takes the meat only.
+    hac = hac_covariance(summed, Eigen::VectorXd::Ones(blocks));
+  } else {
+    hac = hac_covariance(X, fit.residual);
+  }
   const Eigen::MatrixXd cov = set_uncertainty_from_sandwich(r, names, fit.information, hac.meat, fit.residual_variance);
   r.diagnostics.texts["covariance"] = hac.prewhitened ? "newey-west-prewhitened" : "newey-west";
-  r.diagnostics.numbers["covariance_bandwidth"] = hac.bandwidth;
+  r.diagnostics.numbers["covariance_bandwidth"] = hac.bandwidth;  // in blocks when covariance_block > 1
+  r.diagnostics.numbers["covariance_block"] = static_cast<double>(block > 1 && X.rows() / block > 2 * p + 2 ? block : 1);
+  if (fit_inertia && w > 1) {
+    // The systematic error the std do not hold: the acceleration's noise biases M towards zero by
+    // its variance over the acceleration's (errors in variables), and the difference over +-w
+    // smooths the acceleration at the force's corners, which moves Fc, Fv and M. Both change with
+    // w, so the fit is made again on the same rows with the difference over +-w/2: the change of
+    // each parameter is the order of that error (on the rig log of tests/rigs/experiment_logs.py M
+    // was 0.9 % low and changed by 1.3 %, Fc was 3.5 std low and changed by 1.3 std; Fv, 2.9 std
+    // high, changed by 0.8 std and is not named). A change larger than the std is warned of.
+    const Eigen::VectorXd narrow = difference(w / 2);
+    Eigen::MatrixXd Xn = X;
+    for (std::size_t i = 0; i < rows.size(); ++i) Xn(static_cast<Eigen::Index>(i), 2) = narrow[rows[i]];
+    const LeastSquaresFit fn = linear_least_squares(Xn, y, names, separable());
+    if (fn.ok) {
+      auto& change = r.diagnostics.groups["width_change"];
+      std::string moved;
+      for (int j = 0; j < p; ++j) {
+        const Parameter* q = r.find(names[static_cast<std::size_t>(j)]);
+        if (q == nullptr) continue;
+        const double shift = fit.theta[j] - fn.theta[j];
+        change[q->name] = shift;
+        if (std::abs(shift) > q->std)
+          moved += (moved.empty() ? "" : ", ") + q->name + " by " + format_number(shift, 3) + " " + q->unit + " (" +
+                   format_number(100 * shift / q->value, 2) + " %, std " + format_number(q->std, 3) + ")";
+      }
+      if (!moved.empty())
+        warn("the fit changes when the acceleration is differenced over +-" + std::to_string(w / 2) +
+             " samples instead of +-" + std::to_string(w) + ": " + moved +
+             "; the velocity's noise in the acceleration (errors in variables: M towards zero) and the difference's "
+             "smoothing at the force's corners leave a systematic error of that order, which the std do not "
+             "include; a less noisy velocity (a finer encoder, or the velocity the drive estimates) reduces it");
+    }
+  }
   if (!with_load) {
     // Fs: the fitted dynamics' part through the sensitivities and the covariance of Fc, Fv, M, and
     // the noise of the one force sample read at the breakaway instant, whose variance the sliding

@@ -76,15 +76,21 @@ fl::BreakawayData record(const Truth& p, unsigned seed, double encoder = 0.0) {
 
 // 200 seeded cases: a binomial test at the 1 % level against 95 % coverage rejects 181 covered
 // or fewer (P(X <= 181 | 200, 0.95) = 0.006, P(X <= 182) = 0.012), and 182 is 91 %, above the
-// 90 % the coverage suite asks of every parameter. A cell that does not pass it asks less
-// (least_covered) and must warn in every case (`warning`), so that the result says it.
-void expect_coverage(const std::string& cell, double encoder, int least_covered = 182, const std::string& warning = "") {
+// 90 % the coverage suite asks of every parameter. breakaway's warning that the difference's width
+// moves the fit by more than a std (a systematic error the std exclude) may come in at most 12
+// cases, as a residual check's false warnings (docs/coverage.md: the one-sided 95 % upper bound on
+// the rate is then below 10 %); the seeded records have no such error beyond the std.
+void expect_coverage(const std::string& cell, double encoder) {
   constexpr int kCases = 200;
-  const int kLeastCovered = least_covered;
-  int warned = 0;
+  constexpr int kLeastCovered = 182;
+  constexpr int kMostWidthWarnings = 12;
+  int width_warnings = 0;
   const std::vector<std::string> names{"Fs", "Fc", "Fv", "M"};
   std::map<std::string, int> covered, covered_ols;
   std::map<std::string, double> bias;  // mean of (estimate - truth) / std: a bias shows here
+  // Root mean square of (estimate - truth) / std: 1 when the std is the spread of the estimates;
+  // above 1 when it is small, or varies from record to record more than the spread does.
+  std::map<std::string, double> square;
   std::mt19937 draw(20261128);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int k = 0; k < kCases; ++k) {
@@ -95,7 +101,7 @@ void expect_coverage(const std::string& cell, double encoder, int least_covered 
     p.Fv = 5.0 + 15.0 * u(draw);
     const fl::Result r = fl::identify_breakaway(record(p, 1000u + static_cast<unsigned>(k), encoder));
     ASSERT_TRUE(r.ok()) << "case " << k << ": " << r.message;
-    for (const auto& w : r.diagnostics.warnings) warned += !warning.empty() && w.find(warning) != std::string::npos;
+    for (const auto& w : r.diagnostics.warnings) width_warnings += w.find("the fit changes when the acceleration") != std::string::npos;
     const std::map<std::string, double> truth{{"Fs", p.Fs}, {"Fc", p.Fc}, {"Fv", p.Fv}, {"M", p.M}};
     for (const auto& name : names) {
       const fl::Parameter* q = r.find(name);
@@ -104,15 +110,18 @@ void expect_coverage(const std::string& cell, double encoder, int least_covered 
       const double error = std::abs(q->value - truth.at(name));
       covered[name] += error <= 1.959964 * q->std;
       bias[name] += (q->value - truth.at(name)) / q->std / kCases;
+      square[name] += std::pow((q->value - truth.at(name)) / q->std, 2) / kCases;
       covered_ols[name] += error <= 1.959964 * *q->std_ols;
     }
   }
   for (const auto& name : names) {
     std::cout << "breakaway (" << cell << ") " << name << ": std covers " << covered[name] << "/" << kCases << ", std_ols "
-              << covered_ols[name] << "/" << kCases << ", mean bias / std " << bias[name] << "\n";
+              << covered_ols[name] << "/" << kCases << ", mean bias / std " << bias[name] << ", rms error / std "
+              << std::sqrt(square[name]) << "\n";
     EXPECT_GE(covered[name], kLeastCovered) << name << ": " << covered[name] << " of " << kCases << " covered";
   }
-  if (!warning.empty()) EXPECT_EQ(warned, kCases) << "the warning '" << warning << "' in every case";
+  std::cout << "breakaway (" << cell << "): width warnings " << width_warnings << "/" << kCases << "\n";
+  EXPECT_LE(width_warnings, kMostWidthWarnings);
 }
 
 }  // namespace
@@ -123,10 +132,9 @@ TEST(BreakawayCoverage, NeweyWestIntervalsCoverTheTruthOnSeededTrapezoids) { exp
 // 0.1 to 0.4 % of the top speed). Its difference, the acceleration regressor, would carry about
 // 0.2 m/s^2 of noise and bias M towards zero (errors in variables); breakaway widens the
 // difference until that noise is small (acceleration_half_width), which leaves the mean bias
-// within 0.2 std. The intervals still fall short of the binomial test (Fc, Fv, M covered in 87 to
-// 90 %: the std are about 10 % small, the velocity's noise hiding the force noise's memory from
-// the prewhitening): asserted is what was measured less a margin of 5 cases (170, 85 %), and the
-// warning that says so in every result.
+// within 0.2 std. The acceleration's remaining noise, over-differenced and large beside the force
+// noise, made the Newey-West std 10 to 25 % small (Fc, Fv, M covered in 87 to 90 %) until the
+// scores were summed over blocks of w/4 rows (covariance_block): this cell fails without them.
 TEST(BreakawayCoverage, NoisyEncoderVelocityStillCovers) {
-  expect_coverage("encoder velocity, 1 um", 1e-6, 170, "their std are about 10 % too small");
+  expect_coverage("encoder velocity, 1 um", 1e-6);
 }

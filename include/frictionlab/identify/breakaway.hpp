@@ -54,6 +54,13 @@ BreakawayOptions make_breakaway_options(const OptionValues& values);
 /// differentiated from an encoder would otherwise bias M towards zero (errors in variables).
 /// std: Fc, Fv (and M) from the Newey-West covariance of the sliding fit (identify/covariance.hpp,
 /// diagnostics "covariance", "covariance_bandwidth"), the ordinary least-squares figure as std_ols;
+/// with w > 1 the estimate is made on the fit's scores summed over blocks of w/4 rows (diagnostics
+/// "covariance_block", rows; "covariance_bandwidth" is then in blocks), which the acceleration's
+/// noise would otherwise make some 10 to 25 % small. With w > 1 and M fitted, the fit is made
+/// again with the difference over +-w/2: each parameter's change (diagnostics "width_change",
+/// its unit) measures the systematic error the difference leaves (M's errors-in-variables bias,
+/// the smoothing at the force's corners), which the std do not include; a warning names every
+/// parameter whose change exceeds its std.
 /// Fs's from that covariance through the backward integration plus the variance of the force
 /// sample read at the breakaway instant (the sliding residual's variance); with data.load, Fs's
 /// and mu_load_static's from the starts' scatter. The sliding residual is checked for adequacy
