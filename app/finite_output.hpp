@@ -10,16 +10,13 @@
 #include <string>
 #include <string_view>
 
-#include "frictionlab/identify/result.hpp"
+#include "frictionlab/identify/finite_result.hpp"
 
 namespace frictionlab::cli {
 
-/// The first word of `text` that is a number that is not finite as printf or std::to_chars
-/// writes it (inf, infinity, nan, each with a sign or not, in any case, nan(...) too), as
-/// "'WORD' at line N": a word stands between the start or end of the text, whitespace and the
-/// separators , ; = : ( ) [ ] { } | < > " (so a file name such as inf.csv is not one). Empty when
-/// there is none.
-std::string non_finite_word(std::string_view text);
+/// The first word of `text` that is a number that is not finite (inf, nan, ...), as "'WORD' at
+/// line N" (frictionlab::non_finite_word, identify/finite_result.hpp).
+using frictionlab::non_finite_word;
 
 /// `r` with status error, code output.not_finite and a message naming the figure (frictionlab::finite_or_error,
 /// identify/finite_result.hpp) or the word of `text` (the text the command would print) when it

@@ -20,6 +20,7 @@ Result run(const MethodIO& io, const OptionValues& options) {
   o.axis = io.columns.parsed_axis();
   if (options.given("static")) o.static_law = load_law(options.text("static"));
   const Dataset d = load_data(io.data, io.columns);
+  check_lugre_work(static_cast<double>(d.rows()), o);  // before the columns are formed and checked
   LugreData x{time_column(d, io.columns), force_column(d, io.columns), position_column(d, io.columns)};
   o.progress = [](int iteration, double cost, double) {
     progress_stage("output-error fit, iteration " + std::to_string(iteration) + ", cost " + std::to_string(cost) + " m^2");

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "cancellable.hpp"
 #include "common.hpp"
 #include "frictionlab/error.hpp"
 #include "frictionlab/identify/validate.hpp"
@@ -30,7 +31,10 @@ ModelFile model_arg(const py::handle& model, const std::string& function = "expo
   }
   if (py::isinstance<FrictionLaw>(model) || py::isinstance<py::dict>(model)) return {law_arg(model), std::nullopt};
   if (py::isinstance<py::str>(model) || py::hasattr(model, "__fspath__"))
-    return read_model_file(path_arg(model, function, "model"));
+  {
+    const std::string path = path_arg(model, function, "model");
+    return run_cancellable([&] { return read_model_file(path); });  // a file read: without the GIL, Ctrl-C stops it
+  }
   throw argument_type_error(
       function + ": argument model: expected a FrictionLaw, a law dict, an identification Result or the path of a "
       "MODEL.json, got " + py::cast<std::string>(py::str(py::type::of(model).attr("__name__"))));

@@ -26,22 +26,28 @@ void init_io(py::module_& m) {
           o.header = CsvHeader::detect;
           o.names = names;
           o.names_option = "names";
-          Dataset d = load_dataset(path_arg(path, "load"), o, parse_data_format(format, "format"));
-          if (!names.empty() && d.lines.empty()) {
-            throw std::invalid_argument(d.where() + "names: names the columns of a CSV file; a MAT file's variables have their own "
-                                        "names: " + d.describe_contents());
-          }
-          if (resample) {
-            // The time column: as given, else "time" when the file has one, else the first column.
-            std::string t = time;
-            if (t.empty()) t = d.has_column("time") || d.column_names().empty() ? "time" : d.column_names().front();
-            ResampleOptions r;
-            r.dt = dt;
-            r.max_gap = max_gap;
-            r.dt_name = "resample";
-            r.max_gap_name = "max_gap";
-            resample_dataset(d, t, r);
-          }
+          const std::string file = path_arg(path, "load");
+          const DataFormat data_format = parse_data_format(format, "format");
+          // Reading and resampling without the GIL, stopped by Ctrl-C (a FIFO waits for its writer).
+          Dataset d = run_cancellable([&] {
+            Dataset d = load_dataset(file, o, data_format);
+            if (!names.empty() && d.lines.empty()) {
+              throw std::invalid_argument(d.where() + "names: names the columns of a CSV file; a MAT file's variables have their own "
+                                          "names: " + d.describe_contents());
+            }
+            if (resample) {
+              // The time column: as given, else "time" when the file has one, else the first column.
+              std::string t = time;
+              if (t.empty()) t = d.has_column("time") || d.column_names().empty() ? "time" : d.column_names().front();
+              ResampleOptions r;
+              r.dt = dt;
+              r.max_gap = max_gap;
+              r.dt_name = "resample";
+              r.max_gap_name = "max_gap";
+              resample_dataset(d, t, r);
+            }
+            return d;
+          });
           py::list columns;  // (name, array) pairs in file order
           for (const auto& name : d.column_names()) columns.append(py::make_tuple(name, to_array(d.column(name))));
           py::dict scalars;
@@ -90,7 +96,10 @@ void init_io(py::module_& m) {
         py::arg("columns"), py::arg("scalars"), py::arg("file"), py::arg("lines"), py::arg("expression"),
         "The value of an expression of columns (io/column_expression.hpp) over [(name, column)] and {scalar: value}.");
 
-  m.def("load_law", [](const py::object& p) { return load_law(path_arg(p, "load_law")); }, py::arg("path"),
+  m.def("load_law", [](const py::object& p) {
+    const std::string path = path_arg(p, "load_law");
+    return run_cancellable([&] { return load_law(path); });  // a FIFO waits for its writer: without the GIL
+  }, py::arg("path"),
         "Reads a friction law from a .yaml/.yml file ({law: NAME, params...}) or a .json file (the same, or the "
         "MODEL.json an identification writes). Raises ValueError naming the file and key on bad content.");
 

@@ -31,7 +31,8 @@ void init_plan(py::module_& m) {
         o.seed = seed;
         const std::string out_path = output.is_none() ? std::string() : path_arg(output, "plan", "output");
         if (!out_path.empty()) check_output_path(out_path, overwrite);
-        const PlanRig rig = load_plan_rig(path_arg(prior, "plan", "prior"), path_arg(scenario, "plan", "scenario"));
+        const std::string prior_path = path_arg(prior, "plan", "prior"), scenario_path = path_arg(scenario, "plan", "scenario");
+        const PlanRig rig = run_cancellable([&] { return load_plan_rig(prior_path, scenario_path); });  // files: no GIL
         PlanResult r;
         r = run_cancellable([&] { return plan_experiment(pm, rig, o); });
         if (r.ok && !out_path.empty()) write_file_atomic(out_path, r.profile.to_csv(), {overwrite});

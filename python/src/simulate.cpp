@@ -147,12 +147,17 @@ A simulation problem: plant, friction law, input and options, read from a scenar
       .def(py::init([](const py::dict& d, const std::string& where, const py::object& base_dir) {
              ScenarioOptions o;
              if (!base_dir.is_none()) o.base_dir = path_arg(base_dir, "Scenario", "base_dir");
-             return scenario_from_yaml(to_yaml(d, where), where, o);
+             const YAML::Node yaml = to_yaml(d, where);
+             // The files it names (data:, a model:) are read without the GIL, stopped by Ctrl-C.
+             return run_cancellable([&] { return scenario_from_yaml(yaml, where, o); });
            }),
            py::arg("spec"), py::arg("where") = "scenario", py::arg("base_dir") = py::none(),
            "From a dict of the scenario-file form; `where` prefixes error messages. Relative file names "
            "(data, a compensation's model) are resolved from `base_dir` (default: the working directory).")
-      .def_static("load", [](const py::object& p) { return load_scenario(path_arg(p, "Scenario.load")); }, py::arg("path"),
+      .def_static("load", [](const py::object& p) {
+        const std::string path = path_arg(p, "Scenario.load");
+        return run_cancellable([&] { return load_scenario(path); });  // a file read: without the GIL
+      }, py::arg("path"),
                   "Reads a scenario YAML file; ValueError naming the file, key and value on bad content.")
       .def_property("law", [](const Scenario& s) { return s.law; },
                     [](Scenario& s, const py::object& law) { s.law = law_arg(law); },

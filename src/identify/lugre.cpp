@@ -372,6 +372,15 @@ LugreOptions make_lugre_options(const OptionValues& v) {
   return o;
 }
 
+void check_lugre_work(double samples, const LugreOptions& o) {
+  // The fit's work before it starts: each cost evaluation simulates every sample interval in
+  // substeps steps, at most once per iteration and once more at the start.
+  check_work(samples * o.substeps * (o.max_iterations + 1.0), "simulation steps",
+             "lugre: " + format_number(samples, 12) + " samples x --substeps " + std::to_string(o.substeps) +
+                 " x (--max-iterations " + std::to_string(o.max_iterations) + " + 1)",
+             {.option = "--substeps", .value = std::to_string(o.substeps)});
+}
+
 namespace {
 
 Result identify_lugre_unchecked(const LugreData& d, const LugreOptions& o) {
@@ -383,12 +392,7 @@ Result identify_lugre_unchecked(const LugreData& d, const LugreOptions& o) {
     throw std::invalid_argument("lugre: time, force and position must have equal lengths (have " + std::to_string(n) + ", " +
                                 std::to_string(d.force.size()) + ", " + std::to_string(d.position.size()) + ")");
   if (o.substeps < 1) throw std::invalid_argument("lugre: substeps = " + std::to_string(o.substeps) + " must be >= 1");
-  // The fit's work before it starts: each cost evaluation simulates every sample interval in
-  // substeps steps, at most once per iteration and once more at the start.
-  check_work(static_cast<double>(n) * o.substeps * (o.max_iterations + 1.0), "simulation steps",
-             "lugre: " + std::to_string(n) + " samples x --substeps " + std::to_string(o.substeps) + " x (--max-iterations " +
-                 std::to_string(o.max_iterations) + " + 1)",
-             {.option = "--substeps", .value = std::to_string(o.substeps)});
+  check_lugre_work(static_cast<double>(n), o);
   if (!(std::isfinite(o.delta) && o.delta > 0))
     throw std::invalid_argument("lugre: delta = " + format_number(o.delta) + " must be > 0");
   if (!(std::isfinite(o.vd) && o.vd >= 0))

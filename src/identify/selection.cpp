@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "frictionlab/error.hpp"
 #include "frictionlab/format.hpp"
 #include "frictionlab/io/json_text.hpp"
 
@@ -91,6 +92,10 @@ std::string said(const Parameter& p) { return p.name + " = " + format_number(p.v
 }  // namespace
 
 std::string physical_refusal(const Result& r) {
+  // A candidate refused because a figure of it is not finite, in words: its message names the
+  // figure as "std(M) = inf", which would put an inf into the chosen result's texts.
+  if (!r.ok() && r.code == errc::output_not_finite)
+    return "the fit failed: a figure of it is beyond what double precision holds";
   if (!r.ok()) return "the fit failed: " + r.message;
   for (const auto& p : r.parameters) {
     if (!std::isfinite(p.value)) return p.name + " is not finite";

@@ -91,7 +91,9 @@ Eigen::MatrixXd assess(Result& r, const std::vector<std::string>& names, const E
     Eigen::MatrixXd C(nf, nf);
     for (Eigen::Index a = 0; a < nf; ++a)
       for (Eigen::Index b = 0; b < nf; ++b)
-        C(a, b) = A(free[a], free[b]) / std::sqrt(A(free[a], free[a]) * A(free[b], free[b]));
+        // sqrt times sqrt: the product of two diagonal entries beyond 1e154 overflows (a stiffness or
+        // a force scale of 1e100 squared), which made every entry 0 and the inflation NaN.
+        C(a, b) = A(free[a], free[b]) / (std::sqrt(A(free[a], free[a])) * std::sqrt(A(free[b], free[b])));
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(C);
     const Eigen::VectorXd lambda = eig.eigenvalues().cwiseMax(std::numeric_limits<double>::min());
     const Eigen::MatrixXd& V = eig.eigenvectors();
@@ -100,8 +102,12 @@ Eigen::MatrixXd assess(Result& r, const std::vector<std::string>& names, const E
       if (!(vif <= o.max_variance_inflation)) {
         const auto u = static_cast<std::size_t>(free[a]);
         st[u].undetermined = excluded[u] = true;
-        why[u] = "near-singular information: variance inflation " + detail::format_value(vif, 3) + " > " +
-                 detail::format_value(o.max_variance_inflation, 3) + "; it cannot be told apart from the other parameters";
+        // A figure only when it is one: an information matrix beyond double precision gives none.
+        why[u] = std::isfinite(vif) ? "near-singular information: variance inflation " + detail::format_value(vif, 3) + " > " +
+                                          detail::format_value(o.max_variance_inflation, 3) +
+                                          "; it cannot be told apart from the other parameters"
+                                    : "near-singular information: its variance inflation is beyond double precision; it "
+                                      "cannot be told apart from the other parameters";
       }
     }
   }
@@ -182,7 +188,7 @@ Eigen::MatrixXd assess(Result& r, const std::vector<std::string>& names, const E
     e.flag.clear();
     for (Eigen::Index j = i + 1; j < p; ++j) {  // upper triangle, mirrored: exactly symmetric
       if (excluded[static_cast<std::size_t>(j)]) continue;
-      const double c = cov(i, j) / std::sqrt(cov(i, i) * cov(j, j));
+      const double c = cov(i, j) / (std::sqrt(cov(i, i)) * std::sqrt(cov(j, j)));  // no overflow of the product
       diag.correlation.matrix[u][static_cast<std::size_t>(j)] = diag.correlation.matrix[static_cast<std::size_t>(j)][u] =
           std::isfinite(c) ? std::clamp(c, -1.0, 1.0) : kNaN;
     }
@@ -247,7 +253,8 @@ Eigen::MatrixXd set_uncertainty_from_covariance(Result& r, const std::vector<std
     if (!(covariance(i, i) > 0) || !std::isfinite(covariance(i, i))) {
       if (!s.at_bound && !s.undetermined) {
         s.undetermined = true;
-        s.reason = "its variance is " + detail::format_value(covariance(i, i), 3);
+        s.reason = std::isfinite(covariance(i, i)) ? "its variance is " + detail::format_value(covariance(i, i), 3)
+                                                   : std::string("its variance is not a finite number");
       }
     }
     if (!s.at_bound && !s.undetermined) keep.push_back(i);

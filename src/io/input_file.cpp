@@ -1,6 +1,7 @@
 #include "io/input_file.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "frictionlab/budget.hpp"
+#include "frictionlab/cancellation.hpp"
 #include "frictionlab/error.hpp"
 
 namespace frictionlab {
@@ -49,10 +51,40 @@ void check_input_file(const std::string& path, const std::string& what, const ch
   }
 }
 
-std::string read_input_file(const std::string& path, const std::string& what, const char* code) {
+int open_input_file(const std::string& path, const std::string& what, const char* code) {
   check_input_file(path, what, code);
-  const Fd f{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
-  if (f.fd < 0) throw InputError(code, path + ": cannot open the " + what + " (" + std::strerror(errno) + ")", {.file = path});
+  // Non-blocking, so that opening a FIFO does not wait for its writer inside open(), where no
+  // cancellation reaches (read_input_block waits in poll() instead).
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) throw InputError(code, path + ": cannot open the " + what + " (" + std::strerror(errno) + ")", {.file = path});
+  return fd;
+}
+
+std::size_t read_input_block(int fd, char* buf, std::size_t size, const std::string& path, const std::string& what,
+                             const char* code) {
+  const auto fail = [&] {
+    throw InputError(code, path + ": read error in the " + what + " (" + std::strerror(errno) + ")", {.file = path});
+  };
+  for (;;) {
+    // Wait until there is something to read (bytes, or the writer's end) in slices, polling the
+    // cancellation token between them. A read first would not do: a FIFO opened without
+    // blocking reads as empty until its first writer comes, while poll() waits for it (Linux
+    // reports no hang-up on a FIFO that never had a writer). A regular file is always ready.
+    for (;;) {
+      throw_if_cancelled();
+      pollfd p{fd, POLLIN, 0};
+      const int ready = ::poll(&p, 1, kInputPollMilliseconds);
+      if (ready > 0) break;
+      if (ready < 0 && errno != EINTR) fail();
+    }
+    const ssize_t got = ::read(fd, buf, size);
+    if (got >= 0) return static_cast<std::size_t>(got);
+    if (errno != EINTR && errno != EAGAIN && errno != EWOULDBLOCK) fail();
+  }
+}
+
+std::string read_input_file(const std::string& path, const std::string& what, const char* code) {
+  const Fd f{open_input_file(path, what, code)};
   struct stat st {};
   if (::fstat(f.fd, &st) != 0) throw InputError(code, path + ": cannot read the " + what, {.file = path});
   const bool regular = S_ISREG(st.st_mode);
@@ -62,15 +94,11 @@ std::string read_input_file(const std::string& path, const std::string& what, co
   if (regular) bytes.reserve(static_cast<std::size_t>(st.st_size));
   char buf[1 << 16];
   for (;;) {
-    const ssize_t got = ::read(f.fd, buf, sizeof buf);
-    if (got < 0) {
-      if (errno == EINTR) continue;
-      throw InputError(code, path + ": read error in the " + what + " (" + std::strerror(errno) + ")", {.file = path});
-    }
+    const std::size_t got = read_input_block(f.fd, buf, sizeof buf, path, what, code);
     if (got == 0) break;
     if (static_cast<double>(bytes.size()) + static_cast<double>(got) > limit)
       too_large(path, what, static_cast<double>(bytes.size()) + static_cast<double>(got), !regular);
-    bytes.append(buf, static_cast<std::size_t>(got));
+    bytes.append(buf, got);
   }
   return bytes;
 }

@@ -5,9 +5,9 @@
 #include "frictionlab/error.hpp"
 
 #include <openssl/evp.h>
+#include <unistd.h>
 
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -54,21 +54,24 @@ std::string sha256_hex(std::string_view bytes) {
 std::string sha256_file(const std::string& path) {
   // A device (/dev/zero) would be read without end: refused; a FIFO is read as a stream, counted
   // against the work budget one unit per byte.
-  check_input_file(path, "file to hash", errc::data_file_unreadable);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(errc::data_file_unreadable, path + ": cannot open the file to compute its sha256", {.file = path});
+  // Read as read_input_file reads (input_file.hpp): a FIFO's open does not block, and its wait
+  // for a writer, like every block, stops at a cancellation.
+  const char* what = "file to hash";
+  struct Fd {
+    int fd;
+    ~Fd() { ::close(fd); }
+  } const f{open_input_file(path, what, errc::data_file_unreadable)};
+  const int fd = f.fd;
   Sha256 s;
   double read = 0;
   std::vector<char> buf(1 << 16);
-  while (in) {
-    throw_if_cancelled();
-    in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
-    const std::streamsize got = in.gcount();
-    if (got > 0) s.update(buf.data(), static_cast<std::size_t>(got));
+  for (;;) {
+    const std::size_t got = read_input_block(fd, buf.data(), buf.size(), path, what, errc::data_file_unreadable);
+    if (got == 0) break;
+    s.update(buf.data(), got);
     read += static_cast<double>(got);
     if (read > work_budget()) check_work(read, "bytes read", path + ": hashing the file", {.file = path});
   }
-  if (in.bad()) throw InputError(errc::data_file_unreadable, path + ": read error while computing its sha256", {.file = path});
   return s.hex();
 }
 

@@ -98,3 +98,84 @@ def test_errors_of_cancellable_work_keep_their_types(source_dir, tmp_path):
     edited.write_text(text.replace("  Kb: 0.0141", "  Kb: 1.0e308  #", 1))
     with pytest.raises(ValueError, match="column 'voltage' is inf at t = "):
         fl.simulate(edited)
+
+
+# Reading a file releases the GIL and stops at Ctrl-C (docs/guarantees.md): a FIFO that no one
+# writes waits for its writer, as cat does, and that wait used to hold the GIL inside open(), so
+# neither SIGINT nor any other thread got through. Each reader of files in a child process, on a
+# FIFO without a writer, a timer thread sending SIGINT after 0.5 s: KeyboardInterrupt, not a
+# hang (the child is killed after READ_TIMEOUT_S).
+READ_TIMEOUT_S = 30.0
+
+FIFO_READERS = {
+    "load_law": ("law.yaml", "fl.load_law(fifo)"),
+    "sha256_file": ("data.csv", "fl.sha256_file(fifo)"),
+    "load": ("data.csv", "fl.load(fifo)"),
+    "simulate": ("scenario.yaml", "fl.simulate(fifo)"),
+    "export_c": ("model.json", "fl.export_c(fifo)"),
+}
+
+
+def run_child(script, *args, timeout=READ_TIMEOUT_S):
+    child = subprocess.Popen([sys.executable, "-c", textwrap.dedent(script), *map(str, args)], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True)
+    try:
+        return child.communicate(timeout=timeout) + (child.returncode,)
+    except subprocess.TimeoutExpired:
+        child.kill()
+        out, err = child.communicate()
+        pytest.fail(f"the child did not finish within {timeout} s: {out} {err}")
+
+
+@pytest.mark.parametrize("reader", sorted(FIFO_READERS))
+def test_ctrl_c_stops_reading_a_fifo_without_a_writer(tmp_path, reader):
+    name, call = FIFO_READERS[reader]
+    fifo = tmp_path / name
+    os.mkfifo(fifo)
+    out, err, code = run_child(f"""
+        import os, signal, sys, threading, time
+        import frictionlab as fl
+        fifo = sys.argv[1]
+        threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+        t0 = time.monotonic()
+        try:
+            {call}
+            print("returned", flush=True)
+        except KeyboardInterrupt:
+            print(f"interrupted after {{time.monotonic() - t0:.2f}} s", flush=True)
+    """, fifo)
+    assert code == 0, err
+    assert out.startswith("interrupted after"), (out, err)
+    print(f"{reader}: {out.strip()}")
+
+
+def test_other_threads_run_while_a_fifo_is_read(tmp_path):
+    # The main thread reads a law from a FIFO whose writer (another process) comes after 1 s; a
+    # second Python thread counts meanwhile. With the GIL held during the read it could not.
+    fifo = tmp_path / "law.yaml"
+    os.mkfifo(fifo)
+    out, err, code = run_child("""
+        import subprocess, sys, threading, time
+        import frictionlab as fl
+        fifo = sys.argv[1]
+        ticks = [0]
+        stop = threading.Event()
+        def count():
+            while not stop.is_set():
+                ticks[0] += 1
+                time.sleep(0.01)
+        threading.Thread(target=count, daemon=True).start()
+        subprocess.Popen([sys.executable, "-c", "import sys, time; time.sleep(1.0); "
+                          "open(sys.argv[1], 'w').write('law: coulomb-viscous\\\\nFc: 2\\\\nFv: 0.5\\\\n')", fifo])
+        time.sleep(0.1)
+        before = ticks[0]
+        law = fl.load_law(fifo)
+        during = ticks[0] - before
+        stop.set()
+        print(during, law.parameters["Fc"], flush=True)
+    """, fifo)
+    assert code == 0, err
+    during, fc = out.split()
+    assert float(fc) == 2.0
+    # About 90 ticks of 10 ms in the 0.9 s of the read; none when the read holds the GIL.
+    assert int(during) >= 20, out

@@ -1,6 +1,8 @@
 """frictionlab.Error: bad input with a stable code raises a ValueError subclass carrying .code and
 the fields that locate the fault (file, row, column, key, option, value; None when they do not
 apply)."""
+import re
+
 import pytest
 
 import frictionlab as fl
@@ -122,6 +124,76 @@ def test_figures_beyond_double_precision_raise_output_not_finite():
                            must_refuse=False)
 
 
+# A word that is a number that is not finite, as the library's non_finite_word reads one
+# (identify/finite_result.hpp): inf, nan, infinity, signed or not, between separators.
+_NON_FINITE_WORD = re.compile(r'(?:^|(?<=[\s,;=:()\[\]{}|<>"]))[-+]?(?:inf|infinity|nan)(?=$|[\s,;=:()\[\]{}|<>"])',
+                              re.IGNORECASE)
+
+
+def test_every_method_over_decades_gives_numbers_or_an_error():
+    """Numbers or an error, never both, in the words too (docs/guarantees.md): every identify_*
+    on records with their force (and the inertia or stiffness with it) or their motion scaled by
+    10^e, e from -150 to 150 (a seeded pick of the signal), returns a result whose figures are
+    finite and whose JSON holds no inf or nan (decay at a stiffness of 1e90 to 1e155 and lugre on
+    a record scaled by 1e100 put "variance inflation nan" in a warning), or raises fl.Error with
+    the code of a refusal. The scales that used to say nan give an answer."""
+    import os
+    import random
+    import numpy as np
+    from conftest import SOURCE_DIR
+    ex = os.path.join(SOURCE_DIR, "examples")
+    ramp = fl.simulate(os.path.join(ex, "craig_motor_trapezoid.yaml"))
+    pend = fl.simulate(os.path.join(ex, "craig_pendulum_combined.yaml"))
+    sine = fl.simulate({"plant": {"type": "axis", "M": 1.0},
+                        "friction": {"law": "lugre", "sigma0": 1e5, "sigma1": 316.22776601683796, "sigma2": 0.4,
+                                     "Fc": 1.0, "Fs": 1.5, "vs": 0.001},
+                        "input": {"type": "sine", "amplitude": 3.0, "omega": 3.14159},
+                        "duration": 2, "output_rate": 1000})
+    rng = np.random.default_rng(25)
+    levels = [0.01, 0.2, -0.05, 0.1, -0.2, 0.02, -0.01, 0.05]
+    ts = np.arange(8000) * 1e-3
+    v = np.repeat(levels, 1000) + 1e-4 * rng.standard_normal(8000)
+    f = np.sign(v) * (1 + 0.5 * np.exp(-(v / 0.02) ** 2)) + 0.4 * v + 0.01 * rng.standard_normal(8000)
+    q = np.cumsum(v) * 1e-3
+    methods = {
+        "idim": lambda sf, sx: fl.identify_idim(ts, sf * f, position=sx * q),
+        "sweep": lambda sf, sx: fl.identify_sweep(ts, sf * f, sx * v),
+        "auto": lambda sf, sx: fl.identify_auto(ts, sf * f, position=sx * q),
+        "breakaway": lambda sf, sx: fl.identify_breakaway(ramp["time"], sf * ramp["applied"], sx * ramp["velocity"]),
+        "decay": lambda sf, sx: fl.identify_decay(pend["time"], sx * pend["position"], stiffness=sf, inertia=sf),
+        "lugre": lambda sf, sx: fl.identify_lugre(sine["time"], sf * sine["applied"], sx * sine["position"], inertia=sf),
+    }
+    pick = random.Random(25)
+    seen = {m: [] for m in methods}
+    for e in range(-150, 151, 30):
+        for name, call in methods.items():
+            if name in ("lugre", "auto") and e % 60:  # the slow ones on every other decade
+                continue
+            which = pick.randrange(3)  # 0: the force, 1: the motion, 2: both
+            sf, sx = (10.0 ** e if which != 1 else 1.0), (10.0 ** e if which != 0 else 1.0)
+            what = f"{name}, force x {sf:g}, motion x {sx:g}"
+            try:
+                r = call(sf, sx)
+            except fl.Error as err:
+                assert err.code in ("output.not_finite", "data.no_answer") or err.code.startswith(("data.", "option.", "input.")), \
+                    (what, err.code, str(err))
+                seen[name].append("refused")
+                continue
+            text = r.to_json()
+            assert not _NON_FINITE_WORD.search(text), (what, _NON_FINITE_WORD.search(text), text[:2000])
+            if r.ok:
+                _finite_figures(r)
+            seen[name].append("ok" if r.ok else "error")
+    for name, outcomes in seen.items():
+        assert "ok" in outcomes, (name, outcomes)
+    # The scales that said nan in a warning give an answer now.
+    for k in (1e90, 1e120, 1e155):
+        r = fl.identify_decay(pend["time"], pend["position"], stiffness=k, inertia=1.0)
+        assert r.ok and not _NON_FINITE_WORD.search(r.to_json()), r.to_json()
+    r = fl.identify_lugre(sine["time"], 1e100 * sine["applied"], sine["position"], inertia=1e100)
+    assert r.ok and not _NON_FINITE_WORD.search(r.to_json()), r.to_json()
+
+
 def test_data_without_an_answer_is_still_a_result():
     # Only figures beyond double precision raise; no motion stays status 'error' (docs/python.md).
     import numpy as np
@@ -148,3 +220,22 @@ def test_work_beyond_the_budget_is_refused_before_it_starts():
         with pytest.raises(fl.Error) as info:
             call()
         assert info.value.code == "budget.work", str(info.value)
+
+
+def test_lugre_on_ten_million_samples_is_refused_before_its_arrays_are_read():
+    """identify_lugre's work budget comes from the arrays' lengths before they are converted and
+    checked (their copies took seconds; the refusal came only after them): a NaN in the last
+    sample, which the check of the arrays names, is not reached; the refusal names the samples,
+    the steps, the budget and how to raise it."""
+    import numpy as np
+    n = 10**7
+    t = np.arange(n) * 1e-3
+    force = np.sin(t)
+    force[-1] = np.nan
+    with pytest.raises(fl.Error) as info:
+        fl.identify_lugre(t, force, 0.01 * np.sin(t - 0.3), inertia=1.0)
+    message = str(info.value)
+    assert info.value.code == "budget.work", message
+    assert "10000000 samples" in message and "2.04e+09 simulation steps" in message, message
+    assert "--budget FACTOR" in message, message
+    assert info.value.option == "--substeps", message

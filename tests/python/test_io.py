@@ -99,7 +99,7 @@ def test_devices_are_refused_and_fifos_read_as_streams(tmp_path):
         fifo = tmp_path / name
         os.mkfifo(fifo)
         for read in (fl.sha256_file, fl.load_law):
-            # The writer is another process, as a pipe's writer is (load_law holds the GIL while it reads).
+            # The writer is another process, as a pipe's writer is.
             writer = subprocess.Popen([sys.executable, "-c", "import sys; open(sys.argv[1], 'wb').write(sys.argv[2].encode())",
                                        str(fifo), text.decode()])
             got = read(str(fifo))

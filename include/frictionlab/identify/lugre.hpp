@@ -112,4 +112,12 @@ LugreOptions make_lugre_options(const OptionValues& values);
 ///         of an unsupported kind.
 Result identify_lugre(const LugreData& data, const LugreOptions& options);
 
+/// The work budget of identify_lugre on `samples` samples (frictionlab/budget.hpp): samples x
+/// options.substeps x (options.max_iterations + 1) simulation steps. identify_lugre checks it
+/// first; a caller that must convert or load the samples (Python's arrays, a data file's columns)
+/// checks it before that, so a record too large is refused before any work on it.
+/// \throws InputError(budget.work, option --substeps) naming the samples, --substeps,
+///         --max-iterations, the steps and the budget (and `--budget FACTOR`) when it exceeds it.
+void check_lugre_work(double samples, const LugreOptions& options);
+
 }  // namespace frictionlab

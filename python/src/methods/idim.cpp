@@ -54,7 +54,8 @@ void bind(py::module_& m) {
         ScenarioOptions so;
         so.law = FrictionLaw();
         so.axis = AxisParams{};
-        return idim_iv_scenario(load_scenario(path, so), path, parse_axis(axis));
+        const Axis parsed = parse_axis(axis);
+        return run_cancellable([&] { return idim_iv_scenario(load_scenario(path, so), path, parsed); });  // a file read
       },
       py::arg("scenario"), py::arg("axis"),
       "IDIM-IV's controller from a scenario file path or a Scenario, checked (idim_iv_scenario).");

@@ -26,12 +26,13 @@ void bind(py::module_& m) {
         v.force = vector_arg(force, "validate", "force");
         same_length("validate", {{"time", v.time.size()}, {"position", v.position.size()}, {"force", v.force.size()}});
         IdentifiedModel model = model_from_result(identified);
-        auto data = std::make_shared<const Dataset>(load_dataset(data_path));
+        // The files read without the GIL, stopped by Ctrl-C.
+        auto data = run_cancellable([&] { return std::make_shared<const Dataset>(load_dataset(data_path)); });
         ScenarioOptions so;
         so.data = data;
         so.law = model.law;
         so.axis = model.axis;
-        const Scenario scenario = load_scenario(scenario_path, so);
+        const Scenario scenario = run_cancellable([&] { return load_scenario(scenario_path, so); });
         v.file = data->file;
         v.sha256 = data->sha256;
         // Numbers or an error (identify/finite_result.hpp), as the command line's validate.
@@ -71,12 +72,13 @@ void bind(py::module_& m) {
         }
         std::shared_ptr<const Dataset> data;
         if (!data_arg.is_none()) {
-          data = std::make_shared<const Dataset>(load_dataset(path_arg(data_arg, fn, "data")));
+          const std::string data_path = path_arg(data_arg, fn, "data");
+          data = run_cancellable([&] { return std::make_shared<const Dataset>(load_dataset(data_path)); });
           so.data = data;
           v.file = data->file;
           v.sha256 = data->sha256;
         }
-        const Scenario scenario = load_scenario(scenario_path, so);
+        const Scenario scenario = run_cancellable([&] { return load_scenario(scenario_path, so); });
         ContourValidation cv = run_cancellable([&] { return validate_contour(scenario, v, models, {}); });
         auto opt = [](const std::optional<ContourResult>& c) { return c ? py::cast(*c) : py::none(); };
         return py::make_tuple(cv.result, opt(cv.measured), opt(cv.simulated));
