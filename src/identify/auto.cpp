@@ -1,4 +1,5 @@
 #include "frictionlab/identify/auto.hpp"
+#include "frictionlab/identify/finite_result.hpp"
 
 #include <Eigen/LU>
 #include <Eigen/QR>
@@ -849,7 +850,7 @@ Result identify_auto(const IdimData& data, const AutoOptions& options) {
     r.diagnostics.warnings.push_back("--stiffness = " + format_number(options.stiffness) + " " +
                                      std::string(unit(Quantity::stiffness, options.axis)) +
                                      " is not used: the record holds no free decay");
-  return r;
+  return finite_or_error(std::move(r));  // the chosen candidate as the methods return theirs
 }
 
 namespace {

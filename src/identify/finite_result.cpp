@@ -1,5 +1,6 @@
 #include "frictionlab/identify/finite_result.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <string_view>
@@ -109,6 +110,17 @@ std::string non_finite_figure(const Result& r) {
 }
 
 Result finite_or_error(Result r) {
+  // A NaN std means "not determined" (models/parameter.hpp): say so wherever it arises.
+  if (r.ok())
+    for (Parameter& p : r.parameters)
+      if (std::isnan(p.std) && p.flag.empty()) {
+        p.flag = "undetermined";
+        if (std::find(r.diagnostics.undetermined.begin(), r.diagnostics.undetermined.end(), p.name) ==
+            r.diagnostics.undetermined.end())
+          r.diagnostics.undetermined.push_back(p.name);
+        r.diagnostics.warnings.push_back("the std of " + p.name + " could not be formed in double precision (the data's "
+                                         "scales are extreme): " + p.name + " is reported undetermined");
+      }
   const std::string what = non_finite_figure(r);
   if (what.empty()) return r;
   r.status = ResultStatus::error;

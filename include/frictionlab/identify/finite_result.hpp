@@ -40,7 +40,9 @@ std::string non_finite_figure(const Result& r);
 /// non_finite_figure(r) finds one; `r` as it is otherwise. Every identification of the library
 /// returns through it (identify_idim, identify_sweep, identify_breakaway, identify_decay,
 /// identify_lugre); Python raises frictionlab.Error with that code instead of returning such a
-/// result.
+/// result. On an ok result, a NaN std that no method explained (its parameter neither undetermined
+/// nor at a bound: a variance that could not be formed in double precision) is made one: the
+/// parameter is flagged and listed undetermined, with a warning that names it.
 Result finite_or_error(Result r);
 
 }  // namespace frictionlab
