@@ -46,10 +46,12 @@ from ._core import (
     ValidationFigures,
     __version__,
     analyze_contour,
+    budget_factor,
     export_c,
     export_mjcf,
     law_names,
     load_law,
+    set_budget_factor,
     sha256_file,
 )
 from . import batch  # imports dask only when a batch runs on it
@@ -68,8 +70,8 @@ __all__ = [
     "ArgumentTypeError", "BreakawayOptions", "ContourResult", "Data", "DecayOptions", "Diagnostics", "Error", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
     "FitFigures", "FrictionLaw", "IdimOptions", "Parameter", "Result", "Scenario", "StaticFit", "StaticFitOptions",
     "StickSlipOptions", "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__",
-    "analyze_contour", "analyze_map", "decay_envelope", "detect_stick_slip", "export_c", "export_mjcf", "fit_static_law", "law_names", "load",
-    "load_law", "methods", "plan", "sha256_file", "simulate", *_METHOD_FUNCTIONS,
+    "analyze_contour", "analyze_map", "budget_factor", "decay_envelope", "detect_stick_slip", "export_c", "export_mjcf", "fit_static_law", "law_names", "load",
+    "load_law", "methods", "plan", "set_budget_factor", "sha256_file", "simulate", *_METHOD_FUNCTIONS,
 ]
 
 

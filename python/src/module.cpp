@@ -10,6 +10,7 @@
 
 #include "cancellable.hpp"
 #include "common.hpp"
+#include "frictionlab/budget.hpp"
 #include "frictionlab/cancellation.hpp"
 #include "frictionlab/error.hpp"
 #include "frictionlab/version.hpp"
@@ -251,6 +252,13 @@ PYBIND11_MODULE(_core, m) {
     }
   });
 
+  // The work and memory budget's factor (frictionlab/budget.hpp): the command line's --budget.
+  m.def("set_budget_factor", &frictionlab::set_budget_factor, pybind11::arg("factor"),
+        "Raises (or lowers) the work and memory budget that every call checks before its work: the work "
+        "budget times `factor`, the memory budget too but never beyond what the process may use; the "
+        "command line's --budget FACTOR. Process-wide. factor: finite, >= 1e-6 (default 1); raises "
+        "frictionlab.Error (option.out_of_range) otherwise.");
+  m.def("budget_factor", &frictionlab::budget_factor, "The budget factor in effect (default 1).");
   fp::init_laws(m);
   fp::init_io(m);
   fp::init_result(m);

@@ -100,7 +100,7 @@ void check_memory(double need_bytes, const std::string& what, const ErrorFields&
                    what + ": that needs " + (std::isfinite(need_bytes) ? format_bytes(need_bytes) + " of memory" : std::string("unbounded memory")) +
                        "; the memory budget is " + format_bytes(limit) + " (" + budget_note() + ": " +
                        (budget_factor() == 1.0 ? "half" : "a share") + " of the " + format_bytes(memory_available()) +
-                       " this process may use; raise it with --budget FACTOR)",
+                       " this process may use; raise it with --budget FACTOR, in Python frictionlab.set_budget_factor(FACTOR))",
                    fields);
 }
 
@@ -110,7 +110,7 @@ void check_work(double units, const std::string& unit, const std::string& what, 
   throw InputError(errc::budget_work,
                    what + ": that is " + (std::isfinite(units) ? format_units(units) : std::string("unbounded")) + " " + unit +
                        "; the work budget is " + format_units(limit) + " work units (" + budget_note() +
-                       "; raise it with --budget FACTOR)",
+                       "; raise it with --budget FACTOR, in Python frictionlab.set_budget_factor(FACTOR))",
                    fields);
 }
 

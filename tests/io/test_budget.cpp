@@ -78,7 +78,8 @@ TEST(Budget, ChecksNameWhatAndTheSize) {
   EXPECT_EQ(code_of([] { fl::check_memory(NAN, "x"); }), "budget.memory") << "NaN is never within the budget";
   EXPECT_EQ(code_of([] { fl::check_work(INFINITY, "runs", "x"); }), "budget.work");
   EXPECT_EQ(error_of([] { fl::check_work(2e9, "runs", "--runs 2000000000"); }),
-            "--runs 2000000000: that is 2e+09 runs; the work budget is 1e+09 work units (the default; raise it with --budget FACTOR)");
+            "--runs 2000000000: that is 2e+09 runs; the work budget is 1e+09 work units (the default; raise it with --budget FACTOR, "
+            "in Python frictionlab.set_budget_factor(FACTOR))");
   EXPECT_NO_THROW(fl::check_work(fl::kDefaultWorkBudget, "runs", "x")) << "the budget itself is within it";
 }
 

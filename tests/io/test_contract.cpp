@@ -117,7 +117,7 @@ TEST(ScenarioSize, OutputLargerThanMemoryIsRefusedNamingTheKey) {
   EXPECT_EQ(msg.rfind("s.yaml: duration and output_rate: 1000000000 s at 200 Hz gives 2e+11 output rows (shorten duration or lower output_rate): that needs ", 0), 0u)
       << msg;
   EXPECT_NE(msg.find("of memory; the memory budget is "), std::string::npos) << msg;
-  EXPECT_NE(msg.find("this process may use; raise it with --budget FACTOR)"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("this process may use; raise it with --budget FACTOR, in Python frictionlab.set_budget_factor(FACTOR))"), std::string::npos) << msg;
   y.remove("output_rate");
   y["duration"] = 1e9;
   const std::string dflt = error_of([&] { fl::scenario_from_yaml(y, "s.yaml"); });

@@ -237,5 +237,25 @@ def test_lugre_on_ten_million_samples_is_refused_before_its_arrays_are_read():
     message = str(info.value)
     assert info.value.code == "budget.work", message
     assert "10000000 samples" in message and "2.04e+09 simulation steps" in message, message
-    assert "--budget FACTOR" in message, message
+    assert "--budget FACTOR" in message and "frictionlab.set_budget_factor(FACTOR)" in message, message
     assert info.value.option == "--substeps", message
+
+
+def test_set_budget_factor_raises_and_lowers_the_budget_as_the_command_lines_budget():
+    """fl.set_budget_factor is the command line's --budget: a small LuGre record that the default
+    budget takes is refused at a factor of 1e-6 (its 1000 work units per sample exceed 1e3 units),
+    and taken again at 1; a factor out of range is refused naming --budget."""
+    import numpy as np
+    t = np.arange(2000) * 1e-3
+    assert fl.budget_factor() == 1.0
+    try:
+        fl.set_budget_factor(1e-6)
+        assert fl.budget_factor() == 1e-6
+        with pytest.raises(fl.Error) as info:
+            fl.identify_lugre(t, np.sin(t), 0.01 * np.sin(t - 0.3), inertia=1.0)
+        assert info.value.code == "budget.work", str(info.value)
+    finally:
+        fl.set_budget_factor(1.0)
+    with pytest.raises(fl.Error) as info:
+        fl.set_budget_factor(0.0)
+    assert info.value.code == "option.out_of_range" and info.value.option == "--budget", str(info.value)
