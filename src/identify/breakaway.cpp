@@ -176,12 +176,20 @@ Result identify_breakaway_unchecked(const BreakawayData& d, const BreakawayOptio
   if (!(vmax > threshold) || vmax == 0.0)
     return fail(r, "no motion detected: |velocity| never exceeded " + format_number(threshold) + " " +
                        std::string(unit(Quantity::velocity, o.axis)));
-  const auto onset = motion_onset(d.velocity, threshold);
+  // A motion is a run above the threshold of at least kMotionSamples samples: a quantised encoder's
+  // velocity at rest jumps by a count for a sample or two (2 um at 1 kHz: 2 mm/s, above 1 % of a
+  // 0.1 m/s top speed), and such a jump read as the breakaway put Fs at the force of that instant.
+  constexpr int kMotionSamples = 5;
+  const auto moving = motion_intervals(d.time, d.velocity, threshold, (kMotionSamples - 1.5) * dt);
+  if (moving.empty())
+    return fail(r, "no motion detected: |velocity| never exceeded " + format_number(threshold) + " " +
+                       std::string(unit(Quantity::velocity, o.axis)) + " for " + std::to_string(kMotionSamples) +
+                       " samples in a row");
+  const std::optional<std::size_t> onset = moving.front().begin;
   if (*onset == 0)
     return fail(r, "the record starts in motion (|velocity| = " + format_number(std::abs(d.velocity[0])) +
                        " > threshold): a trapezoid experiment starts at rest");
-  const auto moving = motion_intervals(d.time, d.velocity, threshold);
-  const IndexRange slide = *std::find_if(moving.begin(), moving.end(), [&](const IndexRange& m) { return m.begin == *onset; });
+  const IndexRange slide = moving.front();
   if (slide.end >= static_cast<std::size_t>(n))
     return fail(r, "the axis never returned to standstill (|velocity| <= " + format_number(threshold) + " " +
                        std::string(unit(Quantity::velocity, o.axis)) + "): extend the ramp down to zero");

@@ -138,3 +138,11 @@ TEST(BreakawayCoverage, NeweyWestIntervalsCoverTheTruthOnSeededTrapezoids) { exp
 TEST(BreakawayCoverage, NoisyEncoderVelocityStillCovers) {
   expect_coverage("encoder velocity, 1 um", 1e-6);
 }
+
+// A coarser encoder, 2 um: at rest a reading that flips by one count makes a one- or two-sample
+// velocity jump of 2 mm/s, above the default threshold (1 % of the top speed). Read as the
+// breakaway, it put Fs some 60 std off in 7 of these 200 records; a motion now lasts at least
+// five samples above the threshold, and the cell covers like the others.
+TEST(BreakawayCoverage, ACoarseEncodersCountAtRestIsNotTheBreakaway) {
+  expect_coverage("encoder velocity, 2 um", 2e-6);
+}
