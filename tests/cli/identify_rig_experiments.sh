@@ -128,6 +128,9 @@ warns breakaway_s.json "the friction-velocity curve is not the model's shape"
 "$exe" identify auto presliding.csv --position c2 "${cols[@]}" --json presliding.json > presliding.txt
 grep -q "^experiment: presliding: " presliding.txt || { cat presliding.txt; fail "auto did not see presliding"; }
 check_parameters presliding.json "$(rel sigma0 1.0e5 0.03) and 'Fc' not in p"
+# sigma0's std (noise only) does not hold its 0.4 % error, a model error: the curve's halves give
+# sigma0 that differ beyond their noise, and the result says the std excludes it.
+warns presliding.json "counts the noise only and excludes this model error"
 /usr/bin/python3 - presliding.json <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
