@@ -59,14 +59,15 @@ bench: deps
 	@$(PYTHON) bench/compare --build $(BUILD)-bench --no-build --json bench/results.json
 
 # The coverage of idim's 95 % intervals on every synthetic rig cell (tests/rigs/idim_coverage.py;
-# make test runs a fast subset): the table goes to $(BUILD)/coverage.md, for docs/coverage.md; then
+# make test runs a fast subset): the table goes to $(BUILD)/coverage.md and is compared with
+# docs/coverage.md, cell by cell (tests/rigs/coverage_table.py: a difference fails, naming the cell); then
 # breakaway's coverage and the residual checks' warning rates (lugre's full 100 + 100 records,
 # make test runs 10 + 10), printed.
 COVERAGE_CASES ?= 100
 coverage: build
 	@PYTHONPATH=$(BUILD)/python $(PYTHON) tests/rigs/idim_coverage.py --cells all --cases $(COVERAGE_CASES) \
-		--markdown $(BUILD)/coverage.md
-	@echo "table: $(BUILD)/coverage.md"
+		--markdown $(BUILD)/coverage.md --compare docs/coverage.md || { echo "table: $(BUILD)/coverage.md"; exit 1; }
+	@echo "table: $(BUILD)/coverage.md (its rows are those of docs/coverage.md)"
 	@cd $(BUILD) && FRICTIONLAB_FULL_RATES=1 ./tests/test_identify --gtest_filter='ResidualCheckRates.*:BreakawayCoverage.*' \
 		| grep -E '^(decay|lugre|breakaway)'
 

@@ -72,7 +72,7 @@ std::string summary(const std::string& file, const Scenario& sc, const Trajector
     for (std::size_t i = 0; i < shown; ++i) {
       const auto& s = tr.switches[i];
       out << "  t = " << format_number(s.time) << " s  " << label_of(tr, s.contact) << switch_kind_name(s.kind) << "  at position "
-          << format_number(s.position) << ", applied " << format_number(s.applied) << "\n";
+          << format_number(s.position) << pos << ", applied " << format_number(s.applied) << force << "\n";
     }
     if (shown < tr.switches.size()) out << "  ... (" << tr.switches.size() - shown << " more)\n";
   }

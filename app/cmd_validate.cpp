@@ -2,6 +2,7 @@
 // the scenario's plant and controller and compare it with a measured run. On a two-axis plant
 // (xy-table), MODEL is x=MODEL_X.json[,y=MODEL_Y.json] and the circular test of measured and
 // simulated is compared too (analysis/contour_validation.hpp).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -173,9 +174,12 @@ std::string text_of(const Result& r, const std::string& scenario) {
     s << "error: " << r.message << "\n";
     return s.str();
   }
+  // The names' column as wide as the longest ("x.offset" on a two-axis table), so the '=' align.
+  std::size_t w = 7;
+  for (const auto& p : r.parameters) w = std::max(w, p.name.size());
   for (const auto& p : r.parameters)
-    s << "  " << std::left << std::setw(7) << p.name << " = " << std::right << std::setw(12) << format_number(p.value)
-      << " " << p.unit << "\n";
+    s << "  " << std::left << std::setw(static_cast<int>(w)) << p.name << " = " << std::right << std::setw(12)
+      << format_number(p.value) << (p.unit.empty() ? "" : " " + p.unit) << "\n";
   const auto& v = *r.validation;
   const auto& full = r.diagnostics.groups.at("relative_error_percent_full_rate");
   s << "data " << v.file << ": relative error % (IDIM grid, " << v.samples << " samples; every sample)\n";

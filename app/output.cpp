@@ -2,6 +2,7 @@
 
 #include "data_options.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -22,6 +23,7 @@
 
 #include "figures.hpp"
 #include "frictionlab/format.hpp"
+#include "frictionlab/identify/diagnostic_units.hpp"
 #include "frictionlab/identify/method.hpp"
 #include "frictionlab/error.hpp"
 #include "frictionlab/io/json_text.hpp"
@@ -40,8 +42,8 @@ namespace frictionlab::cli {
 // Progress line. On a terminal, a thread redraws "\r<task>: <stage> ... 3.2 s" on stderr every
 // 0.25 s once the run has taken a second; std::cout and std::cerr are routed through a buffer that
 // erases the line before any other text, so messages never land in the middle of it. When stderr
-// is not a terminal (a log, a pipe, a batch job), a run that has taken 2 s prints one whole line
-// "<task>: <stage> ... 3.2 s" every 3 s instead, so a slow run is never silent.
+// is not a terminal (a log, a pipe, a batch job), a run prints one whole line "<task>: <stage> ...
+// 2.0 s" once it has taken 2 s, and another every 3 s after, so a slow run is never silent.
 // FRICTIONLAB_NO_PROGRESS (any value) turns both off.
 namespace {
 
@@ -60,6 +62,7 @@ class Progress {
     task_ = task;
     stage_ = "working";
     begin_ = last_output_ = last_line_ = Clock::now();
+    lines_ = 0;
     if (tty_) install();
     thread_ = std::jthread([this](std::stop_token stop) { loop(stop); });
   }
@@ -135,7 +138,9 @@ class Progress {
       std::lock_guard lock(mutex_);
       const auto now = Clock::now();
       if (!tty_) {
-        if (now - begin_ < std::chrono::seconds(2) || now - last_line_ < std::chrono::seconds(3)) continue;
+        // The first line at 2 s, the next ones 3 s apart.
+        if (lines_ == 0 ? now - begin_ < std::chrono::seconds(2) : now - last_line_ < std::chrono::seconds(3)) continue;
+        ++lines_;
         std::ostringstream line;
         line << task_ << ": " << stage_ << " ... " << std::fixed << std::setprecision(1)
              << std::chrono::duration<double>(now - begin_).count() << " s\n";
@@ -161,6 +166,7 @@ class Progress {
   Clock::time_point begin_, last_output_, last_line_;
   bool shown_ = false;
   bool tty_ = false;
+  int lines_ = 0;  // whole lines printed (stderr not a terminal)
   std::unique_ptr<Routing> cout_, cerr_;
 };
 
@@ -188,10 +194,13 @@ const OptionSpec* table_option(const OutputOptions& o, const std::string& name) 
   return nullptr;
 }
 
-// The unit of an option's value on the run's axis: a method option's from its table, a data
-// option's from data_option_unit ("" for others and for a flag).
-std::string option_unit(const OptionSpec* spec, const std::string& name, bool rotary) {
-  if (spec) return spec->type == OptionType::flag ? "" : spec->unit_on(rotary);
+// The unit of an option's value in the run, on its axis: a method option's from its table, as
+// the run's choices decide it (OptionValues::unit: --kp's 1/s with --controller emps-pd, also when
+// the scenario gave the controller), a data option's from data_option_unit ("" for others and for
+// a flag).
+std::string option_unit(const OptionValues* values, const OptionSpec* spec, const std::string& name, const Result& r) {
+  const bool rotary = r.axis == Axis::rotary;
+  if (spec) return spec->type == OptionType::flag ? "" : values->unit(spec->name, rotary, r.diagnostics.texts);
   return data_option_unit(name, rotary ? Axis::rotary : Axis::linear);
 }
 
@@ -211,7 +220,6 @@ ReportInfo report_info(const Result& r, const OutputOptions& o) {
     return info;
   }
   info.title = command_path(o.command);
-  const bool rotary = r.axis == Axis::rotary;
   const auto given = [&o](const char* name) {
     const CLI::Option* opt = o.command->get_option_no_throw(name);
     return opt && opt->count() > 0;
@@ -233,7 +241,7 @@ ReportInfo report_info(const Result& r, const OutputOptions& o) {
     if (name == "--help" || name == "-h" || name.empty()) continue;
     const bool flag = opt->get_expected_min() == 0 && opt->get_type_size_max() == 0;
     const OptionSpec* spec = table_option(o, name);
-    const std::string unit = flag ? "" : option_unit(spec, name, rotary);
+    const std::string unit = flag ? "" : option_unit(o.values, spec, name, r);
     if (opt->count() > 0) {
       std::string joined;
       for (const auto& v : opt->results()) {
@@ -241,6 +249,13 @@ ReportInfo report_info(const Result& r, const OutputOptions& o) {
         joined += (joined.empty() ? "" : ", ") + v;
       }
       if (flag) line += " " + name;
+      // --resample without DT: the step the run took, the median step (an empty cell said nothing).
+      if (!flag && joined.empty() && name == "--resample") {
+        const auto g = r.diagnostics.groups.find("resampling");
+        joined = g != r.diagnostics.groups.end() && g->second.count("dt")
+                     ? format_number(g->second.at("dt"), 6) + " (the median step)"
+                     : "the median step";
+      }
       info.options.push_back({name, flag ? "yes" : joined, unit});
     } else if (spec && spec->type == OptionType::column && o.data) {
       if (const std::string* column = read(name)) info.options.push_back({name, *column + " (default)", unit});
@@ -747,7 +762,10 @@ std::string result_text(const Result& r) {
     s << "condition number " << format_number(r.diagnostics.condition_number, 4) << "\n";
   for (const auto& [name, group] : r.diagnostics.groups) {
     s << name << ":";
-    for (const auto& [k, v] : group) s << " " << k << " = " << (std::isnan(v) ? std::string("n/a") : format_number(v, 6));
+    for (const auto& [k, v] : group) {
+      const std::string u = std::isnan(v) ? "" : diagnostic_unit(r, name, k);
+      s << " " << k << " = " << (std::isnan(v) ? std::string("n/a") : format_number(v, 6)) << (u.empty() ? "" : " " + u);
+    }
     s << "\n";
   }
   for (const auto& [name, word] : r.diagnostics.texts) s << name << ": " << word << "\n";

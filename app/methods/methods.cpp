@@ -103,7 +103,7 @@ GivenOptions add_table_options(CLI::App* cmd, const MethodInfo& info) {
 }
 
 void record_options(Result& r, const OptionValues& options) {
-  r.json_sections["options"] = options_json(options, r.axis == Axis::rotary);
+  r.json_sections["options"] = options_json(options, r.axis == Axis::rotary, r.diagnostics.texts);
 }
 
 }  // namespace frictionlab::cli

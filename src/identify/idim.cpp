@@ -656,8 +656,11 @@ MethodInfo detail::idim_method_info() {
        .help = "IDIM-IV: the experiment's controller, sampled at the record's rate: pid (force = kp (r - q) + ki "
                "int(r - q) - kd qd + feedforward) or emps-pd (v = kp kv (r - q) - kv qd_m, force = drive-gain v; "
                "EMPS benchmark)",
-       .words = {"pid", "emps-pd"}, .applies_if = {when_given("iv")}},
-      {.name = "kp", .type = OptionType::number, .unit = "N/m or 1/s", .rotary_unit = "N m/rad or 1/s",
+       .words = {"pid", "emps-pd"}, .applies_if = {when_given("iv")},
+       // Not given: the --scenario's controller.type (describe_controller records it).
+       .taken_text = "iv_controller_type"},
+      {.name = "kp", .type = OptionType::number,
+       .units = {{when_value("controller", {"pid"}), "N/m", "N m/rad"}, {when_value("controller", {"emps-pd"}), "1/s", ""}},
        .help = "IDIM-IV: position gain (pid: N/m or N m/rad; emps-pd: the position loop's 1/s)", .min = 0, .scalar_name = true,
        .applies_if = {when_given("iv")}},
       {.name = "kd", .type = OptionType::number, .unit = "N s/m", .rotary_unit = "N m s/rad",
@@ -673,7 +676,8 @@ MethodInfo detail::idim_method_info() {
        .help = "IDIM-IV, emps-pd: force per volt of the controller's output (EMPS: gtau). Command line default: "
                "--gain",
        .min = 0, .min_open = true, .scalar_name = true, .applies_if = {when_given("iv")}},
-      {.name = "control-limit", .type = OptionType::number, .unit = "N or V", .rotary_unit = "N m or V",
+      {.name = "control-limit", .type = OptionType::number,
+       .units = {{when_value("controller", {"pid"}), "N", "N m"}, {when_value("controller", {"emps-pd"}), "V", ""}},
        .help = "IDIM-IV: saturation of the controller's output (pid: N or N m, default none; emps-pd: V, default "
                "10, the EMPS drive's)",
        .min = 0, .min_open = true, .scalar_name = true, .applies_if = {when_given("iv")}},

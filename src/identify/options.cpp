@@ -79,9 +79,31 @@ std::string OptionSpec::keyword() const {
   return k;
 }
 
-std::string OptionSpec::unit_text() const {
+namespace {
+// "A or B" of a linear and a rotary unit ("N/m or N m/rad"); the one when they are the same.
+std::string both_axes(const std::string& unit, const std::string& rotary_unit) {
   if (rotary_unit.empty() || rotary_unit == unit) return unit;
   return unit + " or " + rotary_unit;
+}
+}  // namespace
+
+std::string OptionSpec::unit_on(bool rotary) const {
+  if (units.empty()) return rotary && !rotary_unit.empty() ? rotary_unit : unit;
+  std::vector<std::string> seen;
+  for (const OptionUnit& u : units) {
+    const std::string& one = rotary && !u.rotary_unit.empty() ? u.rotary_unit : u.unit;
+    if (std::find(seen.begin(), seen.end(), one) == seen.end()) seen.push_back(one);
+  }
+  return joined(seen, " or ");
+}
+
+std::string OptionSpec::unit_text() const {
+  if (units.empty()) return both_axes(unit, rotary_unit);
+  std::string s;
+  for (const OptionUnit& u : units)
+    s += (s.empty() ? "" : ", ") + both_axes(u.unit, u.rotary_unit) +
+         (u.when.words.empty() ? "" : " with " + joined(u.when.words, " or "));
+  return s;
 }
 
 std::string OptionSpec::rule(bool finite) const {
@@ -279,22 +301,36 @@ std::vector<std::string> OptionValues::list(const std::string& name) const {
   return {option_text(*v)};
 }
 
-bool OptionValues::applies(const std::string& name) const {
-  for (const OptionCondition& c : spec(name).applies_if) {
-    const OptionSpec& other = spec(c.option);
-    bool holds = false;
-    if (c.words.empty()) {
-      holds = other.type == OptionType::flag ? flag(c.option) : given(c.option);
-    } else {
-      for (const std::string& item : list(c.option))  // a text is a list of one
-        if (std::find(c.words.begin(), c.words.end(), item) != c.words.end()) holds = true;
-    }
-    if (holds == c.negated) return false;
+bool OptionValues::holds(const OptionCondition& c, const std::map<std::string, std::string>& texts) const {
+  const OptionSpec& other = spec(c.option);
+  bool met = false;
+  if (c.words.empty()) {
+    met = other.type == OptionType::flag ? flag(c.option) : given(c.option);
+  } else {
+    std::vector<std::string> items = list(c.option);  // a text is a list of one
+    // Not given, no default: the value the run took, when the result records it.
+    if (!get(c.option) && !other.taken_text.empty())
+      if (const auto it = texts.find(other.taken_text); it != texts.end()) items = {it->second};
+    for (const std::string& item : items)
+      if (std::find(c.words.begin(), c.words.end(), item) != c.words.end()) met = true;
   }
+  return met != c.negated;
+}
+
+bool OptionValues::applies(const std::string& name) const {
+  for (const OptionCondition& c : spec(name).applies_if)
+    if (!holds(c, {})) return false;
   return true;
 }
 
-std::string options_json(const OptionValues& values, bool rotary) {
+std::string OptionValues::unit(const std::string& name, bool rotary, const std::map<std::string, std::string>& texts) const {
+  const OptionSpec& s = spec(name);
+  for (const OptionUnit& u : s.units)
+    if (holds(u.when, texts)) return rotary && !u.rotary_unit.empty() ? u.rotary_unit : u.unit;
+  return s.unit_on(rotary);
+}
+
+std::string options_json(const OptionValues& values, bool rotary, const std::map<std::string, std::string>& texts) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
   for (const auto& s : values.table()) {
     nlohmann::ordered_json o;
@@ -305,7 +341,7 @@ std::string options_json(const OptionValues& values, bool rotary) {
     else if (const auto* d = std::get_if<double>(&*v)) o["value"] = std::isfinite(*d) ? nlohmann::ordered_json(*d) : nullptr;
     else if (const auto* t = std::get_if<std::string>(&*v)) o["value"] = *t;
     else o["value"] = std::get<std::vector<std::string>>(*v);
-    o["unit"] = s.unit_on(rotary);
+    o["unit"] = values.unit(s.name, rotary, texts);
     o["given"] = values.given(s.name);
     j[s.name] = o;
   }

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "frictionlab/format.hpp"
+#include "frictionlab/identify/diagnostic_units.hpp"
 #include "frictionlab/identify/method.hpp"
 #include "io/atomic_write.hpp"
 
@@ -132,7 +133,8 @@ void validation_sections_html(std::ostringstream& h, const ValidationFigures& v)
   }
 }
 
-void diagnostics_html(std::ostringstream& h, const Diagnostics& d) {
+void diagnostics_html(std::ostringstream& h, const Result& r) {
+  const Diagnostics& d = r.diagnostics;
   h << "<h2 id=\"diagnostics\">Diagnostics</h2>\n";
   const bool any = std::isfinite(d.condition_number) || !d.numbers.empty() || !d.groups.empty() || !d.lists.empty() ||
                    !d.texts.empty();
@@ -151,9 +153,10 @@ void diagnostics_html(std::ostringstream& h, const Diagnostics& d) {
   }
   for (const auto& [name, group] : d.groups) {
     h << "<h3>" << esc(name) << "</h3>\n";
-    table_head(h, {"name", "value"});
+    table_head(h, {"name", "value", "unit"});  // the figures' units (identify/diagnostic_units.hpp)
     for (const auto& [k, v] : group)
-      h << "<tr><td>" << esc(k) << "</td><td class=\"num\">" << general(v) << "</td></tr>\n";
+      h << "<tr><td>" << esc(k) << "</td><td class=\"num\">" << general(v) << "</td><td>"
+        << esc(diagnostic_unit(r, name, k)) << "</td></tr>\n";
     h << "</tbody></table>\n";
   }
   // Lists can be long (one record per segment or cycle): the first rows are shown, the count said.
@@ -309,7 +312,7 @@ std::string report_html(const Result& r, const std::vector<std::pair<std::string
     h << "</tbody></table>\n";
   }
 
-  diagnostics_html(h, r.diagnostics);
+  diagnostics_html(h, r);
   h << "</body>\n</html>\n";
   return h.str();
 }

@@ -27,7 +27,7 @@ PY
 # the correlation matrix is carried.
 "$exe" identify idim "$data/DATA_EMPS.mat" --time t --position qm --input vir --gain gtau --json - \
   > "$tmp/emps.json" 2> "$tmp/emps.txt"
-grep -q "defaults: cutoff_hz = 100 decimation = 10 skip = 49" "$tmp/emps.txt" || { echo "FAIL: defaults line"; cat "$tmp/emps.txt"; exit 1; }
+grep -q "defaults: cutoff_hz = 100 Hz decimation = 10 skip = 49 samples" "$tmp/emps.txt" || { echo "FAIL: defaults line"; cat "$tmp/emps.txt"; exit 1; }
 grep -q "regressors_from: position" "$tmp/emps.txt" || { echo "FAIL: regressors_from line"; cat "$tmp/emps.txt"; exit 1; }
 /usr/bin/python3 - "$tmp/emps.json" <<'PY'
 import json, sys

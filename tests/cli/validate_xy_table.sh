@@ -40,6 +40,15 @@ cols=(--time t --x X --y Y --x-force ux --y-force uy --scale ux=10 --scale uy=5)
   --json "$tmp/exact.json" --plot "$tmp/exact.svg" --report "$tmp/report" > "$tmp/exact.txt"
 grep -q "largest quadrant glitch" "$tmp/exact.txt" || { cat "$tmp/exact.txt"; fail "text: no contour table"; }
 grep -q "^  x.position" "$tmp/exact.txt" && grep -q "^  y.force" "$tmp/exact.txt" || { cat "$tmp/exact.txt"; fail "text: per-axis errors"; }
+# The model's parameters: the '=' in one column (x.offset is longer than the 1-DOF names), a unit
+# after each value that has one and no trailing blank after one that has none (delta).
+/usr/bin/python3 - "$tmp/exact.txt" <<'PY' || { cat "$tmp/exact.txt"; fail "text: the parameter lines are not aligned"; }
+import re, sys
+lines = [l for l in open(sys.argv[1]).read().splitlines() if re.match(r"  [xy]\.\w+ +=", l)]
+assert len(lines) >= 10, lines
+assert len({l.index(" = ") for l in lines}) == 1, lines
+assert not [l for l in lines if l != l.rstrip()], lines
+PY
 # The figure is the circular test with both paths; the report has the contour, the axes and the polar plots.
 grep -q "<svg" "$tmp/exact.svg" && grep -q "simulated" "$tmp/exact.svg" && grep -q "nominal circle" "$tmp/exact.svg" ||
   fail "validate --plot: not the measured and simulated contour"

@@ -33,6 +33,11 @@ order, must be printed by it in that order (other printed numbers in between are
 to the digits the page shows as for ```text output; a number inside parentheses is a remark and is
 not compared, nor are link targets, nor digits inside a word ("lag-1", "x86_64"). Several comments
 may stand before one table, one per column or row.
+Numbers a command too slow for this test makes (make coverage's table):
+    <!-- numbers compared by make TARGET and ctest NAME: COMMAND -->
+COMMAND is not run here; it must name the page (it compares its figures with the page itself),
+each check must be defined (a Makefile target, a ctest) with a definition that names the page,
+and the text marked must quote numbers: every number is tied to a command that compares it.
 `doc_commands.py --self-test` checks that the comparison refuses a wrong quoted output and a wrong
 quoted number (ctest docs.quoted_outputs_checked).
 
@@ -153,6 +158,10 @@ NUMBERS_MARK = re.compile(r"^<!--\s*numbers(?:\s+in\s+([^:]*?))?\s*:\s*(.*?)\s*-
 # "2-sigma", "kg m^2"); a sentence's full stop after it is not its decimal point.
 PROSE_NUMBER = re.compile(r"(?<![\w.\-+^])([-+]?(?:\d+(?:\.\d+)?|\.\d+)(?:[eE][-+]?\d+)?)(?!\w|\.\d|-\w)")
 LINK_TARGET = re.compile(r"\]\([^)]*\)")
+# A table or paragraph whose numbers a command too slow for this test makes and compares with the
+# page itself: <!-- numbers compared by CHECKS: COMMAND -->, CHECKS "ctest NAME" or "make TARGET"
+# joined by " and ". Not run here (check_compared_mark says what is checked instead).
+COMPARED_MARK = re.compile(r"^<!--\s*numbers\s+compared\s+by\s+([^:]*?)\s*:\s*(.*?)\s*-->[ \t]*$", re.M | re.S)
 # Any comment that starts like one: a misspelt marking comment is refused, not skipped.
 NUMBERS_LIKE = re.compile(r"^<!--\s*numbers\b", re.M)
 
@@ -293,6 +302,59 @@ def check_marked_numbers(text, mark, run, where):
     return failures, compared
 
 
+def _check_definition(src, check, page):
+    """'' when `check` ("ctest NAME" or "make TARGET") is defined in the checkout `src` and its
+    definition names docs/PAGE (so running it compares the page); else what is wrong."""
+    want = "docs/" + page
+    m = re.fullmatch(r"(ctest|make)\s+(\S+)", check.strip())
+    if not m:
+        return f"'{check.strip()}': expected 'ctest NAME' or 'make TARGET'"
+    kind, name = m.groups()
+    if kind == "make":
+        path = os.path.join(src, "Makefile")
+        text = open(path, encoding="utf-8").read() if os.path.exists(path) else ""
+        t = re.search(rf"^{re.escape(name)}\s*:[^\n]*\n((?:\t[^\n]*\n)*)", text, re.M)
+        if not t:
+            return f"make {name}: no such target in the Makefile"
+        return "" if want in t.group(1) else f"make {name}: its recipe does not name {want}"
+    found = False
+    for root, dirs, files in os.walk(src):
+        dirs[:] = [d for d in dirs if not d.startswith((".", "build"))]
+        if "CMakeLists.txt" not in files:
+            continue
+        text = open(os.path.join(root, "CMakeLists.txt"), encoding="utf-8").read()
+        for t in re.finditer(rf"add_test\(NAME\s+{re.escape(name)}\s", text):
+            found = True
+            end = text.find("add_test(", t.end())
+            if want in text[t.start():end if end >= 0 else len(text)]:
+                return ""
+    return f"ctest {name}: its command does not name {want}" if found else f"ctest {name}: no such test"
+
+
+def check_compared_mark(text, mark, src, page, where):
+    """Failures of one <!-- numbers compared by CHECKS: COMMAND --> comment of docs/PAGE: the
+    command names the page (it compares its figures with it), each check is defined and names the
+    page, and the text marked quotes numbers. The command is not run (too slow for make test)."""
+    failures = []
+    command = " ".join(mark.group(2).split())
+    if "docs/" + page not in command:
+        failures.append(f"{where}: `{command}` does not name docs/{page}: the command that makes the numbers "
+                        f"must compare them with the page")
+    checks = re.split(r"\s+and\s+", mark.group(1).strip())
+    for check in checks:
+        why = _check_definition(src, check, page)
+        if why:
+            failures.append(f"{where}: {why}")
+    try:
+        line, lines = marked_region(text, mark.end())
+        pieces = region_pieces(lines, parse_selection(""))
+        if not [n for _, t in pieces for n in prose_numbers(t)]:
+            failures.append(f"{where}: the text marked (line {line}) quotes no number")
+    except ValueError as e:
+        failures.append(f"{where}: {e}")
+    return failures
+
+
 def misspelt_marks(text, marks, where):
     """Failures for the comments of `text` that start like a marking comment but are not one."""
     starts = {m.start() for m in marks}
@@ -313,7 +375,8 @@ def check_page_numbers(text, where, cwd, env):
         return p.returncode, p.stdout + ("" if p.returncode == 0 else "\n--- stderr\n" + p.stderr)
 
     marks = [m for m in NUMBERS_MARK.finditer(text) if not any(a <= m.start() < b for a, b in fences)]
-    failures, compared = misspelt_marks(text, marks, where), 0
+    compared_marks = [m for m in COMPARED_MARK.finditer(text) if not any(a <= m.start() < b for a, b in fences)]
+    failures, compared = misspelt_marks(text, marks + compared_marks, where), 0
     for m in marks:
         why, n = check_marked_numbers(text, m, run, f"{where}:{text.count(chr(10), 0, m.start()) + 1}")
         failures += why
@@ -337,7 +400,15 @@ def run_pages(src, build, names=None, log=print):
         found = list(blocks(path))
         fences = [(m.start(), m.end()) for m in FENCE.finditer(text)]
         marks = [m for m in NUMBERS_MARK.finditer(text) if not any(a <= m.start() < b for a, b in fences)]
-        failures += misspelt_marks(text, marks, f"docs/{name}")
+        compared_marks = [m for m in COMPARED_MARK.finditer(text) if not any(a <= m.start() < b for a, b in fences)]
+        failures += misspelt_marks(text, marks + compared_marks, f"docs/{name}")
+        for m in compared_marks:
+            line = text.count("\n", 0, m.start()) + 1
+            why = check_compared_mark(text, m, src, name, f"docs/{name}:{line}")
+            compared += not why
+            log(f"== docs/{name}:{line} (quoted numbers compared by {' '.join(m.group(1).split())}): "
+                f"{'not tied' if why else 'tied'}")
+            failures += why
         for lang, info, _, line in found:
             if lang not in RUN | SHOWN:
                 failures.append(f"docs/{name}:{line}: a fence of language '{lang or '(none)'}': "
@@ -438,6 +509,22 @@ SELF_TEST_PAGES = {
     "numbers_bad_selection.md": ("<!-- numbers in line 2: echo 1 -->\n| a |\n|---|\n| 1 |\n", False),
     "numbers_misspelt.md": ("<!-- numbers on column 2: echo 1 -->\n| a | b |\n|---|---|\n| x | 2 |\n", False),
     "numbers_beyond_table.md": ("<!-- numbers in column 3: echo 1 -->\n| a |\n|---|\n| 1 |\n", False),
+    # Numbers a slow command compares with the page (the self-test's Makefile and CMakeLists.txt,
+    # SELF_TEST_FILES, define `make slow` and `ctest fast.rows`, both naming compared_ok.md).
+    "compared_ok.md": ("<!-- numbers compared by make slow and ctest fast.rows: make slow_cmd --compare "
+                       "docs/compared_ok.md -->\n| cell | cover |\n|---|---|\n| a | 95 |\n", True),
+    "compared_no_test.md": ("<!-- numbers compared by ctest no.such: x --compare docs/compared_no_test.md -->\n"
+                            "| cell | cover |\n|---|---|\n| a | 95 |\n", False),
+    "compared_other_page.md": ("<!-- numbers compared by make slow: x --compare docs/compared_other_page.md -->\n"
+                               "| cell | cover |\n|---|---|\n| a | 95 |\n", False),
+    "compared_command_elsewhere.md": ("<!-- numbers compared by make slow: x --compare docs/compared_ok.md -->\n"
+                                      "| cell | cover |\n|---|---|\n| a | 95 |\n", False),
+    "compared_no_numbers.md": ("<!-- numbers compared by make slow: x docs/compared_no_numbers.md -->\n"
+                               "| cell | verdict |\n|---|---|\n| a | covers |\n", False),
+}
+SELF_TEST_FILES = {
+    "Makefile": "slow:\n\t@run --compare docs/compared_ok.md\n\t@run --compare docs/compared_no_numbers.md\n",
+    "tests/CMakeLists.txt": "add_test(NAME fast.rows COMMAND run --compare ${PROJECT_SOURCE_DIR}/docs/compared_ok.md)\n",
 }
 
 
@@ -446,6 +533,10 @@ def self_test():
     problems = []
     with tempfile.TemporaryDirectory(prefix="doc_selftest_") as src:
         os.mkdir(os.path.join(src, "docs"))
+        for rel, content in SELF_TEST_FILES.items():
+            os.makedirs(os.path.dirname(os.path.join(src, rel)), exist_ok=True)
+            with open(os.path.join(src, rel), "w", encoding="utf-8") as f:
+                f.write(content)
         for name, (text, _) in SELF_TEST_PAGES.items():
             with open(os.path.join(src, "docs", name), "w", encoding="utf-8") as f:
                 f.write(text)

@@ -187,6 +187,47 @@ TEST(Options, RecordListsEveryOptionWithValueAndUnit) {
   EXPECT_EQ(nlohmann::json::parse(options_json(v, false))["velocity-tolerance"]["unit"], "m/s");
 }
 
+// A unit that another option decides (OptionSpec::units) is the run's: --kp is N/m (N m/rad) with
+// --controller pid, 1/s with emps-pd, and with the controller a scenario gave, which the result
+// records (iv_controller_type); only where nothing decides it does it name every case. The help
+// and the reference name each case with its condition. No table writes "X or Y" as a plain unit
+// other than where the run's choices cannot decide it (the temperature column's degC or K).
+TEST(Options, UnitThatAnOptionDecidesIsTheRuns) {
+  const MethodInfo& idim = method_info(MethodId::idim);
+  OptionValues v = idim.values();
+  EXPECT_EQ(v.unit("kp", false), "N/m or 1/s");  // nothing decides it
+  EXPECT_EQ(v.unit("kp", true), "N m/rad or 1/s");
+  EXPECT_EQ(idim.option("kp")->unit_text(), "N/m or N m/rad with pid, 1/s with emps-pd");
+  EXPECT_EQ(idim.option("control-limit")->unit_text(), "N or N m with pid, V with emps-pd");
+  v.set("controller", std::string("emps-pd"), "--controller");
+  EXPECT_EQ(v.unit("kp", false), "1/s");
+  EXPECT_EQ(v.unit("kp", true), "1/s");
+  EXPECT_EQ(v.unit("control-limit", true), "V");
+  EXPECT_EQ(v.unit("kv", false), "V s/m");  // a plain unit is unchanged
+  v.set("controller", std::string("pid"), "--controller");
+  EXPECT_EQ(v.unit("kp", false), "N/m");
+  EXPECT_EQ(v.unit("kp", true), "N m/rad");
+  EXPECT_EQ(v.unit("control-limit", false), "N");
+  // Not given: the controller the run took from its scenario, as the result records it.
+  const OptionValues scenario = idim.values();
+  const std::map<std::string, std::string> texts = {{"iv_controller_type", "emps-pd"}};
+  EXPECT_EQ(scenario.unit("kp", false, texts), "1/s");
+  EXPECT_EQ(nlohmann::json::parse(options_json(scenario, false, texts))["kp"]["unit"], "1/s");
+  EXPECT_EQ(nlohmann::json::parse(options_json(v, true))["kp"]["unit"], "N m/rad");
+
+  for (const auto& m : identification_methods())
+    for (const auto& o : m.options) {
+      for (const auto& u : o.units) {
+        EXPECT_NE(m.option(u.when.option), nullptr) << m.name << " --" << o.name << ": " << u.when.option;
+        EXPECT_TRUE(o.unit.empty() && o.rotary_unit.empty()) << m.name << " --" << o.name << ": units and unit both";
+      }
+      const bool undecided = o.name == "temperature" || o.name == "temperature-ref";
+      if (!undecided)
+        EXPECT_EQ(o.unit.find(" or "), std::string::npos) << m.name << " --" << o.name << ": '" << o.unit
+                                                          << "': give `units` with the option that decides it";
+    }
+}
+
 // When an option applies (OptionSpec::applies_if, which the report's Options table follows): an
 // IV option only with --iv, the Stribeck term's only when --terms holds stribeck, sweep's
 // detection options not with --segment; every condition names an option of its own table.

@@ -167,6 +167,20 @@ def test_idim_new_and_old_keywords_agree(emps):
     assert options["vs"] == {"value": 0.02, "unit": "m/s", "given": True}
 
 
+def test_recorded_unit_is_the_one_the_run_decides(emps):
+    """An option whose unit the controller's type decides is recorded in the run's unit: kp in
+    1/s with controller="emps-pd" (N/m with pid), as the command line's report and JSON give it."""
+    force = emps["gtau"] * emps["vir"]
+    r = fl.identify_idim(emps["t"], force, position=emps["qm"], source=emps, iv=True, controller="emps-pd",
+                         kp="kp", kv="kv", drive_gain="gtau", reference=emps["qg"])
+    assert r.ok, r.message
+    options = json.loads(r.to_json())["options"]
+    assert options["kp"] == {"value": 160.18, "unit": "1/s", "given": True}
+    assert options["control-limit"]["unit"] == "V"
+    plain = json.loads(fl.identify_idim(emps["t"], force, position=emps["qm"]).to_json())["options"]
+    assert plain["kp"]["unit"] == "N/m or 1/s"  # nothing decides it: both named
+
+
 def test_sweep_refuses_irregular_time_like_every_method():
     t, f, v = sweep_record()
     t = t.copy()

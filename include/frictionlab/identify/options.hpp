@@ -55,12 +55,24 @@ inline OptionCondition when_value(std::string name, std::vector<std::string> wor
   return {std::move(name), std::move(words), false};
 }
 
+/// The unit of an option's value when a condition on another option holds (OptionSpec::units):
+/// idim's --kp is N/m with --controller pid and 1/s with --controller emps-pd.
+struct OptionUnit {
+  OptionCondition when;     ///< the other option's value that decides the unit (when_value)
+  std::string unit;         ///< on a linear axis ("N/m")
+  std::string rotary_unit;  ///< on a rotary axis ("N m/rad"); "" when the same as `unit`
+};
+
 /// One option of a method.
 struct OptionSpec {
   std::string name;  ///< the command line's flag without "--" ("min-duration"): the contract
   OptionType type = OptionType::number;
   std::string unit;  ///< of the value on a linear axis ("m/s"), with rotary_unit; "" when none
   std::string rotary_unit;  ///< on a rotary axis ("rad/s"); "" when the same as `unit`
+  /// Units that another option decides (the controller's type: N/m or 1/s), each with its
+  /// condition; `unit` and `rotary_unit` are then left empty. A run's unit is the first case whose
+  /// condition holds (OptionValues::unit); unit_on and unit_text name every case.
+  std::vector<OptionUnit> units;
   /// The default; none when the default is computed from the data (the help says how) or there
   /// is none (an optional input, a required option).
   std::optional<OptionValue> default_value;
@@ -90,13 +102,20 @@ struct OptionSpec {
   /// does not apply is not used by the run whatever its value (the method may refuse it when
   /// given); the report lists an option's default only where it applies.
   std::vector<OptionCondition> applies_if;
+  /// For an option without a default that a run may take from elsewhere when it is not given
+  /// (--controller from the --scenario's controller.type): the result's diagnostics text that
+  /// records the value taken ("iv_controller_type"), from which OptionValues::unit decides the
+  /// units that depend on this option. "" when none.
+  std::string taken_text;
 
   /// The Python keyword: the name with '-' as '_', and "_" appended to a Python reserved word
   /// ("from" -> "from_").
   std::string keyword() const;
-  /// The unit on an axis ("rotary": rotary_unit when set).
-  const std::string& unit_on(bool rotary) const { return rotary && !rotary_unit.empty() ? rotary_unit : unit; }
-  /// "m/s or rad/s", "s", "" (both axes' units in words, for help and the reference).
+  /// The unit on an axis ("rotary": rotary_unit when set); with `units`, every case's unit on
+  /// the axis ("N/m or 1/s"): the run decides which (OptionValues::unit).
+  std::string unit_on(bool rotary) const;
+  /// "m/s or rad/s", "s", "" (both axes' units in words, for help and the reference); with
+  /// `units`, each case's with its condition's words: "N/m or N m/rad with pid, 1/s with emps-pd".
   std::string unit_text() const;
   /// The valid values in words: "a number > 0", "an integer >= 1", "one of position, velocity",
   /// "a number >= 0 or search".
@@ -146,12 +165,21 @@ class OptionValues {
   /// these values (given or not). \throws std::invalid_argument for a name the table lacks, in
   /// `name` or in one of its conditions (a programming error of the method's own file).
   bool applies(const std::string& name) const;
+  /// The unit of option `name`'s value in this run, on a rotary or linear axis: the first of
+  /// its `units` whose condition holds, else OptionSpec::unit_on. A condition on an option that
+  /// is not given and has no default reads the value the run took from `texts` (the result's
+  /// diagnostics texts, by the option's taken_text: the scenario's controller type); with none
+  /// there, no case holds and the unit names every case ("N/m or 1/s").
+  /// \throws std::invalid_argument for a name the table lacks.
+  std::string unit(const std::string& name, bool rotary, const std::map<std::string, std::string>& texts = {}) const;
 
   const std::vector<OptionSpec>& table() const;
   const std::map<std::string, OptionValue>& given_values() const { return given_; }
 
  private:
   const OptionSpec& spec(const std::string& name) const;
+  // Whether condition `c` holds for these values (`texts`: OptionValues::unit's).
+  bool holds(const OptionCondition& c, const std::map<std::string, std::string>& texts) const;
   const std::vector<OptionSpec>* table_ = nullptr;
   std::map<std::string, OptionValue> given_;
 };
@@ -159,7 +187,8 @@ class OptionValues {
 /// JSON text (one object) of every option of `values`' table that shaped a result, in table
 /// order: {"NAME": {"value": v, "unit": "s", "given": true|false}, ...}; value null when the
 /// default is computed from the data (the result's diagnostics say what was used) or the option
-/// is absent; a column or file holds its name. `rotary` picks the unit.
-std::string options_json(const OptionValues& values, bool rotary);
+/// is absent; a column or file holds its name. The unit is the run's (OptionValues::unit on the
+/// axis `rotary` picks, with the result's diagnostics `texts`).
+std::string options_json(const OptionValues& values, bool rotary, const std::map<std::string, std::string>& texts = {});
 
 }  // namespace frictionlab

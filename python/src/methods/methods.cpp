@@ -91,7 +91,7 @@ void bind_option_tables(py::module_& m) {
   // The result records the options that shaped it (its JSON "options": name, value, unit, given).
   py::class_<Result> result = py::reinterpret_borrow<py::class_<Result>>(py::type::of<Result>());
   result.def("_record_options", [](Result& r, const OptionValues& v) {
-    r.json_sections["options"] = options_json(v, r.axis == Axis::rotary);
+    r.json_sections["options"] = options_json(v, r.axis == Axis::rotary, r.diagnostics.texts);
   });
 }
 
