@@ -76,12 +76,12 @@ def array_calls(idim_ok, emps, source_dir):
 # Public functions whose arguments are a path or a scenario (not arrays): name -> argument.
 PATH_CALLS = {"analyze_map": "scenario", "load": "path", "load_law": "path", "sha256_file": "path", "simulate": "scenario", "export_c": "model", "export_mjcf": "model"}
 # Public functions of files and keyword options, each with its own test below.
-OTHER_CALLS = {"plan"}
+OTHER_CALLS = {"plan", "set_budget_factor"}
 # Public names that take no array: result and option classes (made by the package or with no
 # arguments), the version, the lists of law names and of methods. FrictionLaw's dict is tested on its own below.
 NO_ARRAYS = {"ArgumentTypeError", "Error", "BreakawayOptions", "ContourResult", "DecayOptions", "Diagnostics", "EnvelopeFit", "EnvelopeOptions", "EnvelopeResult",
              "FitFigures", "IdimOptions", "Parameter", "Result", "StaticFit", "StaticFitOptions", "StickSlipOptions",
-             "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__", "law_names", "methods", "Data",
+             "StickSlipResult", "SweepOptions", "Trajectory", "ValidationFigures", "__version__", "law_names", "methods", "Data", "budget_factor",
              "Scenario", "FrictionLaw"}
 ARRAY_FUNCTIONS = {"identify_idim", "identify_auto", "idim_regression", "cross_test", "idim_reconstruction", "identify_breakaway",
                    "identify_sweep", "sweep_points", "identify_decay", "identify_lugre", "fit_static_law",
@@ -289,3 +289,17 @@ def test_the_documented_exception_types():
         fl.idim_reconstruction("x")
     with pytest.raises(fl.Error, match="is a directory"):
         fl.load_law(os.path.dirname(os.path.abspath(__file__)))
+
+
+def test_set_budget_factor_refuses_what_is_not_a_factor():
+    """NaN, inf, zero, negative and too small factors are refused naming --budget, and leave the
+    factor as it was; a string or None is an ArgumentTypeError."""
+    before = fl.budget_factor()
+    for bad in (float("nan"), float("inf"), -1.0, 0.0, 1e-7):
+        with pytest.raises(fl.Error) as info:
+            fl.set_budget_factor(bad)
+        assert info.value.code == "option.out_of_range" and info.value.option == "--budget", (bad, str(info.value))
+        assert fl.budget_factor() == before
+    for bad in ("2", None, [2.0]):
+        with pytest.raises(TypeError):
+            fl.set_budget_factor(bad)
