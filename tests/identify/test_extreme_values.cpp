@@ -50,6 +50,19 @@
 namespace frictionlab {
 namespace {
 
+// The LuGre record of the cases below: Canudas de Wit et al. (1995)'s Table I on a unit mass
+// driven by a 3 N sine for 2 s at 1 kHz (presliding and sliding both ways).
+Trajectory lugre_sine_record() {
+  return simulate(scenario_from_yaml(YAML::Load(R"(
+plant: {type: axis, M: 1.0}
+friction: {law: lugre, sigma0: 1.0e5, sigma1: 316.22776601683796, sigma2: 0.4, Fc: 1.0, Fs: 1.5, vs: 0.001}
+input: {type: sine, amplitude: 3.0, omega: 3.14159}
+duration: 2
+output_rate: 1000
+)"),
+                                     "lugre.yaml"));
+}
+
 // A case that takes longer than this has run past any budget: the slowest simulation within
 // max_steps = 20000 takes well under a second; 20 s leaves room for a loaded 2-core machine.
 constexpr double kCaseSeconds = 20.0;
@@ -428,15 +441,7 @@ TEST(ExtremeValues, BreakawayDecayAndLugreRefuseFiguresBeyondDoublePrecision) {
     EXPECT_GE(seen.not_finite, 1) << "no decay result refused as not finite";
   }
   {
-    const Scenario sc = scenario_from_yaml(YAML::Load(R"(
-plant: {type: axis, M: 1.0}
-friction: {law: lugre, sigma0: 1.0e5, sigma1: 316.22776601683796, sigma2: 0.4, Fc: 1.0, Fs: 1.5, vs: 0.001}
-input: {type: sine, amplitude: 3.0, omega: 3.14159}
-duration: 2
-output_rate: 1000
-)"),
-                                           "lugre.yaml");
-    const Trajectory tr = simulate(sc);
+    const Trajectory tr = lugre_sine_record();
     Refusals seen;
     for (double scale : {1e156, 1e160, 1e200}) {
       LugreData d{column_of(tr.time), scale * column_of(tr.applied), column_of(tr.position)};
@@ -520,14 +525,7 @@ TEST(ExtremeValues, EveryMethodOverDecadesGivesNumbersOrAnError) {
   }
   const Trajectory ramp = simulate(load_scenario(examples + "craig_motor_trapezoid.yaml"));
   const Trajectory pendulum = simulate(load_scenario(examples + "craig_pendulum_combined.yaml"));
-  const Trajectory sine = simulate(scenario_from_yaml(YAML::Load(R"(
-plant: {type: axis, M: 1.0}
-friction: {law: lugre, sigma0: 1.0e5, sigma1: 316.22776601683796, sigma2: 0.4, Fc: 1.0, Fs: 1.5, vs: 0.001}
-input: {type: sine, amplitude: 3.0, omega: 3.14159}
-duration: 2
-output_rate: 1000
-)"),
-                                                      "lugre.yaml"));
+  const Trajectory sine = lugre_sine_record();
   const bool all_decades = testing::property_cases() >= 3000;
   std::map<std::string, MethodTally> tally;
   for (int e = -150; e <= 150; e += 10) {
@@ -612,14 +610,7 @@ TEST(ExtremeValues, ScalesThatGaveNanInAWarningGiveAnAnswer) {
     EXPECT_EQ(non_finite_figure(r), "") << literal(k);
     EXPECT_EQ(non_finite_word(to_json(r)), "") << "decay, stiffness " << literal(k) << "\n" << to_json(r);
   }
-  const Trajectory sine = simulate(scenario_from_yaml(YAML::Load(R"(
-plant: {type: axis, M: 1.0}
-friction: {law: lugre, sigma0: 1.0e5, sigma1: 316.22776601683796, sigma2: 0.4, Fc: 1.0, Fs: 1.5, vs: 0.001}
-input: {type: sine, amplitude: 3.0, omega: 3.14159}
-duration: 2
-output_rate: 1000
-)"),
-                                                      "lugre.yaml"));
+  const Trajectory sine = lugre_sine_record();
   for (double scale : {1e90, 1e100, 1e120}) {  // at 1e150 std(sigma0) overflows: refused, rightly
     LugreData d{column_of(sine.time), scale * column_of(sine.applied), column_of(sine.position)};
     LugreOptions o;
