@@ -165,6 +165,13 @@ def test_idim_new_and_old_keywords_agree(emps):
     options = json.loads(new.to_json())["options"]
     assert options["delay"] == {"value": 1, "unit": "samples", "given": True}
     assert options["vs"] == {"value": 0.02, "unit": "m/s", "given": True}
+    # result.options is the same record, by the command line's names (not the library's
+    # input_delay, stribeck_vs): one name per option everywhere a user reads it.
+    assert new.options == options and old.options == options
+    assert "stribeck_vs" not in new.options and "input_delay" not in new.options
+    # The fit's own options still serve the reconstruction and the cross-test.
+    assert fl.cross_test(new, emps["t"], force, emps["qm"]).relative_error_percent == pytest.approx(
+        new.fit.relative_error_percent, rel=1e-9)
 
 
 def test_recorded_unit_is_the_one_the_run_decides(emps):

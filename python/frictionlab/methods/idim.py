@@ -120,9 +120,10 @@ def identify_idim(time, force, position=None, velocity=None, *, axis="linear", s
     ``iv_controller`` and ``iv_source_*`` say which values the simulation used and where each
     came from.
 
-    Returns a Result; ``result.law`` is the identified friction law. The arrays and options
-    are kept on the result (``result.inputs``, ``result.options``) for idim_reconstruction and
-    frictionlab.plot.idim.
+    Returns a Result; ``result.law`` is the identified friction law. The arrays are kept on the
+    result (``result.inputs``) for idim_reconstruction and frictionlab.plot.idim;
+    ``result.options`` is the options the fit used, by the command line's names, each a dict
+    of ``value``, ``unit`` and ``given`` (as MODEL.json's "options").
     """
     values, opts, inputs = _idim_options("identify_idim", dict(options, axis=axis), time, source)
     file, sha = _source(source)
@@ -132,7 +133,8 @@ def identify_idim(time, force, position=None, velocity=None, *, axis="linear", s
     r._record_options(values)
     r.inputs = {"time": time, "force": force, "position": position, "velocity": velocity, "load": load,
                 "temperature": temperature}
-    r.options = opts
+    r._idim_options = opts  # the library's form, for cross_test and idim_reconstruction
+    r.options = r.to_dict()["options"]
     validate = inputs.get("validate")
     if validate is not None and r.ok:
         r._set_validation(cross_test(r, **validate))
@@ -150,7 +152,7 @@ def cross_test(result, time, force, position=None, velocity=None, *, source=None
     """
     options = dict(options)
     load, temperature = options.pop("load", None), options.pop("temperature", None)
-    opts = getattr(result, "options", None) if not options else None
+    opts = getattr(result, "_idim_options", None) if not options else None
     if opts is None:
         _, opts, _ = _idim_options("cross_test", options)
     file, sha = _source(source)
@@ -177,7 +179,7 @@ def idim_reconstruction(result, time=None, force=None, position=None, velocity=N
                         f"{type(result).__name__}")
     if not result.ok:
         raise ValueError(f"idim result has status error: {result.message}")
-    opts = getattr(result, "options", None) or _idim_options("idim_reconstruction", {})[1]
+    opts = getattr(result, "_idim_options", None) or _idim_options("idim_reconstruction", {})[1]
     if time is None:
         inputs = getattr(result, "inputs", None)
         if inputs is None:
