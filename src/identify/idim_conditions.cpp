@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "frictionlab/models/scalar.hpp"
 #include "idim_internal.hpp"
 
 namespace frictionlab::detail {
@@ -16,8 +17,6 @@ const std::vector<double>* series_of(const Result& r, const char* name) {
   const auto it = r.series.find(name);
   return it == r.series.end() || it->second.empty() ? nullptr : &it->second;
 }
-
-double sign_of(double v) { return v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0; }
 
 }  // namespace
 
@@ -45,7 +44,7 @@ void add_idim_condition_series(Result& r, const IdimData& data, const IdimOption
     const auto *lv = series_of(r, "law_velocity"), *lF = series_of(r, "law_force");
     if (lv && lF && lv->size() == lF->size()) {
       std::vector<double> zero(lF->size());
-      for (std::size_t i = 0; i < zero.size(); ++i) zero[i] = (*lF)[i] - mu->value * mean_load * sign_of((*lv)[i]);
+      for (std::size_t i = 0; i < zero.size(); ++i) zero[i] = (*lF)[i] - mu->value * mean_load * sgn((*lv)[i]);
       r.series["law_force_zero_load"] = std::move(zero);
     }
   }
